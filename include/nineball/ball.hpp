@@ -1,0 +1,22 @@
+#pragma once
+
+#include <optional>
+
+#include "nineball/table.hpp"
+#include "nineball/vec2.hpp"
+
+namespace nineball {
+
+/// Id of the cue ball; object balls are 1-9 in nine-ball (any other id is allowed in scenes).
+constexpr int kCueBall = 0;
+
+/// A ball as the world outside the physics sees it.
+struct BallState {
+  int id = 0;
+  Vec2 pos;                       ///< m
+  Vec2 vel;                       ///< m/s
+  std::optional<double> mass;     ///< kg; the physics' ball_mass when empty
+  std::optional<PocketId> pocket; ///< set once the ball has dropped
+};
+
+}  // namespace nineball

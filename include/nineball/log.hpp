@@ -1,0 +1,18 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+namespace nineball {
+
+/// A named logger ("physics", "sim", "app", ...) writing to stderr; created on first use with
+/// the level set by setLogLevel (warn until then: quiet by default).
+std::shared_ptr<spdlog::logger> logger(const std::string& name);
+
+/// Sets the level of every nineball logger, present and future. Returns false for an unknown
+/// level name (trace, debug, info, warn, error, critical, off).
+bool setLogLevel(const std::string& level);
+
+}  // namespace nineball

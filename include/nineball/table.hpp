@@ -1,0 +1,71 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nineball/vec2.hpp"
+
+namespace nineball {
+
+/// Size of a table's playing surface and its pocket mouths, in metres. Origin at the centre,
+/// x along the length, y across. The cushion noses lie on x = +-length/2 and y = +-width/2.
+struct TableDef {
+  double length = 2.54;          ///< between the long-axis cushion noses (9 ft table)
+  double width = 1.27;           ///< between the short-axis cushion noses
+  double corner_pocket = 0.116;  ///< corner mouth, jaw point to jaw point (WPA 114-117 mm)
+  double side_pocket = 0.129;    ///< side mouth, jaw point to jaw point (WPA 127-130 mm)
+  double corner_jaw_deg = 142.0; ///< angle between cushion nose and jaw face (WPA 142 +-1)
+  double side_jaw_deg = 104.0;   ///< the same for the side pockets (WPA 103-104)
+
+  static TableDef nineFoot() { return {}; }
+  static TableDef eightFoot() { return {2.34, 1.17}; }
+  static TableDef sevenFoot() { return {1.98, 0.99}; }
+  /// "9ft", "8ft" or "7ft"; nothing for any other name.
+  static std::optional<TableDef> named(const std::string& name);
+};
+
+enum class PocketId { TopLeft, TopSide, TopRight, BottomRight, BottomSide, BottomLeft };
+constexpr int kPocketCount = 6;
+
+/// "top-left", "top-side", ... (top = +y, right = +x).
+const char* pocketName(PocketId id);
+std::optional<PocketId> pocketFromName(const std::string& name);
+
+/// One pocket as built: the mouth between its two jaw points, and the drop circle. A ball
+/// is pocketed once its centre is inside the drop circle.
+struct Pocket {
+  PocketId id = PocketId::TopLeft;
+  Vec2 jaw_a;          ///< first jaw point met going clockwise round the table
+  Vec2 jaw_b;          ///< second jaw point
+  Vec2 outward;        ///< unit vector from the mouth into the pocket
+  Vec2 drop_centre;
+  double drop_radius = 0.0;
+};
+
+/// The table as the physics builds it: one clockwise loop of cushion vertices (rails, angled
+/// jaws and the pocket cups behind them) and the six pockets.
+struct TableGeometry {
+  TableDef def;
+  std::vector<Vec2> cushion_loop;
+  std::array<Pocket, kPocketCount> pockets{};
+
+  /// Head string (x of the line behind which the cue ball is placed for the break).
+  double headStringX() const { return -def.length / 4.0; }
+  /// Foot spot, where the apex ball of the rack sits.
+  Vec2 footSpot() const { return {def.length / 4.0, 0.0}; }
+
+  /// True when a ball of radius r centred at c lies inside the cushions, touches no cushion
+  /// segment, and is not already over a pocket.
+  bool ballFits(Vec2 c, double r) const;
+  /// True when the point is inside the cushion loop.
+  bool insideLoop(Vec2 p) const;
+  /// The pocket whose drop circle holds the point, if any.
+  std::optional<PocketId> pocketAt(Vec2 p) const;
+};
+
+/// Builds the cushion loop and pockets. `ball_radius` sets how deep the pocket cups are.
+TableGeometry buildTable(const TableDef& def, double ball_radius);
+
+}  // namespace nineball

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "nineball/ball.hpp"
+#include "nineball/event.hpp"
+#include "nineball/params.hpp"
+#include "nineball/shot.hpp"
+#include "nineball/table.hpp"
+
+namespace nineball {
+
+/// The physics of one table: Box2D bodies for balls, cushions and pockets, advanced in fixed
+/// steps. Box2D stays behind this interface; everything here is SI.
+class World {
+ public:
+  World(const TableDef& table, const PhysicsParams& physics, const StepParams& step);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds a ball. Ids must be unique; the caller checks that it fits on the table.
+  void addBall(const BallState& ball);
+  /// Gives the cue ball (or any ball) the velocity of a shot.
+  void strike(int ball_id, const Shot& shot);
+  /// Moves a ball that is still on the table (ball in hand, spotting), velocity zero.
+  void placeBall(int ball_id, Vec2 pos);
+
+  /// Advances one fixed step of 1/hz seconds; appends what happened to events().
+  void step();
+  /// Steps until every ball rests or `seconds` of simulated time have passed.
+  void runFor(double seconds);
+  /// Steps until every ball rests, at most StepParams::max_time.
+  void runUntilRest();
+
+  bool atRest() const;
+  double time() const;
+  long steps() const;
+
+  /// All balls in the order they were added, pocketed ones included.
+  std::vector<BallState> balls() const;
+  const std::vector<Event>& events() const;
+  void clearEvents();
+
+  const TableGeometry& table() const;
+  const PhysicsParams& physics() const;
+  const StepParams& stepParams() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nineball

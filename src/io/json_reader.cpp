@@ -1,0 +1,132 @@
+#include "io/json_reader.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nineball::io {
+namespace {
+
+using nlohmann::json;
+
+/// Builds the document like nlohmann's own DOM parser, but knows the path of the value being
+/// read, so that errors nlohmann reports without one (overflow) or not at all (duplicate keys)
+/// can name the field.
+class PathTrackingBuilder {
+ public:
+  using string_t = json::string_t;
+
+  bool null() { return add(nullptr); }
+  bool boolean(bool v) { return add(v); }
+  bool number_integer(json::number_integer_t v) { return add(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return add(v); }
+  bool number_float(json::number_float_t v, const string_t& /*text*/) { return add(v); }
+  bool string(string_t& v) { return add(std::move(v)); }
+  bool binary(json::binary_t& v) { return add(std::move(v)); }
+
+  bool start_object(std::size_t /*size*/) { return open(json::value_t::object); }
+  bool start_array(std::size_t /*size*/) { return open(json::value_t::array); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(string_t& k) {
+    Frame& f = frames_.back();
+    f.key = k;
+    if (f.container->contains(k)) {
+      error_ = ParseError{path() + ": duplicate key"};
+      return false;
+    }
+    return true;
+  }
+
+  bool parse_error(std::size_t /*position*/, const std::string& token,
+                   const json::exception& e) {
+    // Id 406 is "number overflow": the lexer read a literal no double can hold.
+    if (e.id == 406) {
+      error_ = ParseError{path() + ": number " + token + " is out of range"};
+    } else {
+      error_ = ParseError{"invalid JSON: " + withoutPrefix(e.what())};
+    }
+    return false;
+  }
+
+  json takeRoot() { return std::move(root_); }
+  ParseError takeError() {
+    return error_.message.empty() ? ParseError{"invalid JSON"} : std::move(error_);
+  }
+
+ private:
+  struct Frame {
+    json* container;
+    std::string key;  // the key being read, for objects
+  };
+
+  static std::string withoutPrefix(const std::string& what) {
+    // nlohmann prefixes "[json.exception.parse_error.101] ", which means nothing to a user.
+    const auto end = what.find("] ");
+    return what.rfind("[json.exception.", 0) == 0 && end != std::string::npos
+               ? what.substr(end + 2)
+               : what;
+  }
+
+  template <typename T>
+  json* place(T&& v) {
+    if (frames_.empty()) {
+      root_ = json(std::forward<T>(v));
+      return &root_;
+    }
+    Frame& f = frames_.back();
+    if (f.container->is_array()) {
+      f.container->emplace_back(std::forward<T>(v));
+      return &f.container->back();
+    }
+    json& slot = (*f.container)[f.key];
+    slot = json(std::forward<T>(v));
+    return &slot;
+  }
+
+  template <typename T>
+  bool add(T&& v) {
+    place(std::forward<T>(v));
+    return true;
+  }
+
+  bool open(json::value_t type) {
+    frames_.push_back(Frame{place(type), {}});
+    return true;
+  }
+
+  bool close() {
+    frames_.pop_back();
+    return true;
+  }
+
+  std::string path() const {
+    std::string p;
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      if (f.container->is_array()) {
+        // An open child is already the array's last element; a scalar is about to be added.
+        const bool child_open = i + 1 < frames_.size();
+        p += "[" + std::to_string(f.container->size() - (child_open ? 1 : 0)) + "]";
+      } else {
+        p += (p.empty() ? "" : ".") + f.key;
+      }
+    }
+    return p.empty() ? "scene" : p;
+  }
+
+  json root_;
+  std::vector<Frame> frames_;
+  ParseError error_;
+};
+
+}  // namespace
+
+json readJson(std::string_view text) {
+  PathTrackingBuilder builder;
+  if (!json::sax_parse(text.begin(), text.end(), &builder)) throw builder.takeError();
+  return builder.takeRoot();
+}
+
+}  // namespace nineball::io

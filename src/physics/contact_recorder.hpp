@@ -1,0 +1,44 @@
+#pragma once
+
+#include <box2d/box2d.h>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace nineball::physics {
+
+/// What a fixture is, packed into its user data: kind in the high bits, ball index below.
+enum class FixtureKind : std::uintptr_t { Ball = 1, Cushion = 2, Pocket = 3 };
+
+std::uintptr_t fixtureTag(FixtureKind kind, std::size_t index);
+FixtureKind fixtureKind(b2Fixture* f);
+std::size_t fixtureIndex(b2Fixture* f);
+
+/// Records contacts during a Box2D step; the world turns them into events after Step returns
+/// (bodies are never created or destroyed inside the callbacks).
+class ContactRecorder : public b2ContactListener {
+ public:
+  /// Restitution for ball-ball contacts when Box2D solves them (the Box2D contact model).
+  void setBallRestitution(float e, float threshold) {
+    ball_restitution_ = e;
+    threshold_ = threshold;
+  }
+  /// Balls per index currently overlapping a pocket sensor.
+  void resize(std::size_t balls) { over_pocket_.resize(balls, 0); }
+
+  void BeginContact(b2Contact* contact) override;
+  void EndContact(b2Contact* contact) override;
+  void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
+
+  std::vector<std::size_t> cushion_hits;                      ///< ball indices, this step
+  std::vector<std::pair<std::size_t, std::size_t>> ball_hits;  ///< Box2D contact model only
+  bool overPocket(std::size_t ball) const { return over_pocket_[ball] > 0; }
+
+ private:
+  std::vector<int> over_pocket_;
+  float ball_restitution_ = 0.0f;
+  float threshold_ = 0.0f;
+};
+
+}  // namespace nineball::physics

@@ -1,0 +1,28 @@
+#include "nineball/shot.hpp"
+
+#include "nineball/event.hpp"
+
+namespace nineball {
+
+Shot Shot::withSpeed(double heading_deg, double speed) {
+  Shot s;
+  s.heading_rad = degToRad(heading_deg);
+  s.speed = speed;
+  return s;
+}
+
+Shot Shot::withImpulse(double heading_deg, double force, double contact_time, double mass) {
+  return withSpeed(heading_deg, force * contact_time / mass);
+}
+
+const char* eventTypeName(EventType t) {
+  switch (t) {
+    case EventType::BallBall: return "ball";
+    case EventType::Cushion: return "cushion";
+    case EventType::Pocket: return "pocket";
+    case EventType::AllAtRest: return "rest";
+  }
+  return "?";
+}
+
+}  // namespace nineball

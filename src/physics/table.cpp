@@ -1,0 +1,161 @@
+#include "nineball/table.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nineball {
+namespace {
+
+// How far past the mouth line the ball's centre travels before it drops, and the size of the
+// hole, as fractions/offsets that put the slate hole where a real pocket's shelf ends.
+constexpr double kCornerShelf = 0.02;
+constexpr double kSideShelf = 0.005;
+constexpr double kDropRadiusOfMouth = 0.45;
+// The jaw faces run this far from the jaw point into the pocket (about a cushion's depth).
+constexpr double kJawLength = 0.05;
+// Chord of the polygon that stands for the pocket cup's round back.
+constexpr double kCupChord = 0.015;
+
+struct PocketFrame {
+  PocketId id;
+  Vec2 jaw_a, jaw_b, outward;
+  bool corner;
+};
+
+// The six pockets in clockwise order from the top-left corner (y up), each with the jaw met
+// first along that walk.
+std::array<PocketFrame, kPocketCount> pocketFrames(const TableDef& d) {
+  const double hx = d.length / 2.0, hy = d.width / 2.0;
+  const double c = d.corner_pocket / std::sqrt(2.0);
+  const double s = d.side_pocket / 2.0;
+  const double r = 1.0 / std::sqrt(2.0);
+  return {{
+      {PocketId::TopLeft, {-hx, hy - c}, {-hx + c, hy}, {-r, r}, true},
+      {PocketId::TopSide, {-s, hy}, {s, hy}, {0.0, 1.0}, false},
+      {PocketId::TopRight, {hx - c, hy}, {hx, hy - c}, {r, r}, true},
+      {PocketId::BottomRight, {hx, -hy + c}, {hx - c, -hy}, {r, -r}, true},
+      {PocketId::BottomSide, {s, -hy}, {-s, -hy}, {0.0, -1.0}, false},
+      {PocketId::BottomLeft, {-hx + c, -hy}, {-hx, -hy + c}, {-r, -r}, true},
+  }};
+}
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return length(p - (a + ab * t));
+}
+
+}  // namespace
+
+std::optional<TableDef> TableDef::named(const std::string& name) {
+  if (name == "9ft") return nineFoot();
+  if (name == "8ft") return eightFoot();
+  if (name == "7ft") return sevenFoot();
+  return std::nullopt;
+}
+
+const char* pocketName(PocketId id) {
+  switch (id) {
+    case PocketId::TopLeft: return "top-left";
+    case PocketId::TopSide: return "top-side";
+    case PocketId::TopRight: return "top-right";
+    case PocketId::BottomRight: return "bottom-right";
+    case PocketId::BottomSide: return "bottom-side";
+    case PocketId::BottomLeft: return "bottom-left";
+  }
+  return "?";
+}
+
+std::optional<PocketId> pocketFromName(const std::string& name) {
+  for (int i = 0; i < kPocketCount; ++i) {
+    const auto id = static_cast<PocketId>(i);
+    if (name == pocketName(id)) return id;
+  }
+  return std::nullopt;
+}
+
+TableGeometry buildTable(const TableDef& def, double ball_radius) {
+  TableGeometry g;
+  g.def = def;
+  const auto frames = pocketFrames(def);
+  for (int i = 0; i < kPocketCount; ++i) {
+    const PocketFrame& f = frames[i];
+    const PocketFrame& prev = frames[(i + kPocketCount - 1) % kPocketCount];
+    const PocketFrame& next = frames[(i + 1) % kPocketCount];
+    // Rail directions arriving at jaw a and leaving jaw b, walking clockwise.
+    const Vec2 rail_in = normalized(f.jaw_a - prev.jaw_b);
+    const Vec2 rail_out = normalized(next.jaw_a - f.jaw_b);
+    const double turn = degToRad(180.0 - (f.corner ? def.corner_jaw_deg : def.side_jaw_deg));
+    // Outside the table is on the left of a clockwise walk: jaw a turns left off its rail,
+    // jaw b is the mirror image, reached walking back out of the pocket.
+    const Vec2 jaw_a_dir = rotated(rail_in, turn);
+    const Vec2 jaw_b_dir = rotated(-rail_out, -turn);
+    const double jaw_len = std::max(kJawLength, 1.2 * ball_radius);
+    const Vec2 qa = f.jaw_a + jaw_a_dir * jaw_len;
+    const Vec2 qb = f.jaw_b + jaw_b_dir * jaw_len;
+
+    const double mouth = length(f.jaw_b - f.jaw_a);
+    Pocket& p = g.pockets[i];
+    p.id = f.id;
+    p.jaw_a = f.jaw_a;
+    p.jaw_b = f.jaw_b;
+    p.outward = f.outward;
+    p.drop_radius = kDropRadiusOfMouth * mouth;
+    const double shelf = f.corner ? kCornerShelf : kSideShelf;
+    p.drop_centre = (f.jaw_a + f.jaw_b) * 0.5 + f.outward * (shelf + p.drop_radius);
+
+    g.cushion_loop.push_back(f.jaw_a);
+    g.cushion_loop.push_back(qa);
+    // The cup: clockwise round the drop centre from qa to qb, the long way (behind the hole).
+    const Vec2 da = qa - p.drop_centre, db = qb - p.drop_centre;
+    const double a0 = std::atan2(da.y, da.x);
+    double a1 = std::atan2(db.y, db.x);
+    while (a1 >= a0) a1 -= 2.0 * kPi;
+    const double ra = length(da), rb = length(db);
+    const double sweep = a0 - a1;
+    const int pieces = std::max(4, static_cast<int>(std::ceil(sweep * std::max(ra, rb) / kCupChord)));
+    for (int k = 1; k < pieces; ++k) {
+      const double u = static_cast<double>(k) / pieces;
+      const double radius = ra + (rb - ra) * u;
+      g.cushion_loop.push_back(p.drop_centre + fromAngle(a0 - sweep * u) * radius);
+    }
+    g.cushion_loop.push_back(qb);
+    g.cushion_loop.push_back(f.jaw_b);
+  }
+  return g;
+}
+
+bool TableGeometry::insideLoop(Vec2 p) const {
+  bool inside = false;
+  const std::size_t n = cushion_loop.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = cushion_loop[i], b = cushion_loop[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool TableGeometry::ballFits(Vec2 c, double r) const {
+  if (!insideLoop(c) || pocketAt(c)) return false;
+  // A ball exactly frozen to a cushion is on the table: allow rounding of the input.
+  constexpr double kTouchTolerance = 1e-7;
+  const std::size_t n = cushion_loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (distanceToSegment(c, cushion_loop[i], cushion_loop[(i + 1) % n]) < r - kTouchTolerance) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::optional<PocketId> TableGeometry::pocketAt(Vec2 p) const {
+  for (const Pocket& pk : pockets) {
+    if (length(p - pk.drop_centre) < pk.drop_radius) return pk.id;
+  }
+  return std::nullopt;
+}
+
+}  // namespace nineball

@@ -1,0 +1,429 @@
+#include "nineball/world.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "nineball/log.hpp"
+#include "physics/ball_collision.hpp"
+#include "physics/contact_recorder.hpp"
+
+namespace nineball {
+
+using physics::ContactRecorder;
+using physics::FixtureKind;
+using physics::fixtureTag;
+
+namespace {
+
+// Box2D clamps a body to 2 units of travel per step; stay well under it so that no speed is
+// ever clipped (sub-steps are taken instead).
+constexpr double kMaxTravelUnitsPerStep = 1.5;
+// Restitution applies above this approach speed (m/s); Box2D's default of 1 unit/s would make
+// slow contacts dead.
+constexpr double kRestitutionThreshold = 1e-4;
+
+Vec2 reduceSpeed(Vec2 v, double dv) {
+  const double s = length(v);
+  if (s <= dv) return {};
+  return v * ((s - dv) / s);
+}
+
+}  // namespace
+
+struct World::Impl {
+  struct Ball {
+    int id = 0;
+    double mass = 0.0;
+    b2Body* body = nullptr;  // null once pocketed
+    Vec2 pos;                // kept for pocketed balls
+    std::optional<PocketId> pocket;
+    // Trajectory over the current sub-step, used by the pairwise contact model.
+    Vec2 start, move, vel;
+    double from = 0.0;
+    bool changed = false;
+  };
+
+  TableGeometry table;
+  PhysicsParams phys;
+  StepParams sp;
+  double k;  // Box2D units per metre
+  b2World world{b2Vec2(0.0f, 0.0f)};
+  b2Body* table_body = nullptr;
+  ContactRecorder recorder;
+  std::vector<Ball> balls;
+  std::vector<Event> events;
+  double time = 0.0;
+  long steps = 0;
+  bool moving = false;
+
+  Impl(const TableDef& t, const PhysicsParams& p, const StepParams& s)
+      : table(buildTable(t, p.ball_radius)), phys(p), sp(s), k(s.scale) {
+    world.SetContactListener(&recorder);
+    recorder.setBallRestitution(static_cast<float>(phys.ball_restitution),
+                                static_cast<float>(kRestitutionThreshold * k));
+    b2BodyDef bd;
+    table_body = world.CreateBody(&bd);
+    std::vector<b2Vec2> loop;
+    loop.reserve(table.cushion_loop.size());
+    for (Vec2 v : table.cushion_loop) loop.push_back(toB2(v));
+    b2ChainShape chain;
+    chain.CreateLoop(loop.data(), static_cast<int32>(loop.size()));
+    b2FixtureDef fd;
+    fd.shape = &chain;
+    fd.friction = 0.0f;
+    fd.restitution = static_cast<float>(phys.cushion_restitution);
+    fd.restitutionThreshold = static_cast<float>(kRestitutionThreshold * k);
+    fd.userData.pointer = fixtureTag(FixtureKind::Cushion, 0);
+    table_body->CreateFixture(&fd);
+    for (const Pocket& pk : table.pockets) {
+      b2CircleShape hole;
+      hole.m_p = toB2(pk.drop_centre);
+      hole.m_radius = static_cast<float>(pk.drop_radius * k);
+      b2FixtureDef sd;
+      sd.shape = &hole;
+      sd.isSensor = true;
+      sd.userData.pointer = fixtureTag(FixtureKind::Pocket, static_cast<std::size_t>(pk.id));
+      table_body->CreateFixture(&sd);
+    }
+  }
+
+  b2Vec2 toB2(Vec2 v) const {
+    return {static_cast<float>(v.x * k), static_cast<float>(v.y * k)};
+  }
+  Vec2 fromB2(const b2Vec2& v) const { return {v.x / k, v.y / k}; }
+
+  Vec2 velocity(const Ball& b) const { return b.body ? fromB2(b.body->GetLinearVelocity()) : Vec2{}; }
+  Vec2 position(const Ball& b) const { return b.body ? fromB2(b.body->GetPosition()) : b.pos; }
+
+  void setVelocity(Ball& b, Vec2 v) {
+    b.body->SetLinearVelocity(toB2(v));
+    if (v == Vec2{}) b.body->SetAwake(false);  // a resting ball costs the solver nothing
+  }
+
+  void createBody(std::size_t index, Vec2 pos, Vec2 vel) {
+    Ball& b = balls[index];
+    b2BodyDef bd;
+    bd.type = b2_dynamicBody;
+    bd.position = toB2(pos);
+    bd.bullet = true;
+    bd.fixedRotation = true;
+    bd.allowSleep = false;  // Box2D's own sleeping would stop slow balls; rest is ours to call
+    bd.linearDamping =
+        phys.cloth == ClothModel::Damping ? static_cast<float>(phys.linear_damping) : 0.0f;
+    b.body = world.CreateBody(&bd);
+    b2CircleShape shape;
+    shape.m_radius = static_cast<float>(phys.ball_radius * k);
+    b2FixtureDef fd;
+    fd.shape = &shape;
+    fd.density = 1.0f;
+    fd.friction = 0.0f;
+    fd.restitution = 0.0f;  // Box2D mixes by max: the cushion's e rules ball-cushion contacts
+    fd.restitutionThreshold = static_cast<float>(kRestitutionThreshold * k);
+    // Pairwise: balls never meet inside Box2D; the world resolves them after each step.
+    fd.filter.groupIndex = sp.contacts == ContactModel::Pairwise ? -1 : 0;
+    fd.userData.pointer = fixtureTag(FixtureKind::Ball, index);
+    b.body->CreateFixture(&fd);
+    b2MassData md;
+    md.mass = static_cast<float>(b.mass);
+    md.center = b2Vec2(0.0f, 0.0f);
+    md.I = 0.0f;
+    b.body->SetMassData(&md);
+    b.pocket.reset();
+    setVelocity(b, vel);
+  }
+
+  std::size_t indexOf(int id) const {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (balls[i].id == id) return i;
+    }
+    throw std::invalid_argument("no ball with id " + std::to_string(id));
+  }
+
+  bool atRest() const {
+    for (const Ball& b : balls) {
+      if (b.body && b.body->GetLinearVelocity() != b2Vec2(0.0f, 0.0f)) return false;
+    }
+    return true;
+  }
+
+  double maxSpeed() const {
+    double m = 0.0;
+    for (const Ball& b : balls) {
+      if (b.body) m = std::max(m, static_cast<double>(b.body->GetLinearVelocity().Length()));
+    }
+    return m / k;
+  }
+
+  void applyCloth(double h) {
+    if (phys.cloth != ClothModel::Friction) return;
+    const double dv = phys.rolling_friction * phys.gravity * h;
+    for (Ball& b : balls) {
+      if (!b.body || !b.body->IsAwake()) continue;
+      setVelocity(b, reduceSpeed(velocity(b), dv));
+    }
+  }
+
+  void stopCreepingBalls() {
+    if (phys.cloth != ClothModel::Damping) return;
+    for (Ball& b : balls) {
+      if (b.body && b.body->IsAwake() && length(velocity(b)) < phys.rest_speed) setVelocity(b, {});
+    }
+  }
+
+  void resolvePairwise(double t0, double h) {
+    const double contact = 2.0 * phys.ball_radius;
+    for (Ball& b : balls) {
+      if (!b.body) continue;
+      const Vec2 end = position(b);
+      b.move = end - b.start;
+      b.vel = velocity(b);
+      b.from = 0.0;
+      b.changed = false;
+    }
+    const std::size_t n = balls.size();
+    const std::size_t cap = 1000 + 100 * n;
+    for (std::size_t resolved = 0;; ++resolved) {
+      double best = std::numeric_limits<double>::infinity();
+      std::size_t bi = 0, bj = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const Ball& a = balls[i];
+        if (!a.body) continue;
+        const bool a_still = a.move == Vec2{} && a.vel == Vec2{};
+        for (std::size_t j = i + 1; j < n; ++j) {
+          const Ball& b = balls[j];
+          if (!b.body || (a_still && b.move == Vec2{} && b.vel == Vec2{})) continue;
+          const double from = std::max(a.from, b.from);
+          const Vec2 rel = (b.start - a.start) + (b.move - a.move) * from;
+          const Vec2 rel_move = (b.move - a.move) * (1.0 - from);
+          if (length(rel) - length(rel_move) > contact) continue;
+          const bool closing = dot(b.vel - a.vel, rel) < 0.0;
+          const auto s = physics::contactFraction(b.start - a.start, b.move - a.move, contact,
+                                                  from, closing);
+          if (s && *s < best) {
+            best = *s;
+            bi = i;
+            bj = j;
+          }
+        }
+      }
+      if (best == std::numeric_limits<double>::infinity()) break;
+      if (resolved >= cap) {
+        logger("physics")->warn("t={:.4f}: more than {} ball contacts in one step; stopped", t0,
+                                cap);
+        break;
+      }
+      Ball& a = balls[bi];
+      Ball& b = balls[bj];
+      const Vec2 ca = a.start + a.move * best, cb = b.start + b.move * best;
+      const Vec2 normal = normalized(cb - ca);
+      if (dot(b.vel - a.vel, normal) < 0.0) {
+        const auto out = physics::collide(a.vel, b.vel, a.mass, b.mass, phys.ball_restitution,
+                                          normal);
+        a.vel = out.v1;
+        b.vel = out.v2;
+        Event e;
+        e.type = EventType::BallBall;
+        e.t = t0 + best * h;
+        e.a = a.id;
+        e.b = b.id;
+        e.va = a.vel;
+        e.vb = b.vel;
+        events.push_back(e);
+        logger("physics")->trace("t={:.5f} ball {} - ball {}", e.t, a.id, b.id);
+      }
+      // Both continue from the contact point with their velocities for the rest of the step.
+      for (Ball* x : {&a, &b}) {
+        const Vec2 at = x == &a ? ca : cb;
+        x->move = x->vel * h;
+        x->start = at - x->move * best;
+        x->from = best;
+        x->changed = true;
+      }
+    }
+    for (Ball& b : balls) {
+      if (!b.body || !b.changed) continue;
+      b.body->SetTransform(toB2(b.start + b.move), 0.0f);
+      setVelocity(b, b.vel);
+    }
+  }
+
+  void recordBox2DBallHits(double t) {
+    for (const auto& [i, j] : recorder.ball_hits) {
+      Event e;
+      e.type = EventType::BallBall;
+      e.t = t;
+      e.a = balls[i].id;
+      e.b = balls[j].id;
+      e.va = velocity(balls[i]);
+      e.vb = velocity(balls[j]);
+      events.push_back(e);
+    }
+    recorder.ball_hits.clear();
+  }
+
+  void recordCushionHits(double t) {
+    auto& hits = recorder.cushion_hits;
+    std::sort(hits.begin(), hits.end());
+    hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+    for (std::size_t i : hits) {
+      if (!balls[i].body) continue;
+      Event e;
+      e.type = EventType::Cushion;
+      e.t = t;
+      e.a = balls[i].id;
+      e.va = velocity(balls[i]);
+      events.push_back(e);
+    }
+    hits.clear();
+  }
+
+  void dropPocketedBalls(double t) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      Ball& b = balls[i];
+      if (!b.body || !recorder.overPocket(i)) continue;
+      const Vec2 p = position(b);
+      const auto pocket = table.pocketAt(p);
+      if (!pocket) continue;
+      b.pos = p;
+      b.pocket = pocket;
+      world.DestroyBody(b.body);  // safe: Step has returned
+      b.body = nullptr;
+      Event e;
+      e.type = EventType::Pocket;
+      e.t = t;
+      e.a = b.id;
+      e.pocket = *pocket;
+      events.push_back(e);
+      logger("physics")->debug("t={:.4f} ball {} pocketed in {}", t, b.id, pocketName(*pocket));
+    }
+  }
+
+  void subStep(double t0, double h) {
+    // The cloth acts half before and half after the move, so that the move uses the mean
+    // speed over the step: exact for constant deceleration.
+    applyCloth(h / 2.0);
+    for (Ball& b : balls) {
+      if (b.body) b.start = position(b);
+    }
+    world.Step(static_cast<float>(h), sp.velocity_iterations, sp.position_iterations);
+    recordCushionHits(t0 + h);
+    if (sp.contacts == ContactModel::Pairwise) {
+      resolvePairwise(t0, h);
+    } else {
+      recordBox2DBallHits(t0 + h);
+    }
+    applyCloth(h / 2.0);
+    stopCreepingBalls();
+    dropPocketedBalls(t0 + h);
+  }
+
+  void step() {
+    const double dt = sp.dt();
+    double done = 0.0;
+    while (done < dt) {
+      const double remaining = dt - done;
+      const double travel = maxSpeed() * k * remaining;
+      const double pieces = std::max(1.0, std::ceil(travel / kMaxTravelUnitsPerStep));
+      const double h = pieces > 1.0 ? remaining / pieces : remaining;
+      subStep(time + done, h);
+      done += h;
+      if (pieces <= 1.0) break;
+    }
+    time = static_cast<double>(++steps) / sp.hz;
+    const bool now_moving = !atRest();
+    if (moving && !now_moving) {
+      Event e;
+      e.type = EventType::AllAtRest;
+      e.t = time;
+      events.push_back(e);
+    }
+    moving = now_moving;
+  }
+};
+
+World::World(const TableDef& table, const PhysicsParams& physics, const StepParams& step)
+    : impl_(std::make_unique<Impl>(table, physics, step)) {}
+
+World::~World() = default;
+
+void World::addBall(const BallState& ball) {
+  Impl::Ball b;
+  b.id = ball.id;
+  b.mass = ball.mass.value_or(impl_->phys.ball_mass);
+  b.pos = ball.pos;
+  impl_->balls.push_back(b);
+  impl_->recorder.resize(impl_->balls.size());
+  if (ball.pocket) {
+    impl_->balls.back().pocket = ball.pocket;
+    return;
+  }
+  impl_->createBody(impl_->balls.size() - 1, ball.pos, ball.vel);
+  impl_->moving = impl_->moving || ball.vel != Vec2{};
+}
+
+void World::strike(int ball_id, const Shot& shot) {
+  Impl::Ball& b = impl_->balls[impl_->indexOf(ball_id)];
+  if (!b.body) throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
+  impl_->setVelocity(b, shot.velocity());
+  impl_->moving = impl_->moving || shot.speed > 0.0;
+}
+
+void World::placeBall(int ball_id, Vec2 pos) {
+  const std::size_t i = impl_->indexOf(ball_id);
+  Impl::Ball& b = impl_->balls[i];
+  if (b.body) {
+    b.body->SetTransform(impl_->toB2(pos), 0.0f);
+    impl_->setVelocity(b, {});
+  } else {
+    impl_->createBody(i, pos, {});
+  }
+  b.pos = pos;
+}
+
+void World::step() { impl_->step(); }
+
+void World::runFor(double seconds) {
+  const long target = impl_->steps + std::lround(seconds * impl_->sp.hz);
+  while (impl_->steps < target && !impl_->atRest()) impl_->step();
+}
+
+void World::runUntilRest() {
+  const long limit = std::lround(impl_->sp.max_time * impl_->sp.hz);
+  while (!impl_->atRest() && impl_->steps < limit) impl_->step();
+  if (!impl_->atRest()) {
+    logger("physics")->warn("balls still moving after {} s of simulated time; stopped",
+                            impl_->sp.max_time);
+  }
+}
+
+bool World::atRest() const { return impl_->atRest(); }
+double World::time() const { return impl_->time; }
+long World::steps() const { return impl_->steps; }
+
+std::vector<BallState> World::balls() const {
+  std::vector<BallState> out;
+  out.reserve(impl_->balls.size());
+  for (const Impl::Ball& b : impl_->balls) {
+    BallState s;
+    s.id = b.id;
+    s.pos = impl_->position(b);
+    s.vel = impl_->velocity(b);
+    s.mass = b.mass;
+    s.pocket = b.pocket;
+    out.push_back(s);
+  }
+  return out;
+}
+
+const std::vector<Event>& World::events() const { return impl_->events; }
+void World::clearEvents() { impl_->events.clear(); }
+const TableGeometry& World::table() const { return impl_->table; }
+const PhysicsParams& World::physics() const { return impl_->phys; }
+const StepParams& World::stepParams() const { return impl_->sp; }
+
+}  // namespace nineball
