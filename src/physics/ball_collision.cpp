@@ -16,7 +16,8 @@ std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_di
                                       double from, bool closing) {
   const Vec2 start = rel + rel_move * from;
   const double c = dot(start, start) - contact_distance * contact_distance;
-  if (c <= 0.0) {
+  const double touching = 2.0 * contact_distance * kTouchTolerance;
+  if (c <= touching) {
     if (closing) return from;
     return std::nullopt;
   }

@@ -6,6 +6,10 @@
 
 namespace nineball::physics {
 
+/// Centres this much (m) farther apart than touching still count as touching: Box2D keeps
+/// positions in single precision, so two balls set touching read back a little apart.
+constexpr double kTouchTolerance = 1e-6;
+
 /// Velocities of two balls after an instantaneous frictionless collision.
 struct CollisionOutcome {
   Vec2 v1;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -26,6 +27,13 @@ constexpr double kMaxTravelUnitsPerStep = 1.5;
 // Restitution applies above this approach speed (m/s); Box2D's default of 1 unit/s would make
 // slow contacts dead.
 constexpr double kRestitutionThreshold = 1e-4;
+// Fractions of a step closer than this count as the same instant.
+constexpr double kSameInstant = 1e-9;
+// A contact this soon (s) is resolved where the balls stand rather than stepped to.
+constexpr double kMinPiece = 1e-9;
+// A step splits at most this often at ball contacts; past it, contacts are resolved at the end
+// of the step (a frozen cluster of many balls).
+constexpr int kMaxPiecesPerStep = 64;
 
 Vec2 reduceSpeed(Vec2 v, double dv) {
   const double s = length(v);
@@ -60,6 +68,7 @@ struct World::Impl {
   double time = 0.0;
   long steps = 0;
   bool moving = false;
+  double last_stop = 0.0;  // when the last ball came to rest
 
   Impl(const TableDef& t, const PhysicsParams& p, const StepParams& s)
       : table(buildTable(t, p.ball_radius)), phys(p), sp(s), k(s.scale) {
@@ -159,67 +168,106 @@ struct World::Impl {
     return m / k;
   }
 
-  void applyCloth(double h) {
-    if (phys.cloth != ClothModel::Friction) return;
-    const double dv = phys.rolling_friction * phys.gravity * h;
+  // Constant deceleration over h seconds starting at t; a ball that stops inside the interval
+  // records the exact instant, so the rest event is not rounded to the step.
+  void applyCloth(double t, double h) {
+    if (phys.cloth != ClothModel::Friction || phys.rolling_friction <= 0.0) return;
+    const double decel = phys.rolling_friction * phys.gravity;
     for (Ball& b : balls) {
       if (!b.body || !b.body->IsAwake()) continue;
-      setVelocity(b, reduceSpeed(velocity(b), dv));
+      const Vec2 v = velocity(b);
+      const Vec2 slowed = reduceSpeed(v, decel * h);
+      if (slowed == Vec2{} && v != Vec2{}) last_stop = std::max(last_stop, t + length(v) / decel);
+      setVelocity(b, slowed);
     }
   }
 
-  void stopCreepingBalls() {
+  void stopCreepingBalls(double t) {
     if (phys.cloth != ClothModel::Damping) return;
     for (Ball& b : balls) {
-      if (b.body && b.body->IsAwake() && length(velocity(b)) < phys.rest_speed) setVelocity(b, {});
+      if (b.body && b.body->IsAwake() && length(velocity(b)) < phys.rest_speed) {
+        setVelocity(b, {});
+        last_stop = std::max(last_stop, t);
+      }
     }
   }
 
-  void resolvePairwise(double t0, double h) {
-    const double contact = 2.0 * phys.ball_radius;
+  struct PairContact {
+    double s;  // fraction of the piece
+    std::size_t i, j;
+  };
+
+  // Each ball moves in a straight line over a piece of h seconds at its present velocity.
+  // Forward: from where it is now (a prediction before Box2D moves it). Backward: ending where
+  // Box2D left it, which stays exact when a cushion bounce happened earlier in the piece.
+  void loadTrajectories(double h, bool backward) {
     for (Ball& b : balls) {
       if (!b.body) continue;
-      const Vec2 end = position(b);
-      b.move = end - b.start;
       b.vel = velocity(b);
+      b.move = b.vel * h;
+      b.start = backward ? position(b) - b.move : position(b);
       b.from = 0.0;
       b.changed = false;
     }
+  }
+
+  // The first pair to touch while closing, over the loaded trajectories.
+  std::optional<PairContact> firstContact() const {
+    const double contact = 2.0 * phys.ball_radius;
+    std::optional<PairContact> best;
+    double best_closing = 0.0;
     const std::size_t n = balls.size();
-    const std::size_t cap = 1000 + 100 * n;
-    for (std::size_t resolved = 0;; ++resolved) {
-      double best = std::numeric_limits<double>::infinity();
-      std::size_t bi = 0, bj = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const Ball& a = balls[i];
-        if (!a.body) continue;
-        const bool a_still = a.move == Vec2{} && a.vel == Vec2{};
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const Ball& b = balls[j];
-          if (!b.body || (a_still && b.move == Vec2{} && b.vel == Vec2{})) continue;
-          const double from = std::max(a.from, b.from);
-          const Vec2 rel = (b.start - a.start) + (b.move - a.move) * from;
-          const Vec2 rel_move = (b.move - a.move) * (1.0 - from);
-          if (length(rel) - length(rel_move) > contact) continue;
-          const bool closing = dot(b.vel - a.vel, rel) < 0.0;
-          const auto s = physics::contactFraction(b.start - a.start, b.move - a.move, contact,
-                                                  from, closing);
-          if (s && *s < best) {
-            best = *s;
-            bi = i;
-            bj = j;
-          }
+    for (std::size_t i = 0; i < n; ++i) {
+      const Ball& a = balls[i];
+      if (!a.body) continue;
+      const bool a_still = a.vel == Vec2{};
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Ball& b = balls[j];
+        if (!b.body || (a_still && b.vel == Vec2{})) continue;
+        const double from = std::max(a.from, b.from);
+        const Vec2 rel = (b.start - a.start) + (b.move - a.move) * from;
+        const Vec2 rel_move = (b.move - a.move) * (1.0 - from);
+        if (length(rel) - length(rel_move) > contact + physics::kTouchTolerance) continue;
+        const bool closing = dot(b.vel - a.vel, rel) < 0.0;
+        const auto s = physics::contactFraction(b.start - a.start, b.move - a.move, contact,
+                                                from, closing);
+        if (!s) continue;
+        // Contacts at the same instant (a frozen cluster) go hardest first, so the order
+        // follows the physics rather than the ball numbering.
+        const double closing_speed = -dot(b.vel - a.vel, normalized(rel));
+        if (!best || *s < best->s - kSameInstant ||
+            (*s <= best->s + kSameInstant && closing_speed > best_closing)) {
+          best = PairContact{*s, i, j};
+          best_closing = closing_speed;
         }
       }
-      if (best == std::numeric_limits<double>::infinity()) break;
+    }
+    return best;
+  }
+
+  // Seconds until the next ball-ball contact if every ball kept its velocity, up to h.
+  double nextContactIn(double h) {
+    loadTrajectories(h, false);
+    const auto c = firstContact();
+    return c ? c->s * h : h;
+  }
+
+  // Resolves, one pair at a time in the order they happen, every contact of the piece of h
+  // seconds that Box2D has just stepped (balls pass through each other inside Box2D).
+  void resolvePairwise(double t0, double h) {
+    loadTrajectories(h, true);
+    const std::size_t cap = 1000 + 100 * balls.size();
+    for (std::size_t resolved = 0;; ++resolved) {
+      const auto c = firstContact();
+      if (!c) break;
       if (resolved >= cap) {
         logger("physics")->warn("t={:.4f}: more than {} ball contacts in one step; stopped", t0,
                                 cap);
         break;
       }
-      Ball& a = balls[bi];
-      Ball& b = balls[bj];
-      const Vec2 ca = a.start + a.move * best, cb = b.start + b.move * best;
+      Ball& a = balls[c->i];
+      Ball& b = balls[c->j];
+      const Vec2 ca = a.start + a.move * c->s, cb = b.start + b.move * c->s;
       const Vec2 normal = normalized(cb - ca);
       if (dot(b.vel - a.vel, normal) < 0.0) {
         const auto out = physics::collide(a.vel, b.vel, a.mass, b.mass, phys.ball_restitution,
@@ -228,7 +276,7 @@ struct World::Impl {
         b.vel = out.v2;
         Event e;
         e.type = EventType::BallBall;
-        e.t = t0 + best * h;
+        e.t = t0 + c->s * h;
         e.a = a.id;
         e.b = b.id;
         e.va = a.vel;
@@ -236,12 +284,12 @@ struct World::Impl {
         events.push_back(e);
         logger("physics")->trace("t={:.5f} ball {} - ball {}", e.t, a.id, b.id);
       }
-      // Both continue from the contact point with their velocities for the rest of the step.
+      // Both continue from the contact point with their new velocities for the rest.
       for (Ball* x : {&a, &b}) {
         const Vec2 at = x == &a ? ca : cb;
         x->move = x->vel * h;
-        x->start = at - x->move * best;
-        x->from = best;
+        x->start = at - x->move * c->s;
+        x->from = c->s;
         x->changed = true;
       }
     }
@@ -306,19 +354,31 @@ struct World::Impl {
   void subStep(double t0, double h) {
     // The cloth acts half before and half after the move, so that the move uses the mean
     // speed over the step: exact for constant deceleration.
-    applyCloth(h / 2.0);
-    for (Ball& b : balls) {
-      if (b.body) b.start = position(b);
+    applyCloth(t0, h / 2.0);
+    const bool pairwise = sp.contacts == ContactModel::Pairwise;
+    double done = 0.0;
+    for (int pieces = 0; done < h; ++pieces) {
+      double piece = h - done;
+      if (pairwise && pieces < kMaxPiecesPerStep) {
+        // Step Box2D only up to the next ball contact, so that it is resolved where the balls
+        // really are, whatever the cushions did before it.
+        piece = std::min(piece, nextContactIn(piece));
+        if (piece < kMinPiece) {
+          resolvePairwise(t0 + done, 0.0);
+          continue;
+        }
+      }
+      world.Step(static_cast<float>(piece), sp.velocity_iterations, sp.position_iterations);
+      recordCushionHits(t0 + done + piece);
+      if (pairwise) {
+        resolvePairwise(t0 + done, piece);
+      } else {
+        recordBox2DBallHits(t0 + done + piece);
+      }
+      done += piece;
     }
-    world.Step(static_cast<float>(h), sp.velocity_iterations, sp.position_iterations);
-    recordCushionHits(t0 + h);
-    if (sp.contacts == ContactModel::Pairwise) {
-      resolvePairwise(t0, h);
-    } else {
-      recordBox2DBallHits(t0 + h);
-    }
-    applyCloth(h / 2.0);
-    stopCreepingBalls();
+    applyCloth(t0 + h / 2.0, h / 2.0);
+    stopCreepingBalls(t0 + h);
     dropPocketedBalls(t0 + h);
   }
 
@@ -339,7 +399,7 @@ struct World::Impl {
     if (moving && !now_moving) {
       Event e;
       e.type = EventType::AllAtRest;
-      e.t = time;
+      e.t = std::min(time, std::max(last_stop, time - sp.dt()));
       events.push_back(e);
     }
     moving = now_moving;
