@@ -1,0 +1,101 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "nineball/ball.hpp"
+#include "nineball/params.hpp"
+#include "nineball/rules.hpp"
+#include "nineball/shot.hpp"
+#include "nineball/table.hpp"
+#include "nineball/world.hpp"
+
+namespace nineball {
+
+/// An action the rules do not allow now (cue ball on another ball, push-out not available,
+/// a shot after the game ended...). The message says why.
+class IllegalAction : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// How a rack starts.
+struct MatchSetup {
+  rules::RuleSet rules = rules::RuleSet::Wpa;
+  std::uint64_t seed = 1;  ///< places balls 2-8 in the rack
+  TableDef table;
+  PhysicsParams physics;
+  StepParams step;
+  /// A custom layout instead of the rack; the first turn is then an ordinary shot.
+  std::optional<std::vector<BallState>> balls;
+};
+
+/// One turn of a player: a shot (perhaps a push-out, perhaps placing the cue ball first), or
+/// the choice after the opponent's push-out.
+struct TurnInput {
+  enum class Kind { Shot, PushOut, Decision };
+  Kind kind = Kind::Shot;
+  Shot shot;
+  std::optional<Vec2> cue;  ///< where to place the cue ball (ball in hand, or the break)
+  bool shoot = true;        ///< Decision: shoot (true) or pass the shot back (false)
+};
+
+/// What a turn gave.
+struct TurnRecord {
+  rules::Player shooter = rules::Player::A;
+  TurnInput::Kind kind = TurnInput::Kind::Shot;
+  rules::Verdict verdict;  ///< for a decision: no foul, next = who shoots now
+  int ball_on = 0;         ///< the ball on after the turn
+};
+
+/// A rack of nine-ball played through the real physics: the table, the balls, the rules.
+/// Headless and deterministic. A window drives it with beginShot / step / finishShot; a
+/// script with play().
+class Match {
+ public:
+  explicit Match(const MatchSetup& setup);
+  ~Match();
+
+  /// Plays one whole turn: places the cue ball if asked, shoots, runs to rest, judges.
+  /// Throws IllegalAction when the turn is not allowed.
+  TurnRecord play(const TurnInput& turn);
+
+  /// Checks and starts a shot (push-out or not); the world then has moving balls.
+  void beginShot(const TurnInput& turn);
+  /// True while a shot begun with beginShot is still rolling.
+  bool shotInProgress() const { return in_progress_; }
+  /// Judges the shot once every ball rests.
+  TurnRecord finishShot();
+
+  /// Why the cue ball may not go to `pos` now, or nothing when it may.
+  std::optional<std::string> cuePlacementProblem(Vec2 pos) const;
+  /// True when the player to move must (or may) place the cue ball before shooting.
+  bool cueInHand() const;
+  /// True when placement is limited to behind the head string (the break).
+  bool cueBehindHeadString() const;
+
+  const rules::Rack& rack() const { return rack_; }
+  World& world() { return *world_; }
+  const World& world() const { return *world_; }
+  std::vector<BallState> balls() const { return world_->balls(); }
+
+ private:
+  void placeCue(Vec2 pos);
+  void spot(int ball);
+  void returnCueToHeadSpot();
+  Vec2 freeSpotOnLine(Vec2 from, Vec2 step_dir) const;
+
+  MatchSetup setup_;
+  std::unique_ptr<World> world_;
+  rules::Rack rack_;
+  bool in_progress_ = false;
+  bool push_out_ = false;
+  bool cue_pocketed_ = false;  // the cue ball is off the table, waiting to be placed
+  int ball_on_at_start_ = 0;
+};
+
+}  // namespace nineball
