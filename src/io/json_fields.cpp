@@ -8,15 +8,16 @@ namespace nineball::io {
 
 using nlohmann::json;
 
-namespace {
+std::string quote(const std::string& s) {
+  // Invalid UTF-8 (say, from a cut string) is replaced rather than thrown on.
+  return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 std::string formatNumber(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
 }
-
-}  // namespace
 
 bool Bounds::contains(double v) const {
   const bool above = lo_open ? v > lo : v >= lo;
@@ -47,9 +48,7 @@ std::string describe(const json& v) {
     case json::value_t::string: {
       const auto& s = v.get_ref<const std::string&>();
       // Long strings are cut so that one bad value cannot flood the message.
-      // A cut may split a UTF-8 sequence: replace it rather than throw.
-      const json shown = s.size() > 40 ? json(s.substr(0, 40) + "...") : v;
-      return "string " + shown.dump(-1, ' ', false, json::error_handler_t::replace);
+      return "string " + quote(s.size() > 40 ? s.substr(0, 40) + "..." : s);
     }
     default:
       return v.dump();
@@ -112,8 +111,8 @@ int integer(const json& v, const std::string& path, int lo, int hi) {
     in_range = i >= lo && i <= hi;
   }
   if (!in_range) {
-    refuse(path, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) +
-                     ", found " + describe(v));
+    refuse(path, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) + ", found " +
+                     describe(v));
   }
   return static_cast<int>(v.get<std::int64_t>());
 }

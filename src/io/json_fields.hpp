@@ -2,9 +2,8 @@
 
 #include <initializer_list>
 #include <limits>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "io/parse_error.hpp"
 
@@ -40,6 +39,11 @@ struct Bounds {
 /// Throws ParseError{path + ": " + reason}.
 [[noreturn]] void refuse(const std::string& path, const std::string& reason);
 
+/// The string as a JSON literal: "abc" with its quotes, escaped.
+std::string quote(const std::string& s);
+/// A number as short as it reads: 100, 0.5, 1e+06.
+std::string formatNumber(double v);
+
 /// How a value reads in a message: `string "abc"`, `null`, `1.5`, `an object`.
 std::string describe(const nlohmann::json& v);
 
@@ -55,8 +59,7 @@ void expectObject(const nlohmann::json& v, const std::string& path);
 void allowOnly(const nlohmann::json& obj, const std::string& path,
                std::initializer_list<const char*> keys, const char* what = "unknown field");
 /// The member `key` of the object, refused as "<path>.<key>: required field missing".
-const nlohmann::json& required(const nlohmann::json& obj, const std::string& path,
-                               const char* key);
+const nlohmann::json& required(const nlohmann::json& obj, const std::string& path, const char* key);
 /// The member `key` of the object, or nullptr.
 const nlohmann::json* optional(const nlohmann::json& obj, const char* key);
 

@@ -39,8 +39,7 @@ class PathTrackingBuilder {
     return true;
   }
 
-  bool parse_error(std::size_t /*position*/, const std::string& token,
-                   const json::exception& e) {
+  bool parse_error(std::size_t /*position*/, const std::string& token, const json::exception& e) {
     // Id 406 is "number overflow": the lexer read a literal no double can hold.
     if (e.id == 406) {
       error_ = ParseError{path() + ": number " + token + " is out of range"};
@@ -64,9 +63,8 @@ class PathTrackingBuilder {
   static std::string withoutPrefix(const std::string& what) {
     // nlohmann prefixes "[json.exception.parse_error.101] ", which means nothing to a user.
     const auto end = what.find("] ");
-    return what.rfind("[json.exception.", 0) == 0 && end != std::string::npos
-               ? what.substr(end + 2)
-               : what;
+    return what.rfind("[json.exception.", 0) == 0 && end != std::string::npos ? what.substr(end + 2)
+                                                                              : what;
   }
 
   template <typename T>

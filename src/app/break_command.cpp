@@ -1,0 +1,95 @@
+#include "app/break_command.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <ostream>
+
+#include "app/exit_codes.hpp"
+#include "io/result_json.hpp"
+#include "nineball/scenes.hpp"
+
+namespace nineball::app {
+namespace {
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, fmt, a, b);
+  return buffer;
+}
+
+// CLI::Range lets NaN through (every comparison with it is false), so the test is spelled out.
+const CLI::Validator kSpeedRange(
+    [](std::string& value) -> std::string {
+      double v = 0.0;
+      if (CLI::detail::lexical_cast(value, v) && v >= 0.0 && v <= 100.0) return {};
+      return "must be a number of m/s from 0 to 100, found " + value;
+    },
+    "0..100");
+
+// CLI11 alone would wrap -1 round to 2^64 - 1 and clamp 2^64 down to it.
+const CLI::Validator kSeedCheck(
+    [](std::string& value) -> std::string {
+      std::uint64_t v = 0;
+      const char* end = value.data() + value.size();
+      const auto [stop, ec] = std::from_chars(value.data(), end, v);
+      if (ec == std::errc() && stop == end) return {};
+      return "must be an integer from 0 to 2^64 - 1, found " + value;
+    },
+    "0..2^64-1");
+
+}  // namespace
+
+CLI::App* addBreakCommand(CLI::App& app, BreakOptions& options) {
+  CLI::App* cmd = app.add_subcommand("break", "Simulate the standard nine-ball break headless");
+  cmd->add_option("--seed", options.seed, "Seed of the rack order of balls 2-8")
+      ->check(kSeedCheck)
+      ->capture_default_str();
+  cmd->add_option("--speed", options.speed, "Cue ball speed in m/s")
+      ->check(kSpeedRange)
+      ->capture_default_str();
+  cmd->add_flag("--json", options.json, "Print the result JSON instead of a summary");
+  return cmd;
+}
+
+std::string breakSummary(const BreakOptions& options, const SimResult& result) {
+  std::string s = "Break (seed " + std::to_string(options.seed) + ", " +
+                  format("%g m/s", options.speed) + ")\n";
+  std::string pocketed;
+  const BallState* cue = nullptr;
+  for (const BallState& b : result.balls) {
+    if (b.id == kCueBall) cue = &b;
+    if (b.pocket && b.id != kCueBall) {
+      pocketed += (pocketed.empty() ? "" : ", ") + std::to_string(b.id) + " (" +
+                  pocketName(*b.pocket) + ")";
+    }
+  }
+  s += "Pocketed: " + (pocketed.empty() ? std::string("none") : pocketed) + "\n";
+  if (!cue) {
+    s += "Cue ball: none\n";
+  } else if (cue->pocket) {
+    s += std::string("Cue ball: pocketed in ") + pocketName(*cue->pocket) + " (scratch)\n";
+  } else {
+    s += "Cue ball: at " + format("x = %.3f m, y = %.3f m", cue->pos.x, cue->pos.y) + "\n";
+  }
+  s += "Simulated " + format("%.3f s", result.time) + " in " + std::to_string(result.steps) +
+       " steps (" + format("%.1f ms", result.wall_ms) + ")\n";
+  return s;
+}
+
+int runBreak(const BreakOptions& options, std::ostream& out, std::ostream& err) {
+  const Scene scene = breakScene(options.seed, options.speed);
+  if (auto problem = validateScene(scene)) {
+    err << "nineball break: internal error: the break scene is invalid: " << *problem << '\n';
+    return kExitInternal;
+  }
+  const SimResult result = simulate(scene);
+  if (options.json) {
+    out << io::resultToJson(result).dump(2) << '\n';
+  } else {
+    out << breakSummary(options, result);
+  }
+  out << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+}  // namespace nineball::app

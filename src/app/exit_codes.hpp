@@ -1,0 +1,12 @@
+#pragma once
+
+namespace nineball::app {
+
+/// Exit statuses of the nineball executable.
+constexpr int kExitOk = 0;
+/// A bug or a failure of the machine (not the input's fault).
+constexpr int kExitInternal = 1;
+/// Bad input: a refused scene, an unreadable file, a command-line usage error.
+constexpr int kExitBadInput = 2;
+
+}  // namespace nineball::app

@@ -1,0 +1,61 @@
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "app/break_command.hpp"
+#include "app/exit_codes.hpp"
+#include "app/sim_command.hpp"
+#include "nineball/log.hpp"
+
+namespace nineball::app {
+namespace {
+
+int run(int argc, char** argv) {
+  CLI::App app{"nineball: a nine-ball pool simulator. Without a command, runs the standard break.",
+               "nineball"};
+  // Global options may follow the subcommand too.
+  app.fallthrough();
+  app.require_subcommand(0, 1);
+
+  std::string log_level = "warn";
+  app.add_option("--log-level", log_level, "Log level on stderr")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+      ->capture_default_str();
+
+  SimOptions sim_options;
+  CLI::App* sim = addSimCommand(app, sim_options);
+  BreakOptions break_options;
+  CLI::App* brk = addBreakCommand(app, break_options);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e, std::cout, std::cerr);  // --help
+    // Every usage error exits 2, whatever CLI11's own code for it.
+    std::cerr << "nineball: " << e.what() << "\nRun with --help for more information.\n";
+    return kExitBadInput;
+  }
+  if (!setLogLevel(log_level)) {
+    std::cerr << "nineball: --log-level: unknown level \"" << log_level << "\"\n";
+    return kExitBadInput;
+  }
+
+  if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
+  if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
+  // Headless until the game window exists.
+  return runBreak(BreakOptions{}, std::cout, std::cerr);
+}
+
+}  // namespace
+}  // namespace nineball::app
+
+int main(int argc, char** argv) {
+  try {
+    return nineball::app::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "nineball: internal error: " << e.what() << '\n';
+  } catch (...) {
+    std::cerr << "nineball: internal error: unknown exception\n";
+  }
+  return nineball::app::kExitInternal;
+}

@@ -1,0 +1,94 @@
+#include "app/sim_command.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <optional>
+#include <ostream>
+
+#include "app/exit_codes.hpp"
+#include "io/result_json.hpp"
+#include "io/scene_json.hpp"
+#include "nineball/log.hpp"
+
+namespace nineball::app {
+namespace {
+
+/// The whole stream, or the reason it could not be read.
+std::optional<std::string> readAll(std::istream& in, std::string& why) {
+  std::string text;
+  char buffer[1 << 16];
+  errno = 0;
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) {
+    why = std::string("cannot read: ") + (errno ? std::strerror(errno) : "read error");
+    return std::nullopt;
+  }
+  return text;
+}
+
+std::optional<std::string> readScene(const std::string& path, std::istream& stdin_stream,
+                                     std::string& why) {
+  if (path == "-") return readAll(stdin_stream, why);
+  errno = 0;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    why = std::string("cannot open: ") + (errno ? std::strerror(errno) : "open failed");
+    return std::nullopt;
+  }
+  return readAll(file, why);
+}
+
+bool finite(Vec2 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+/// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
+bool allFinite(const SimResult& r) {
+  bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
+  for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
+  for (const Event& e : r.events) ok = ok && std::isfinite(e.t) && finite(e.va) && finite(e.vb);
+  return ok;
+}
+
+}  // namespace
+
+CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
+  CLI::App* sim =
+      app.add_subcommand("sim", "Simulate a JSON scene and print the result as JSON on stdout");
+  sim->add_option("scene", options.scene_path, "Scene file, or - to read standard input")
+      ->required();
+  return sim;
+}
+
+int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  const std::string shown = options.scene_path == "-" ? "<stdin>" : options.scene_path;
+  const std::string prefix = "nineball sim: " + shown + ": ";
+  std::string why;
+  const auto text = readScene(options.scene_path, in, why);
+  if (!text) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
+  }
+  auto parsed = io::parseScene(*text);
+  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    err << prefix << refused->message << '\n';
+    return kExitBadInput;
+  }
+  const Scene& scene = std::get<Scene>(parsed);
+  logger("app")->debug("{}: {} balls, {}", shown, scene.balls.size(),
+                       scene.until ? "for " + std::to_string(*scene.until) + " s" : "until rest");
+  const SimResult result = simulate(scene);
+  if (!allFinite(result)) {
+    err << prefix << "internal error: the simulation produced a non-finite number\n";
+    return kExitInternal;
+  }
+  out << io::resultToJson(result).dump(2) << '\n' << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+}  // namespace nineball::app

@@ -1,0 +1,67 @@
+#include "io/result_json.hpp"
+
+namespace nineball::io {
+
+using nlohmann::ordered_json;
+
+namespace {
+
+ordered_json pair(Vec2 v) {
+  return ordered_json::array({v.x, v.y});
+}
+
+}  // namespace
+
+ordered_json ballToJson(const BallState& ball) {
+  ordered_json j;
+  j["id"] = ball.id;
+  j["x"] = ball.pos.x;
+  j["y"] = ball.pos.y;
+  j["vx"] = ball.vel.x;
+  j["vy"] = ball.vel.y;
+  j["pocket"] = ball.pocket ? ordered_json(pocketName(*ball.pocket)) : ordered_json(nullptr);
+  return j;
+}
+
+ordered_json eventToJson(const Event& event) {
+  ordered_json j;
+  j["t"] = event.t;
+  // The type names are part of the JSON contract, so they are spelled here, not borrowed.
+  switch (event.type) {
+    case EventType::BallBall:
+      j["type"] = "ball";
+      j["a"] = event.a;
+      j["b"] = event.b;
+      j["va"] = pair(event.va);
+      j["vb"] = pair(event.vb);
+      break;
+    case EventType::Cushion:
+      j["type"] = "cushion";
+      j["ball"] = event.a;
+      j["v"] = pair(event.va);
+      break;
+    case EventType::Pocket:
+      j["type"] = "pocket";
+      j["ball"] = event.a;
+      j["pocket"] = pocketName(event.pocket);
+      break;
+    case EventType::AllAtRest:
+      j["type"] = "rest";
+      break;
+  }
+  return j;
+}
+
+ordered_json resultToJson(const SimResult& result) {
+  ordered_json j;
+  j["time"] = result.time;
+  j["steps"] = result.steps;
+  j["wall_ms"] = result.wall_ms;
+  j["balls"] = ordered_json::array();
+  for (const BallState& b : result.balls) j["balls"].push_back(ballToJson(b));
+  j["events"] = ordered_json::array();
+  for (const Event& e : result.events) j["events"].push_back(eventToJson(e));
+  return j;
+}
+
+}  // namespace nineball::io

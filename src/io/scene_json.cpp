@@ -1,0 +1,278 @@
+#include "io/scene_json.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/json_fields.hpp"
+#include "io/json_reader.hpp"
+
+namespace nineball::io {
+namespace {
+
+using nlohmann::json;
+
+// Faster balls would overrun Box2D's per-step travel clamp at any sensible step rate.
+constexpr double kMaxSpeed = 100.0;  // m/s
+
+constexpr double kMaxTableSize = 100.0;  // m
+constexpr double kMaxUntil = 3600.0;     // s
+
+TableDef parseTable(const json& v) {
+  const std::string path = "table";
+  if (v.is_string()) {
+    const std::string name = v.get<std::string>();
+    if (auto named = TableDef::named(name)) return *named;
+    refuse(path,
+           "unknown table " + quote(name) + " (expected \"9ft\", \"8ft\", \"7ft\" or an object)");
+  }
+  if (!v.is_object()) {
+    refuse(path, "expected a table name or an object, found " + describe(v));
+  }
+  allowOnly(v, path,
+            {"length", "width", "corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"});
+  TableDef t;
+  t.length = number(required(v, path, "length"), "table.length", Bounds::positive(kMaxTableSize));
+  t.width = number(required(v, path, "width"), "table.width", Bounds::positive(kMaxTableSize));
+  if (t.width > t.length) refuse("table.width", "must be <= table.length");
+  for (auto [key, field] : {std::pair{"corner_pocket", &TableDef::corner_pocket},
+                            std::pair{"side_pocket", &TableDef::side_pocket}}) {
+    if (const json* p = optional(v, key)) {
+      const std::string field_path = member(path, key);
+      t.*field = number(*p, field_path, Bounds::positive());
+      if (t.*field >= t.width / 2.0) refuse(field_path, "must be < table.width / 2");
+    }
+  }
+  // A jaw below 90 degrees would point into the table; 180 would lie along the rail.
+  const Bounds jaw{90.0, false, 180.0, true};
+  if (const json* p = optional(v, "corner_jaw_deg")) {
+    t.corner_jaw_deg = number(*p, "table.corner_jaw_deg", jaw);
+  }
+  if (const json* p = optional(v, "side_jaw_deg")) {
+    t.side_jaw_deg = number(*p, "table.side_jaw_deg", jaw);
+  }
+  return t;
+}
+
+struct ParamField {
+  const char* name;
+  double PhysicsParams::*field;
+  Bounds bounds;
+};
+
+// Every parameter reaches Box2D as a float: the upper limits, far beyond any real table, keep
+// it finite there (an infinite damping aborts the process in a Box2D assertion).
+constexpr double kMaxMass = 100.0;  // kg
+
+const ParamField kParamFields[] = {
+    {"ball_mass", &PhysicsParams::ball_mass, Bounds::positive(kMaxMass)},
+    {"ball_radius", &PhysicsParams::ball_radius, Bounds::positive(1.0)},
+    {"ball_restitution", &PhysicsParams::ball_restitution, Bounds::closed(0.0, 1.0)},
+    {"cushion_restitution", &PhysicsParams::cushion_restitution, Bounds::closed(0.0, 1.0)},
+    {"rolling_friction", &PhysicsParams::rolling_friction, Bounds::nonNegative(10.0)},
+    {"sliding_friction", &PhysicsParams::sliding_friction, Bounds::nonNegative(10.0)},
+    {"ball_friction", &PhysicsParams::ball_friction, Bounds::nonNegative(10.0)},
+    {"spin_decay", &PhysicsParams::spin_decay, Bounds::nonNegative(1e4)},
+    {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0)},
+    {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0)},
+    {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed)},
+};
+
+PhysicsParams parsePhysics(const json& v) {
+  const std::string path = "physics";
+  expectObject(v, path);
+  PhysicsParams p;
+  // The preset is the base the overrides apply to, wherever it appears in the object.
+  if (const json* preset = optional(v, "preset")) {
+    const std::string name = text(*preset, "physics.preset");
+    auto found = PhysicsParams::preset(name);
+    if (!found) {
+      refuse("physics.preset",
+             "unknown preset " + quote(name) + " (expected \"real\" or \"paper\")");
+    }
+    p = *found;
+  }
+  for (const auto& item : v.items()) {
+    const std::string& key = item.key();
+    const std::string field_path = member(path, key);
+    if (key == "preset") continue;
+    if (key == "cloth") {
+      const std::string name = text(item.value(), field_path);
+      auto model = clothModelFromName(name);
+      if (!model) {
+        refuse(field_path,
+               "unknown cloth model " + quote(name) + " (expected \"friction\" or \"damping\")");
+      }
+      p.cloth = *model;
+      continue;
+    }
+    const auto* f = std::find_if(std::begin(kParamFields), std::end(kParamFields),
+                                 [&](const ParamField& pf) { return key == pf.name; });
+    if (f == std::end(kParamFields)) {
+      std::string list = "preset, cloth";
+      for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
+      refuse(field_path, "unknown parameter (expected one of: " + list + ")");
+    }
+    p.*(f->field) = number(item.value(), field_path, f->bounds);
+  }
+  return p;
+}
+
+std::vector<BallState> parseBalls(const json& v) {
+  const std::string path = "balls";
+  if (!v.is_array()) refuse(path, "expected an array, found " + describe(v));
+  std::vector<BallState> balls;
+  std::map<int, std::size_t> index_of_id;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const json& b = v[i];
+    const std::string at = element(path, i);
+    expectObject(b, at);
+    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "mass"});
+    BallState ball;
+    ball.id = integer(required(b, at, "id"), member(at, "id"), 0, INT_MAX);
+    const auto [seen, fresh] = index_of_id.emplace(ball.id, i);
+    if (!fresh) {
+      refuse(member(at, "id"), "duplicate id " + std::to_string(ball.id) + " (also " +
+                                   element(path, seen->second) + ")");
+    }
+    ball.pos.x = number(required(b, at, "x"), member(at, "x"));
+    ball.pos.y = number(required(b, at, "y"), member(at, "y"));
+    if (const json* p = optional(b, "vx")) ball.vel.x = number(*p, member(at, "vx"));
+    if (const json* p = optional(b, "vy")) ball.vel.y = number(*p, member(at, "vy"));
+    if (std::hypot(ball.vel.x, ball.vel.y) > kMaxSpeed) {
+      refuse(at, "speed hypot(vx, vy) must be <= " + formatNumber(kMaxSpeed) + " m/s");
+    }
+    if (const json* p = optional(b, "mass")) {
+      ball.mass = number(*p, member(at, "mass"), Bounds::positive(kMaxMass));
+    }
+    balls.push_back(ball);
+  }
+  return balls;
+}
+
+Vec2 parseTip(const json& v) {
+  const std::string path = "shot.tip";
+  if (!v.is_array() || v.size() != 2) {
+    refuse(path, "expected an array of two numbers [side, height], found " + describe(v));
+  }
+  const Bounds fraction = Bounds::closed(-1.0, 1.0);
+  const Vec2 tip{number(v[0], element(path, 0), fraction),
+                 number(v[1], element(path, 1), fraction)};
+  if (dot(tip, tip) > 1.0) refuse(path, "must lie on the ball: side^2 + height^2 <= 1");
+  return tip;
+}
+
+Shot parseShot(const json& v, const std::vector<BallState>& balls, const PhysicsParams& physics) {
+  const std::string path = "shot";
+  expectObject(v, path);
+  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip"});
+  const auto cue =
+      std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
+  if (cue == balls.end()) refuse(path, "needs a cue ball (a ball with id 0)");
+  const double heading = number(required(v, path, "heading_deg"), "shot.heading_deg");
+  const json* speed = optional(v, "speed");
+  const json* force = optional(v, "force");
+  const json* contact_time = optional(v, "contact_time");
+  Shot shot;
+  if (speed) {
+    if (force || contact_time) {
+      refuse(path, "give either \"speed\" or \"force\" and \"contact_time\", not both");
+    }
+    shot = Shot::withSpeed(heading, number(*speed, "shot.speed", Bounds::nonNegative(kMaxSpeed)));
+  } else {
+    if (!force && !contact_time) refuse(path, "needs \"speed\" or \"force\" and \"contact_time\"");
+    if (!force) refuse("shot.force", "required with \"contact_time\"");
+    if (!contact_time) refuse("shot.contact_time", "required with \"force\"");
+    const double f = number(*force, "shot.force", Bounds::positive());
+    const double dt = number(*contact_time, "shot.contact_time", Bounds::positive());
+    shot = Shot::withImpulse(heading, f, dt, cue->mass.value_or(physics.ball_mass));
+    if (!(shot.speed <= kMaxSpeed)) {
+      refuse(path, "force * contact_time / mass gives " + formatNumber(shot.speed) +
+                       " m/s, more than " + formatNumber(kMaxSpeed));
+    }
+  }
+  if (const json* tip = optional(v, "tip")) shot.tip = parseTip(*tip);
+  return shot;
+}
+
+std::optional<double> parseUntil(const json& v) {
+  if (v.is_string() && v.get<std::string>() == "rest") return std::nullopt;
+  if (!v.is_number()) {
+    refuse("until", "expected \"rest\" or a number of seconds, found " + describe(v));
+  }
+  return number(v, "until", Bounds::positive(kMaxUntil));
+}
+
+StepParams parseStep(const json& v) {
+  const std::string path = "step";
+  expectObject(v, path);
+  allowOnly(v, path,
+            {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "max_time"});
+  StepParams s;
+  if (const json* p = optional(v, "hz")) s.hz = number(*p, "step.hz", Bounds::positive(1e5));
+  if (const json* p = optional(v, "velocity_iterations")) {
+    s.velocity_iterations = integer(*p, "step.velocity_iterations", 1, 100);
+  }
+  if (const json* p = optional(v, "position_iterations")) {
+    s.position_iterations = integer(*p, "step.position_iterations", 0, 100);
+  }
+  // Below 1 Box2D unit per metre the cushion loop's vertices come closer than Box2D's linear
+  // slop and b2ChainShape::CreateLoop aborts the process.
+  if (const json* p = optional(v, "scale")) {
+    s.scale = number(*p, "step.scale", Bounds::closed(1.0, 1e4));
+  }
+  if (const json* p = optional(v, "contacts")) {
+    const std::string name = text(*p, "step.contacts");
+    auto model = contactModelFromName(name);
+    if (!model) {
+      refuse("step.contacts",
+             "unknown contact model " + quote(name) + " (expected \"pairwise\" or \"box2d\")");
+    }
+    s.contacts = *model;
+  }
+  if (const json* p = optional(v, "max_time")) {
+    s.max_time = number(*p, "step.max_time", Bounds::positive(36000.0));
+  }
+  return s;
+}
+
+Scene parseDocument(const json& doc) {
+  if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
+  allowOnly(doc, "", {"table", "physics", "balls", "shot", "until", "step"});
+  Scene scene;
+  if (const json* p = optional(doc, "table")) scene.table = parseTable(*p);
+  if (const json* p = optional(doc, "physics")) scene.physics = parsePhysics(*p);
+  scene.balls = parseBalls(required(doc, "", "balls"));
+  if (const json* p = optional(doc, "shot")) scene.shot = parseShot(*p, scene.balls, scene.physics);
+  if (const json* p = optional(doc, "until")) scene.until = parseUntil(*p);
+  if (const json* p = optional(doc, "step")) scene.step = parseStep(*p);
+  if (auto problem = validateScene(scene)) throw ParseError{*problem};
+  return scene;
+}
+
+}  // namespace
+
+SceneResult parseScene(std::string_view text) {
+  const bool blank = std::all_of(text.begin(), text.end(), [](char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+  });
+  if (blank) return ParseError{"invalid JSON: empty input"};
+  try {
+    return parseDocument(readJson(text));
+  } catch (const ParseError& e) {
+    return e;
+  }
+}
+
+SceneResult sceneFromJson(const nlohmann::json& doc) {
+  try {
+    return parseDocument(doc);
+  } catch (const ParseError& e) {
+    return e;
+  }
+}
+
+}  // namespace nineball::io

@@ -1,0 +1,184 @@
+// Runs the real nineball binary, as a user or a script would.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// A file under $TMPDIR (or /tmp) made with mkstemp, removed again at scope exit.
+class TempFile {
+ public:
+  explicit TempFile(const std::string& content = "") {
+    const char* dir = std::getenv("TMPDIR");
+    std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/nineball_cli_XXXXXX";
+    const int fd = mkstemp(pattern.data());
+    if (fd < 0) throw std::runtime_error("mkstemp failed for " + pattern);
+    ::close(fd);
+    path_ = pattern;
+    std::ofstream(path_, std::ios::binary) << content;
+  }
+  ~TempFile() { std::remove(path_.c_str()); }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::string read() const {
+    std::ifstream in(path_, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+ private:
+  std::string path_;
+};
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+struct Outcome {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs `nineball ARGS`, stdin from `stdin_path` (or /dev/null), and collects both streams.
+Outcome run(const std::string& args, const std::string& stdin_path = "/dev/null") {
+  TempFile err;
+  const std::string command =
+      quoted(NINEBALL_BINARY) + " " + args + " <" + quoted(stdin_path) + " 2>" + quoted(err.path());
+  Outcome r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = err.read();
+  return r;
+}
+
+const char* kGoodScene = R"({
+  "balls": [{"id": 0, "x": -0.635, "y": 0.0}, {"id": 1, "x": 0.3, "y": 0.02}],
+  "shot": {"heading_deg": 0, "speed": 2.0},
+  "until": 0.5
+})";
+
+std::vector<std::string> keysOf(const nlohmann::ordered_json& j) {
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  return keys;
+}
+
+TEST(SimCli, PrintsTheResultOfAGoodScene) {
+  TempFile scene(kGoodScene);
+  const Outcome r = run("sim " + quoted(scene.path()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto doc = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(keysOf(doc), (std::vector<std::string>{"time", "steps", "wall_ms", "balls", "events"}));
+  ASSERT_EQ(doc["balls"].size(), 2u);
+  EXPECT_EQ(doc["balls"][0]["id"], 0);
+  EXPECT_EQ(doc["balls"][1]["id"], 1);
+  EXPECT_GT(doc["steps"].get<long>(), 0);
+}
+
+TEST(SimCli, ReadsStandardInputAndGivesTheSameResult) {
+  TempFile scene(kGoodScene);
+  const Outcome from_file = run("sim " + quoted(scene.path()));
+  const Outcome from_stdin = run("sim -", scene.path());
+  ASSERT_EQ(from_stdin.status, 0) << from_stdin.err;
+  auto a = nlohmann::json::parse(from_file.out);
+  auto b = nlohmann::json::parse(from_stdin.out);
+  // Wall time is the one field that may differ between two runs.
+  a.erase("wall_ms");
+  b.erase("wall_ms");
+  EXPECT_EQ(a, b);
+}
+
+TEST(SimCli, RefusesBadScenesWithStatus2AndNothingOnStdout) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{\"balls\": [", "invalid JSON"},
+      {"", "empty input"},
+      {R"({"balls": [], "colour": 1})", "colour: unknown field"},
+      {R"({"balls": [{"id": 0, "x": "left", "y": 0}]})", "balls[0].x: expected a number"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.01, "y": 0}]})", "balls[1]"},
+      {R"({"balls": [{"id": 0, "x": 9, "y": 0}]})", "balls[0]"},
+  };
+  for (const auto& [text, reason] : cases) {
+    TempFile scene(text);
+    const Outcome r = run("sim " + quoted(scene.path()));
+    EXPECT_EQ(r.status, 2) << text;
+    EXPECT_EQ(r.out, "") << text;
+    EXPECT_EQ(r.err.rfind("nineball sim: " + scene.path() + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+  }
+}
+
+TEST(SimCli, RefusesBadStandardInput) {
+  TempFile scene("{\"balls\": 3}");
+  const Outcome r = run("sim -", scene.path());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("balls: expected an array"), std::string::npos) << r.err;
+  const Outcome empty = run("sim -");
+  EXPECT_EQ(empty.status, 2);
+  EXPECT_EQ(empty.out, "");
+}
+
+TEST(SimCli, RefusesAMissingFile) {
+  const Outcome r = run("sim /nonexistent/nineball/scene.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("cannot open"), std::string::npos) << r.err;
+}
+
+TEST(SimCli, HelpExitsZero) {
+  const Outcome top = run("--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("sim"), std::string::npos);
+  const Outcome sim = run("sim --help");
+  EXPECT_EQ(sim.status, 0);
+  EXPECT_NE(sim.out.find("scene"), std::string::npos);
+}
+
+TEST(SimCli, UsageErrorsExit2) {
+  for (const std::string args :
+       {"--no-such-option", "sim", "sim a.json b.json", "frobnicate", "--log-level loud sim -",
+        "break --speed fast", "break --seed -1"}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(r.out, "") << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+TEST(SimCli, AcceptsALogLevelBeforeOrAfterTheCommand) {
+  TempFile scene(kGoodScene);
+  EXPECT_EQ(run("--log-level off sim " + quoted(scene.path())).status, 0);
+  EXPECT_EQ(run("sim " + quoted(scene.path()) + " --log-level error").status, 0);
+}
+
+TEST(SimCli, BreakPrintsASummaryOrJson) {
+  const Outcome summary = run("");
+  ASSERT_EQ(summary.status, 0) << summary.err;
+  EXPECT_NE(summary.out.find("Pocketed"), std::string::npos) << summary.out;
+  EXPECT_NE(summary.out.find("Cue ball"), std::string::npos) << summary.out;
+  const Outcome json = run("break --seed 3 --speed 8 --json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  const auto doc = nlohmann::json::parse(json.out);
+  EXPECT_EQ(doc["balls"].size(), 10u);
+}
+
+}  // namespace

@@ -1,0 +1,335 @@
+#include "io/scene_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace nineball::io {
+namespace {
+
+/// Two balls well apart on a 9 ft table, with `extra` spliced in as further top-level keys.
+std::string scene(const std::string& extra = "") {
+  return R"({"balls": [{"id": 0, "x": -0.635, "y": 0.0}, {"id": 1, "x": 0.635, "y": 0.1}])" +
+         (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+/// Checks that the text is refused with a message starting "<field>: " and holding `reason`.
+::testing::AssertionResult refusedAt(const std::string& text, const std::string& field,
+                                     const std::string& reason) {
+  const SceneResult r = parseScene(text);
+  const auto* e = std::get_if<ParseError>(&r);
+  if (!e) return ::testing::AssertionFailure() << "accepted: " << text;
+  if (e->message.rfind(field + ": ", 0) != 0 || e->message.find(reason) == std::string::npos) {
+    return ::testing::AssertionFailure() << "message \"" << e->message << "\" does not name \""
+                                         << field << "\" with \"" << reason << "\"";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+Scene accepted(const std::string& text) {
+  SceneResult r = parseScene(text);
+  if (const auto* e = std::get_if<ParseError>(&r)) {
+    ADD_FAILURE() << "refused: " << e->message;
+    return {};
+  }
+  return std::get<Scene>(r);
+}
+
+TEST(SceneJson, RefusesUnreadableJson) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [)", "invalid JSON", "parse error"));
+  EXPECT_TRUE(refusedAt(scene() + " trailing", "invalid JSON", "parse error"));
+  EXPECT_TRUE(refusedAt("", "invalid JSON", "empty input"));
+  EXPECT_TRUE(refusedAt(" \n", "invalid JSON", "empty input"));
+}
+
+TEST(SceneJson, RefusesARootThatIsNotAnObject) {
+  EXPECT_TRUE(refusedAt("[]", "scene", "expected an object"));
+  EXPECT_TRUE(refusedAt("3", "scene", "expected an object"));
+}
+
+TEST(SceneJson, RefusesMissingBalls) {
+  EXPECT_TRUE(refusedAt("{}", "balls", "required"));
+  EXPECT_TRUE(refusedAt(R"({"balls": {}})", "balls", "expected an array"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0}]})", "balls[0].y", "required"));
+}
+
+TEST(SceneJson, RefusesMistypedFields) {
+  EXPECT_TRUE(refusedAt(
+      R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0},
+                    {"id": 2, "x": "far", "y": 0}]})",
+      "balls[2].x", "expected a number"));
+  EXPECT_TRUE(
+      refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": null}]})", "balls[0].y", "expected a number"));
+  EXPECT_TRUE(
+      refusedAt(R"({"balls": [{"id": 0, "x": true, "y": 0}]})", "balls[0].x", "expected a number"));
+  EXPECT_TRUE(refusedAt(R"({"balls": ["cue"]})", "balls[0]", "expected an object"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": "heavy"})"), "physics.ball_mass",
+                        "expected a number"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": [])"), "physics", "expected an object"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": 9)"), "table", "expected a table name or an object"));
+}
+
+TEST(SceneJson, RefusesIdsThatAreNotNonNegativeIntegers) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 1.5, "x": 0, "y": 0}]})", "balls[0].id",
+                        "expected an integer"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 3.0, "x": 0, "y": 0}]})", "balls[0].id",
+                        "expected an integer"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": -1, "x": 0, "y": 0}]})", "balls[0].id", ">= 0"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 18446744073709551615, "x": 0, "y": 0}]})",
+                        "balls[0].id", "<= 2147483647"));
+}
+
+TEST(SceneJson, RefusesNumbersNoDoubleCanHold) {
+  EXPECT_TRUE(
+      refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 1e999}]})",
+                "balls[1].y", "out of range"));
+  EXPECT_TRUE(
+      refusedAt(scene(R"("physics": {"gravity": -1e999})"), "physics.gravity", "out of range"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "tip": [0, 1e999]})"),
+                        "shot.tip[1]", "out of range"));
+}
+
+TEST(SceneJson, RefusesAKeyGivenTwice) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "x": 1, "y": 0}]})", "balls[0].x",
+                        "duplicate key"));
+  EXPECT_TRUE(refusedAt(scene(R"("until": 1, "until": 2)"), "until", "duplicate key"));
+}
+
+TEST(SceneJson, RefusesUnknownFields) {
+  EXPECT_TRUE(refusedAt(scene(R"("colour": "green")"), "colour", "unknown field"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "spin": 1}]})", "balls[0].spin",
+                        "unknown field"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"substeps": 4})"), "step.substeps", "unknown field"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "english": 1})"),
+                        "shot.english", "unknown field"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 2, "width": 1, "rails": 6})"), "table.rails",
+                        "unknown field"));
+}
+
+TEST(SceneJson, RefusesUnknownPhysicsParameters) {
+  EXPECT_TRUE(
+      refusedAt(scene(R"("physics": {"air_drag": 0.1})"), "physics.air_drag", "unknown parameter"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"preset": "moon"})"), "physics.preset",
+                        "unknown preset \"moon\""));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cloth": "felt"})"), "physics.cloth",
+                        "unknown cloth model \"felt\""));
+}
+
+TEST(SceneJson, RefusesPhysicsOutOfRange) {
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": 0})"), "physics.ball_mass", "> 0"));
+  EXPECT_TRUE(
+      refusedAt(scene(R"("physics": {"ball_radius": -0.01})"), "physics.ball_radius", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_restitution": 1.5})"),
+                        "physics.ball_restitution", ">= 0 and <= 1"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"rolling_friction": -0.1})"),
+                        "physics.rolling_friction", ">= 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"gravity": 0})"), "physics.gravity", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"linear_damping": 1e300})"), "physics.linear_damping",
+                        "<= 1000"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": 1e300})"), "physics.ball_mass",
+                        "> 0 and <= 100"));
+}
+
+TEST(SceneJson, RefusesUnknownOrImpossibleTables) {
+  EXPECT_TRUE(refusedAt(scene(R"("table": "10ft")"), "table", "unknown table \"10ft\""));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"width": 1.27})"), "table.length", "required"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 1.0, "width": 2.0})"), "table.width",
+                        "<= table.length"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 0, "width": 0})"), "table.length", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 2.54, "width": 1.27, "side_pocket": 0.7})"),
+                        "table.side_pocket", "< table.width / 2"));
+}
+
+TEST(SceneJson, RefusesDuplicateIds) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 3, "x": 0, "y": 0}, {"id": 3, "x": 0.5, "y": 0}]})",
+                        "balls[1].id", "duplicate id 3"));
+}
+
+TEST(SceneJson, RefusesANegativeMass) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "mass": -0.17}]})", "balls[0].mass",
+                        "> 0"));
+}
+
+TEST(SceneJson, RefusesABadUntil) {
+  EXPECT_TRUE(refusedAt(scene(R"("until": "forever")"), "until", "expected \"rest\""));
+  EXPECT_TRUE(refusedAt(scene(R"("until": 0)"), "until", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("until": 7200)"), "until", "<= 3600"));
+  EXPECT_TRUE(refusedAt(scene(R"("until": [])"), "until", "expected \"rest\""));
+}
+
+TEST(SceneJson, RefusesABadStep) {
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"hz": 0})"), "step.hz", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"velocity_iterations": 0})"), "step.velocity_iterations",
+                        ">= 1"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"position_iterations": 2.5})"),
+                        "step.position_iterations", "expected an integer"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"scale": 0.1})"), "step.scale", ">= 1 and <= 10000"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"contacts": "exact"})"), "step.contacts",
+                        "unknown contact model"));
+}
+
+TEST(SceneJson, RefusesSpeedTogetherWithForce) {
+  EXPECT_TRUE(refusedAt(
+      scene(R"("shot": {"heading_deg": 0, "speed": 3, "force": 10, "contact_time": 0.01})"), "shot",
+      "not both"));
+}
+
+TEST(SceneJson, RefusesIncompleteOrExcessiveShots) {
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"speed": 3})"), "shot.heading_deg", "required"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0})"), "shot", "needs \"speed\""));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "force": 10})"), "shot.contact_time",
+                        "required"));
+  EXPECT_TRUE(
+      refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 101})"), "shot.speed", "<= 100"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "force": 1000, "contact_time": 1})"),
+                        "shot", "more than 100"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "tip": [0.1]})"),
+                        "shot.tip", "two numbers"));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "tip": [0.9, 0.9]})"),
+                        "shot.tip", "must lie on the ball"));
+}
+
+TEST(SceneJson, RefusesAShotWithoutCueBall) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 1, "x": 0, "y": 0}],
+                            "shot": {"heading_deg": 0, "speed": 3}})",
+                        "shot", "cue ball"));
+}
+
+// The last two rely on validateScene, whose message names the ball.
+TEST(SceneJson, RefusesOverlappingBalls) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 5, "x": 0.03, "y": 0}]})",
+                        "balls[1]", "overlap"));
+}
+
+TEST(SceneJson, RefusesABallOffTheTable) {
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 3.0, "y": 0}]})",
+                        "balls[1]", "off the table"));
+}
+
+TEST(SceneJson, AppliesDefaults) {
+  const Scene s = accepted(R"({"balls": [{"id": 0, "x": -0.5, "y": 0.25}]})");
+  const TableDef nine = TableDef::nineFoot();
+  EXPECT_EQ(s.table.length, nine.length);
+  EXPECT_EQ(s.table.width, nine.width);
+  EXPECT_EQ(s.table.corner_pocket, nine.corner_pocket);
+  const PhysicsParams real = PhysicsParams::real();
+  EXPECT_EQ(s.physics.ball_mass, real.ball_mass);
+  EXPECT_EQ(s.physics.ball_restitution, real.ball_restitution);
+  EXPECT_EQ(s.physics.cloth, real.cloth);
+  const StepParams step;
+  EXPECT_EQ(s.step.hz, step.hz);
+  EXPECT_EQ(s.step.contacts, step.contacts);
+  EXPECT_FALSE(s.shot.has_value());
+  EXPECT_FALSE(s.until.has_value());
+  ASSERT_EQ(s.balls.size(), 1u);
+  EXPECT_EQ(s.balls[0].id, 0);
+  EXPECT_EQ(s.balls[0].pos, Vec2(-0.5, 0.25));
+  EXPECT_EQ(s.balls[0].vel, Vec2());
+  EXPECT_FALSE(s.balls[0].mass.has_value());
+  EXPECT_FALSE(s.balls[0].pocket.has_value());
+}
+
+TEST(SceneJson, ReadsBallFields) {
+  const Scene s = accepted(R"({"balls": [{"id": 7, "x": 0.1, "y": -0.2, "vx": 1.5, "vy": -2,
+                                          "mass": 0.16}]})");
+  ASSERT_EQ(s.balls.size(), 1u);
+  EXPECT_EQ(s.balls[0].id, 7);
+  EXPECT_EQ(s.balls[0].vel, Vec2(1.5, -2.0));
+  EXPECT_EQ(s.balls[0].mass, 0.16);
+}
+
+TEST(SceneJson, AppliesThePresetBeforeOverridesWhateverTheKeyOrder) {
+  const Scene s =
+      accepted(scene(R"("physics": {"ball_mass": 0.2, "preset": "paper", "cloth": "damping"})"));
+  const PhysicsParams paper = PhysicsParams::paper();
+  EXPECT_EQ(s.physics.ball_mass, 0.2);
+  EXPECT_EQ(s.physics.ball_restitution, paper.ball_restitution);
+  EXPECT_EQ(s.physics.cushion_restitution, paper.cushion_restitution);
+  EXPECT_EQ(s.physics.cloth, ClothModel::Damping);
+}
+
+TEST(SceneJson, ReadsEveryPhysicsParameter) {
+  const Scene s = accepted(scene(R"("physics": {
+      "ball_mass": 0.16, "ball_radius": 0.028, "ball_restitution": 0.9,
+      "cushion_restitution": 0.7, "rolling_friction": 0.02, "sliding_friction": 0.3,
+      "ball_friction": 0.05, "spin_decay": 8, "gravity": 9.8, "linear_damping": 0.5,
+      "rest_speed": 0.002})"));
+  EXPECT_EQ(s.physics.ball_mass, 0.16);
+  EXPECT_EQ(s.physics.ball_radius, 0.028);
+  EXPECT_EQ(s.physics.ball_restitution, 0.9);
+  EXPECT_EQ(s.physics.cushion_restitution, 0.7);
+  EXPECT_EQ(s.physics.rolling_friction, 0.02);
+  EXPECT_EQ(s.physics.sliding_friction, 0.3);
+  EXPECT_EQ(s.physics.ball_friction, 0.05);
+  EXPECT_EQ(s.physics.spin_decay, 8.0);
+  EXPECT_EQ(s.physics.gravity, 9.8);
+  EXPECT_EQ(s.physics.linear_damping, 0.5);
+  EXPECT_EQ(s.physics.rest_speed, 0.002);
+}
+
+TEST(SceneJson, ReadsANamedTable) {
+  const Scene s = accepted(R"({"table": "7ft", "balls": [{"id": 0, "x": -0.4, "y": 0}]})");
+  EXPECT_EQ(s.table.length, 1.98);
+  EXPECT_EQ(s.table.width, 0.99);
+}
+
+TEST(SceneJson, ReadsACustomTable) {
+  const Scene s = accepted(scene(R"("table": {"length": 2.2, "width": 1.1, "corner_pocket": 0.12,
+                                             "corner_jaw_deg": 140})"));
+  EXPECT_EQ(s.table.length, 2.2);
+  EXPECT_EQ(s.table.width, 1.1);
+  EXPECT_EQ(s.table.corner_pocket, 0.12);
+  EXPECT_EQ(s.table.corner_jaw_deg, 140.0);
+  EXPECT_EQ(s.table.side_pocket, TableDef().side_pocket);
+  EXPECT_EQ(s.table.side_jaw_deg, TableDef().side_jaw_deg);
+}
+
+TEST(SceneJson, ReadsASpeedShotWithTip) {
+  const Scene s =
+      accepted(scene(R"("shot": {"heading_deg": 90, "speed": 3, "tip": [0.25, -0.5]})"));
+  ASSERT_TRUE(s.shot.has_value());
+  const Shot expected = Shot::withSpeed(90.0, 3.0);
+  EXPECT_EQ(s.shot->heading_rad, expected.heading_rad);
+  EXPECT_EQ(s.shot->speed, 3.0);
+  EXPECT_EQ(s.shot->tip, Vec2(0.25, -0.5));
+}
+
+TEST(SceneJson, ReadsAnImpulseShotWithTheCueBallMass) {
+  const Scene s =
+      accepted(scene(R"("shot": {"heading_deg": 0, "force": 10, "contact_time": 0.01})"));
+  ASSERT_TRUE(s.shot.has_value());
+  EXPECT_EQ(s.shot->speed, Shot::withImpulse(0.0, 10.0, 0.01, PhysicsParams().ball_mass).speed);
+
+  const Scene heavy = accepted(R"({"balls": [{"id": 0, "x": 0, "y": 0, "mass": 0.2}],
+                                   "physics": {"ball_mass": 0.1},
+                                   "shot": {"heading_deg": 0, "force": 10, "contact_time": 0.01}})");
+  ASSERT_TRUE(heavy.shot.has_value());
+  EXPECT_EQ(heavy.shot->speed, Shot::withImpulse(0.0, 10.0, 0.01, 0.2).speed);
+}
+
+TEST(SceneJson, ReadsUntilAndStep) {
+  const Scene timed = accepted(scene(R"("until": 2.5, "step": {"hz": 2000,
+      "velocity_iterations": 10, "position_iterations": 0, "scale": 50, "contacts": "box2d",
+      "max_time": 30})"));
+  EXPECT_EQ(timed.until, 2.5);
+  EXPECT_EQ(timed.step.hz, 2000.0);
+  EXPECT_EQ(timed.step.velocity_iterations, 10);
+  EXPECT_EQ(timed.step.position_iterations, 0);
+  EXPECT_EQ(timed.step.scale, 50.0);
+  EXPECT_EQ(timed.step.contacts, ContactModel::Box2D);
+  EXPECT_EQ(timed.step.max_time, 30.0);
+  EXPECT_FALSE(accepted(scene(R"("until": "rest")")).until.has_value());
+}
+
+TEST(SceneJson, ReadsAParsedDocument) {
+  const auto doc = nlohmann::json::parse(scene(R"("until": 1)"));
+  const SceneResult r = sceneFromJson(doc);
+  ASSERT_TRUE(std::holds_alternative<Scene>(r));
+  EXPECT_EQ(std::get<Scene>(r).balls.size(), 2u);
+  const SceneResult bad = sceneFromJson(nlohmann::json::array());
+  ASSERT_TRUE(std::holds_alternative<ParseError>(bad));
+}
+
+}  // namespace
+}  // namespace nineball::io
