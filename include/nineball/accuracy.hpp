@@ -9,8 +9,8 @@ namespace nineball {
 
 /// The worst error of one canonical case against its closed form.
 struct CaseError {
-  std::string name;   ///< head-on, cut-sweep, cushion, stopping, cradle
-  std::string unit;   ///< "%" (relative to the formula) or "deg"
+  std::string name;  ///< head-on, cut-sweep, cushion, stopping, cradle
+  std::string unit;  ///< "%" (relative to the formula) or "deg"
   double worst = 0.0;
 };
 

@@ -13,10 +13,10 @@ constexpr int kCueBall = 0;
 /// A ball as the world outside the physics sees it.
 struct BallState {
   int id = 0;
-  Vec2 pos;                       ///< m
-  Vec2 vel;                       ///< m/s
-  std::optional<double> mass;     ///< kg; the physics' ball_mass when empty
-  std::optional<PocketId> pocket; ///< set once the ball has dropped
+  Vec2 pos;                        ///< m
+  Vec2 vel;                        ///< m/s
+  std::optional<double> mass;      ///< kg; the physics' ball_mass when empty
+  std::optional<PocketId> pocket;  ///< set once the ball has dropped
 };
 
 }  // namespace nineball

@@ -19,17 +19,17 @@ enum class ContactModel {
 
 /// Physical parameters, SI units. Every field can be overridden in a scene.
 struct PhysicsParams {
-  double ball_mass = 0.170;            ///< kg (WPA 156-170 g)
-  double ball_radius = 0.028575;       ///< m (2.25 in diameter)
-  double ball_restitution = 0.95;      ///< ball-ball e (0.92-0.98)
-  double cushion_restitution = 0.85;   ///< ball-cushion e (0.6-0.9)
-  double rolling_friction = 0.01;      ///< mu of the cloth model (rolling resistance)
-  double sliding_friction = 0.2;       ///< mu of a sliding ball (used by the spin model)
-  double ball_friction = 0.06;         ///< ball-ball friction (used by the spin model)
-  double spin_decay = 10.0;            ///< rad/s^2, decay of spin about the vertical
-  double gravity = 9.81;               ///< m/s^2
-  double linear_damping = 0.2;         ///< 1/s, the damping model's c
-  double rest_speed = 0.001;           ///< m/s, below which the damping model stops a ball
+  double ball_mass = 0.170;           ///< kg (WPA 156-170 g)
+  double ball_radius = 0.028575;      ///< m (2.25 in diameter)
+  double ball_restitution = 0.95;     ///< ball-ball e (0.92-0.98)
+  double cushion_restitution = 0.85;  ///< ball-cushion e (0.6-0.9)
+  double rolling_friction = 0.01;     ///< mu of the cloth model (rolling resistance)
+  double sliding_friction = 0.2;      ///< mu of a sliding ball (used by the spin model)
+  double ball_friction = 0.06;        ///< ball-ball friction (used by the spin model)
+  double spin_decay = 10.0;           ///< rad/s^2, decay of spin about the vertical
+  double gravity = 9.81;              ///< m/s^2
+  double linear_damping = 0.2;        ///< 1/s, the damping model's c
+  double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
   ClothModel cloth = ClothModel::Friction;
 
   /// Real equipment (WPA, Alciatore, pooltool defaults).
@@ -43,12 +43,12 @@ struct PhysicsParams {
 
 /// Solver settings. Box2D units are metres x scale.
 struct StepParams {
-  double hz = 500.0;                ///< fixed steps per simulated second
+  double hz = 500.0;  ///< fixed steps per simulated second
   int velocity_iterations = 8;
   int position_iterations = 3;
-  double scale = 100.0;             ///< Box2D units per metre (k)
+  double scale = 100.0;  ///< Box2D units per metre (k)
   ContactModel contacts = ContactModel::Pairwise;
-  double max_time = 600.0;          ///< s, a run to rest gives up after this long
+  double max_time = 600.0;  ///< s, a run to rest gives up after this long
 
   double dt() const { return 1.0 / hz; }
 };

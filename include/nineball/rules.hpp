@@ -21,16 +21,20 @@ enum class Foul { None, Scratch, WrongBallFirst, NoContact, NoRail, BadBreak, Th
 const char* foulName(Foul f);
 
 enum class Player { A, B };
-inline Player other(Player p) { return p == Player::A ? Player::B : Player::A; }
-inline const char* playerName(Player p) { return p == Player::A ? "A" : "B"; }
+inline Player other(Player p) {
+  return p == Player::A ? Player::B : Player::A;
+}
+inline const char* playerName(Player p) {
+  return p == Player::A ? "A" : "B";
+}
 
 /// What happened in one shot, as the physics events tell it.
 struct ShotSummary {
   std::optional<int> first_contact;  ///< first object ball the cue ball touched
   std::vector<int> pocketed;         ///< object balls pocketed, in the order they dropped
   bool cue_pocketed = false;
-  bool rail_after_contact = false;   ///< some ball (cue included) met a cushion after contact
-  int object_balls_to_rail = 0;      ///< distinct object balls that met a cushion
+  bool rail_after_contact = false;  ///< some ball (cue included) met a cushion after contact
+  int object_balls_to_rail = 0;     ///< distinct object balls that met a cushion
 };
 
 /// The rules' answer to a shot.

@@ -22,9 +22,9 @@ struct Scene {
 };
 
 struct SimResult {
-  double time = 0.0;    ///< simulated seconds reached
-  long steps = 0;       ///< fixed steps computed
-  double wall_ms = 0.0; ///< wall time of the stepping alone
+  double time = 0.0;     ///< simulated seconds reached
+  long steps = 0;        ///< fixed steps computed
+  double wall_ms = 0.0;  ///< wall time of the stepping alone
   std::vector<BallState> balls;
   std::vector<Event> events;
 };

@@ -12,12 +12,12 @@ namespace nineball {
 /// Size of a table's playing surface and its pocket mouths, in metres. Origin at the centre,
 /// x along the length, y across. The cushion noses lie on x = +-length/2 and y = +-width/2.
 struct TableDef {
-  double length = 2.54;          ///< between the long-axis cushion noses (9 ft table)
-  double width = 1.27;           ///< between the short-axis cushion noses
-  double corner_pocket = 0.116;  ///< corner mouth, jaw point to jaw point (WPA 114-117 mm)
-  double side_pocket = 0.129;    ///< side mouth, jaw point to jaw point (WPA 127-130 mm)
-  double corner_jaw_deg = 142.0; ///< angle between cushion nose and jaw face (WPA 142 +-1)
-  double side_jaw_deg = 104.0;   ///< the same for the side pockets (WPA 103-104)
+  double length = 2.54;           ///< between the long-axis cushion noses (9 ft table)
+  double width = 1.27;            ///< between the short-axis cushion noses
+  double corner_pocket = 0.116;   ///< corner mouth, jaw point to jaw point (WPA 114-117 mm)
+  double side_pocket = 0.129;     ///< side mouth, jaw point to jaw point (WPA 127-130 mm)
+  double corner_jaw_deg = 142.0;  ///< angle between cushion nose and jaw face (WPA 142 +-1)
+  double side_jaw_deg = 104.0;    ///< the same for the side pockets (WPA 103-104)
 
   static TableDef nineFoot() { return {}; }
   static TableDef eightFoot() { return {2.34, 1.17}; }
@@ -37,9 +37,9 @@ std::optional<PocketId> pocketFromName(const std::string& name);
 /// is pocketed once its centre is inside the drop circle.
 struct Pocket {
   PocketId id = PocketId::TopLeft;
-  Vec2 jaw_a;          ///< first jaw point met going clockwise round the table
-  Vec2 jaw_b;          ///< second jaw point
-  Vec2 outward;        ///< unit vector from the mouth into the pocket
+  Vec2 jaw_a;    ///< first jaw point met going clockwise round the table
+  Vec2 jaw_b;    ///< second jaw point
+  Vec2 outward;  ///< unit vector from the mouth into the pocket
   Vec2 drop_centre;
   double drop_radius = 0.0;
 };

@@ -11,7 +11,9 @@ namespace nineball {
 namespace {
 
 // A table long enough that no case meets a cushion it does not aim at.
-TableDef openTable() { return {60.0, 20.0}; }
+TableDef openTable() {
+  return {60.0, 20.0};
+}
 
 const Event* firstEvent(const World& w, EventType type) {
   for (const Event& e : w.events()) {
@@ -20,7 +22,9 @@ const Event* firstEvent(const World& w, EventType type) {
   return nullptr;
 }
 
-double relErr(double got, double want, double scale) { return std::abs(got - want) / scale * 100.0; }
+double relErr(double got, double want, double scale) {
+  return std::abs(got - want) / scale * 100.0;
+}
 
 void runToEvent(World& w, EventType type, double max_seconds) {
   const long limit = w.steps() + std::lround(max_seconds * w.stepParams().hz);
@@ -167,8 +171,8 @@ double stopping(const StepParams& sp) {
     const double dist = w.balls()[0].pos.x + 25.0;
     const Event* rest = firstEvent(w, EventType::AllAtRest);
     const double t = rest ? rest->t : 0.0;
-    worst = std::max({worst, relErr(dist, v0 * v0 / (2.0 * a), v0 * v0 / (2.0 * a)),
-                      relErr(t, v0 / a, v0 / a)});
+    worst = std::max(
+        {worst, relErr(dist, v0 * v0 / (2.0 * a), v0 * v0 / (2.0 * a)), relErr(t, v0 / a, v0 / a)});
   }
   return worst;
 }
@@ -203,10 +207,14 @@ std::vector<CaseError> runAccuracyCases(const StepParams& step) {
       }
     }
   }
-  return {{"head-on", "%", headOn(step)},   {"cut-direction", "deg", dir},
-          {"cut-speed", "%", speed},        {"cushion", "%", cushion(step)},
-          {"stopping", "%", stopping(step)}, {"cradle", "%", cradle(step)},
-          {"cushion-gap", "mm", cushionGap(step)}, {"bank-kiss", "deg", bankKiss(step)}};
+  return {{"head-on", "%", headOn(step)},
+          {"cut-direction", "deg", dir},
+          {"cut-speed", "%", speed},
+          {"cushion", "%", cushion(step)},
+          {"stopping", "%", stopping(step)},
+          {"cradle", "%", cradle(step)},
+          {"cushion-gap", "mm", cushionGap(step)},
+          {"bank-kiss", "deg", bankKiss(step)}};
 }
 
 BreakTiming timeBreak(const StepParams& step) {

@@ -4,6 +4,7 @@
 
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
+#include "app/match_command.hpp"
 #include "app/sim_command.hpp"
 #include "nineball/log.hpp"
 
@@ -24,6 +25,8 @@ int run(int argc, char** argv) {
 
   SimOptions sim_options;
   CLI::App* sim = addSimCommand(app, sim_options);
+  MatchOptions match_options;
+  CLI::App* match = addMatchCommand(app, match_options);
   BreakOptions break_options;
   CLI::App* brk = addBreakCommand(app, break_options);
 
@@ -41,6 +44,7 @@ int run(int argc, char** argv) {
   }
 
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
+  if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
   // Headless until the game window exists.
   return runBreak(BreakOptions{}, std::cout, std::cerr);

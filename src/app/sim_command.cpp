@@ -1,47 +1,18 @@
 #include "app/sim_command.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <istream>
 #include <optional>
 #include <ostream>
 
 #include "app/exit_codes.hpp"
+#include "app/read_input.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
 namespace {
-
-/// The whole stream, or the reason it could not be read.
-std::optional<std::string> readAll(std::istream& in, std::string& why) {
-  std::string text;
-  char buffer[1 << 16];
-  errno = 0;
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) {
-    why = std::string("cannot read: ") + (errno ? std::strerror(errno) : "read error");
-    return std::nullopt;
-  }
-  return text;
-}
-
-std::optional<std::string> readScene(const std::string& path, std::istream& stdin_stream,
-                                     std::string& why) {
-  if (path == "-") return readAll(stdin_stream, why);
-  errno = 0;
-  std::ifstream file(path, std::ios::binary);
-  if (!file) {
-    why = std::string("cannot open: ") + (errno ? std::strerror(errno) : "open failed");
-    return std::nullopt;
-  }
-  return readAll(file, why);
-}
 
 bool finite(Vec2 v) {
   return std::isfinite(v.x) && std::isfinite(v.y);
@@ -66,10 +37,10 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
 }
 
 int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
-  const std::string shown = options.scene_path == "-" ? "<stdin>" : options.scene_path;
+  const std::string shown = shownPath(options.scene_path);
   const std::string prefix = "nineball sim: " + shown + ": ";
   std::string why;
-  const auto text = readScene(options.scene_path, in, why);
+  const auto text = readInput(options.scene_path, in, why);
   if (!text) {
     err << prefix << why << '\n';
     return kExitBadInput;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <set>
 
+#include "game/shot_summary.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "game/shot_summary.hpp"
 
 namespace nineball {
 namespace {
@@ -60,9 +60,13 @@ Match::Match(const MatchSetup& setup)
 
 Match::~Match() = default;
 
-bool Match::cueInHand() const { return rack_.isBreak() || rack_.ballInHand() || cue_pocketed_; }
+bool Match::cueInHand() const {
+  return rack_.isBreak() || rack_.ballInHand() || cue_pocketed_;
+}
 
-bool Match::cueBehindHeadString() const { return rack_.isBreak(); }
+bool Match::cueBehindHeadString() const {
+  return rack_.isBreak();
+}
 
 std::optional<std::string> Match::cuePlacementProblem(Vec2 pos) const {
   if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) return "the cue position is not a number";

@@ -27,7 +27,8 @@ rules::ShotSummary summarize(const std::vector<Event>& events) {
           s.pocketed.push_back(e.a);
         }
         break;
-      case EventType::AllAtRest: break;
+      case EventType::AllAtRest:
+        break;
     }
   }
   s.object_balls_to_rail = static_cast<int>(to_rail.size());

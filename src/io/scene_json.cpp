@@ -9,17 +9,21 @@
 
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
+#include "io/scene_parts.hpp"
 
 namespace nineball::io {
-namespace {
 
 using nlohmann::json;
+
+namespace {
 
 // Faster balls would overrun Box2D's per-step travel clamp at any sensible step rate.
 constexpr double kMaxSpeed = 100.0;  // m/s
 
 constexpr double kMaxTableSize = 100.0;  // m
 constexpr double kMaxUntil = 3600.0;     // s
+
+}  // namespace
 
 TableDef parseTable(const json& v) {
   const std::string path = "table";
@@ -153,8 +157,7 @@ std::vector<BallState> parseBalls(const json& v) {
   return balls;
 }
 
-Vec2 parseTip(const json& v) {
-  const std::string path = "shot.tip";
+Vec2 parseTip(const json& v, const std::string& path) {
   if (!v.is_array() || v.size() != 2) {
     refuse(path, "expected an array of two numbers [side, height], found " + describe(v));
   }
@@ -165,14 +168,8 @@ Vec2 parseTip(const json& v) {
   return tip;
 }
 
-Shot parseShot(const json& v, const std::vector<BallState>& balls, const PhysicsParams& physics) {
-  const std::string path = "shot";
-  expectObject(v, path);
-  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip"});
-  const auto cue =
-      std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
-  if (cue == balls.end()) refuse(path, "needs a cue ball (a ball with id 0)");
-  const double heading = number(required(v, path, "heading_deg"), "shot.heading_deg");
+Shot parseShotFields(const json& v, const std::string& path, double cue_mass) {
+  const double heading = number(required(v, path, "heading_deg"), member(path, "heading_deg"));
   const json* speed = optional(v, "speed");
   const json* force = optional(v, "force");
   const json* contact_time = optional(v, "contact_time");
@@ -181,21 +178,34 @@ Shot parseShot(const json& v, const std::vector<BallState>& balls, const Physics
     if (force || contact_time) {
       refuse(path, "give either \"speed\" or \"force\" and \"contact_time\", not both");
     }
-    shot = Shot::withSpeed(heading, number(*speed, "shot.speed", Bounds::nonNegative(kMaxSpeed)));
+    shot = Shot::withSpeed(heading,
+                           number(*speed, member(path, "speed"), Bounds::nonNegative(kMaxSpeed)));
   } else {
     if (!force && !contact_time) refuse(path, "needs \"speed\" or \"force\" and \"contact_time\"");
-    if (!force) refuse("shot.force", "required with \"contact_time\"");
-    if (!contact_time) refuse("shot.contact_time", "required with \"force\"");
-    const double f = number(*force, "shot.force", Bounds::positive());
-    const double dt = number(*contact_time, "shot.contact_time", Bounds::positive());
-    shot = Shot::withImpulse(heading, f, dt, cue->mass.value_or(physics.ball_mass));
+    if (!force) refuse(member(path, "force"), "required with \"contact_time\"");
+    if (!contact_time) refuse(member(path, "contact_time"), "required with \"force\"");
+    const double f = number(*force, member(path, "force"), Bounds::positive());
+    const double dt = number(*contact_time, member(path, "contact_time"), Bounds::positive());
+    shot = Shot::withImpulse(heading, f, dt, cue_mass);
     if (!(shot.speed <= kMaxSpeed)) {
       refuse(path, "force * contact_time / mass gives " + formatNumber(shot.speed) +
                        " m/s, more than " + formatNumber(kMaxSpeed));
     }
   }
-  if (const json* tip = optional(v, "tip")) shot.tip = parseTip(*tip);
+  if (const json* tip = optional(v, "tip")) shot.tip = parseTip(*tip, member(path, "tip"));
   return shot;
+}
+
+namespace {
+
+Shot parseShot(const json& v, const std::vector<BallState>& balls, const PhysicsParams& physics) {
+  const std::string path = "shot";
+  expectObject(v, path);
+  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip"});
+  const auto cue =
+      std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
+  if (cue == balls.end()) refuse(path, "needs a cue ball (a ball with id 0)");
+  return parseShotFields(v, path, cue->mass.value_or(physics.ball_mass));
 }
 
 std::optional<double> parseUntil(const json& v) {
@@ -205,6 +215,8 @@ std::optional<double> parseUntil(const json& v) {
   }
   return number(v, "until", Bounds::positive(kMaxUntil));
 }
+
+}  // namespace
 
 StepParams parseStep(const json& v) {
   const std::string path = "step";
@@ -238,6 +250,8 @@ StepParams parseStep(const json& v) {
   }
   return s;
 }
+
+namespace {
 
 Scene parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));

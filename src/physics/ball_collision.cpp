@@ -12,8 +12,8 @@ CollisionOutcome collide(Vec2 u1, Vec2 u2, double m1, double m2, double e, Vec2 
   return {u1 + n * (v1n - u1n), u2 + n * (v2n - u2n)};
 }
 
-std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_distance,
-                                      double from, bool closing) {
+std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_distance, double from,
+                                      bool closing) {
   const Vec2 start = rel + rel_move * from;
   const double c = dot(start, start) - contact_distance * contact_distance;
   const double touching = 2.0 * contact_distance * kTouchTolerance;

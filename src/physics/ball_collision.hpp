@@ -10,6 +10,10 @@ namespace nineball::physics {
 /// positions in single precision, so two balls set touching read back a little apart.
 constexpr double kTouchTolerance = 1e-6;
 
+/// Balls closing slower than this (m/s) are taken as resting against each other: after a
+/// perfectly inelastic contact the rounding of single precision must not start another.
+constexpr double kMinClosingSpeed = 1e-6;
+
 /// Velocities of two balls after an instantaneous frictionless collision.
 struct CollisionOutcome {
   Vec2 v1;
@@ -26,7 +30,7 @@ CollisionOutcome collide(Vec2 u1, Vec2 u2, double m1, double m2, double e, Vec2 
 /// which their centres are `contact_distance` apart and closing, or nothing.
 /// A pair already closer than `contact_distance` at `from` counts as touching at `from` when
 /// `closing` says it approaches.
-std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_distance,
-                                      double from, bool closing);
+std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_distance, double from,
+                                      bool closing);
 
 }  // namespace nineball::physics

@@ -45,9 +45,15 @@ void ContactRecorder::BeginContact(b2Contact* contact) {
   if (!asBallPair(contact, p)) return;
   const std::size_t i = fixtureIndex(p.ball);
   switch (p.other_kind) {
-    case FixtureKind::Cushion: cushion_hits.push_back(i); break;
-    case FixtureKind::Pocket: ++over_pocket_[i]; break;
-    case FixtureKind::Ball: ball_hits.emplace_back(i, fixtureIndex(p.other)); break;
+    case FixtureKind::Cushion:
+      cushion_hits.push_back(i);
+      break;
+    case FixtureKind::Pocket:
+      ++over_pocket_[i];
+      break;
+    case FixtureKind::Ball:
+      ball_hits.emplace_back(i, fixtureIndex(p.other));
+      break;
   }
 }
 

@@ -31,7 +31,7 @@ class ContactRecorder : public b2ContactListener {
   void EndContact(b2Contact* contact) override;
   void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
 
-  std::vector<std::size_t> cushion_hits;                      ///< ball indices, this step
+  std::vector<std::size_t> cushion_hits;                       ///< ball indices, this step
   std::vector<std::pair<std::size_t, std::size_t>> ball_hits;  ///< Box2D contact model only
   bool overPocket(std::size_t ball) const { return over_pocket_[ball] > 0; }
 

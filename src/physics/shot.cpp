@@ -17,10 +17,14 @@ Shot Shot::withImpulse(double heading_deg, double force, double contact_time, do
 
 const char* eventTypeName(EventType t) {
   switch (t) {
-    case EventType::BallBall: return "ball";
-    case EventType::Cushion: return "cushion";
-    case EventType::Pocket: return "pocket";
-    case EventType::AllAtRest: return "rest";
+    case EventType::BallBall:
+      return "ball";
+    case EventType::Cushion:
+      return "cushion";
+    case EventType::Pocket:
+      return "pocket";
+    case EventType::AllAtRest:
+      return "rest";
   }
   return "?";
 }

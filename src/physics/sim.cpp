@@ -13,11 +13,70 @@ namespace {
 // Balls given exactly touching must not be refused for the rounding of their coordinates.
 constexpr double kOverlapTolerance = 1e-7;
 
-std::string ballField(std::size_t i) { return "balls[" + std::to_string(i) + "]"; }
+std::string ballField(std::size_t i) {
+  return "balls[" + std::to_string(i) + "]";
+}
+
+bool finite(double v) {
+  return std::isfinite(v);
+}
+bool finite(Vec2 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+// What Box2D would assert on (it aborts; nothing can catch it) or what cannot be simulated.
+std::optional<std::string> checkSettings(const Scene& scene) {
+  const PhysicsParams& p = scene.physics;
+  const StepParams& st = scene.step;
+  const std::pair<const char*, double> positive[] = {{"physics.ball_mass", p.ball_mass},
+                                                     {"physics.ball_radius", p.ball_radius},
+                                                     {"physics.gravity", p.gravity},
+                                                     {"step.hz", st.hz},
+                                                     {"step.scale", st.scale},
+                                                     {"step.max_time", st.max_time},
+                                                     {"table.length", scene.table.length},
+                                                     {"table.width", scene.table.width}};
+  for (const auto& [name, v] : positive) {
+    if (!finite(v) || v <= 0.0) return std::string(name) + ": must be a finite number > 0";
+  }
+  const std::pair<const char*, double> non_negative[] = {
+      {"physics.rolling_friction", p.rolling_friction},
+      {"physics.linear_damping", p.linear_damping},
+      {"physics.rest_speed", p.rest_speed}};
+  for (const auto& [name, v] : non_negative) {
+    // Box2D keeps damping as a float: it must stay finite there too.
+    if (!finite(v) || v < 0.0 || v > 1e30) return std::string(name) + ": must be >= 0 and finite";
+  }
+  if (st.velocity_iterations < 1) return std::string("step.velocity_iterations: must be >= 1");
+  if (st.position_iterations < 0) return std::string("step.position_iterations: must be >= 0");
+  // Box2D refuses cushion vertices closer than its linear slop (0.005 units).
+  const TableGeometry table = buildTable(scene.table, p.ball_radius);
+  const auto& loop = table.cushion_loop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (length(loop[(i + 1) % loop.size()] - loop[i]) * st.scale < 0.01) {
+      return std::string("step.scale: too small for this table's cushion geometry");
+    }
+  }
+  if (scene.shot) {
+    if (!finite(scene.shot->speed) || scene.shot->speed < 0.0) {
+      return std::string("shot.speed: must be a finite number >= 0");
+    }
+    if (!finite(scene.shot->heading_rad)) return std::string("shot.heading_deg: must be finite");
+    if (!finite(scene.shot->tip)) return std::string("shot.tip: must be finite");
+  }
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    const BallState& b = scene.balls[i];
+    if (!finite(b.pos) || !finite(b.vel))
+      return ballField(i) + ": position and velocity must be finite";
+    if (b.mass && (!finite(*b.mass) || *b.mass <= 0.0)) return ballField(i) + ".mass: must be > 0";
+  }
+  return std::nullopt;
+}
 
 }  // namespace
 
 std::optional<std::string> validateScene(const Scene& scene) {
+  if (auto problem = checkSettings(scene)) return problem;
   const double r = scene.physics.ball_radius;
   const TableGeometry table = buildTable(scene.table, r);
   std::set<int> ids;

@@ -57,12 +57,18 @@ std::optional<TableDef> TableDef::named(const std::string& name) {
 
 const char* pocketName(PocketId id) {
   switch (id) {
-    case PocketId::TopLeft: return "top-left";
-    case PocketId::TopSide: return "top-side";
-    case PocketId::TopRight: return "top-right";
-    case PocketId::BottomRight: return "bottom-right";
-    case PocketId::BottomSide: return "bottom-side";
-    case PocketId::BottomLeft: return "bottom-left";
+    case PocketId::TopLeft:
+      return "top-left";
+    case PocketId::TopSide:
+      return "top-side";
+    case PocketId::TopRight:
+      return "top-right";
+    case PocketId::BottomRight:
+      return "bottom-right";
+    case PocketId::BottomSide:
+      return "bottom-side";
+    case PocketId::BottomLeft:
+      return "bottom-left";
   }
   return "?";
 }
@@ -114,7 +120,8 @@ TableGeometry buildTable(const TableDef& def, double ball_radius) {
     while (a1 >= a0) a1 -= 2.0 * kPi;
     const double ra = length(da), rb = length(db);
     const double sweep = a0 - a1;
-    const int pieces = std::max(4, static_cast<int>(std::ceil(sweep * std::max(ra, rb) / kCupChord)));
+    const int pieces =
+        std::max(4, static_cast<int>(std::ceil(sweep * std::max(ra, rb) / kCupChord)));
     for (int k = 1; k < pieces; ++k) {
       const double u = static_cast<double>(k) / pieces;
       const double radius = ra + (rb - ra) * u;

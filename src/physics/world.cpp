@@ -101,12 +101,12 @@ struct World::Impl {
     }
   }
 
-  b2Vec2 toB2(Vec2 v) const {
-    return {static_cast<float>(v.x * k), static_cast<float>(v.y * k)};
-  }
+  b2Vec2 toB2(Vec2 v) const { return {static_cast<float>(v.x * k), static_cast<float>(v.y * k)}; }
   Vec2 fromB2(const b2Vec2& v) const { return {v.x / k, v.y / k}; }
 
-  Vec2 velocity(const Ball& b) const { return b.body ? fromB2(b.body->GetLinearVelocity()) : Vec2{}; }
+  Vec2 velocity(const Ball& b) const {
+    return b.body ? fromB2(b.body->GetLinearVelocity()) : Vec2{};
+  }
   Vec2 position(const Ball& b) const { return b.body ? fromB2(b.body->GetPosition()) : b.pos; }
 
   void setVelocity(Ball& b, Vec2 v) {
@@ -228,9 +228,9 @@ struct World::Impl {
         const Vec2 rel = (b.start - a.start) + (b.move - a.move) * from;
         const Vec2 rel_move = (b.move - a.move) * (1.0 - from);
         if (length(rel) - length(rel_move) > contact + physics::kTouchTolerance) continue;
-        const bool closing = dot(b.vel - a.vel, rel) < 0.0;
-        const auto s = physics::contactFraction(b.start - a.start, b.move - a.move, contact,
-                                                from, closing);
+        const bool closing = dot(b.vel - a.vel, normalized(rel)) < -physics::kMinClosingSpeed;
+        const auto s =
+            physics::contactFraction(b.start - a.start, b.move - a.move, contact, from, closing);
         if (!s) continue;
         // Contacts at the same instant (a frozen cluster) go hardest first, so the order
         // follows the physics rather than the ball numbering.
@@ -269,9 +269,9 @@ struct World::Impl {
       Ball& b = balls[c->j];
       const Vec2 ca = a.start + a.move * c->s, cb = b.start + b.move * c->s;
       const Vec2 normal = normalized(cb - ca);
-      if (dot(b.vel - a.vel, normal) < 0.0) {
-        const auto out = physics::collide(a.vel, b.vel, a.mass, b.mass, phys.ball_restitution,
-                                          normal);
+      if (dot(b.vel - a.vel, normal) < -physics::kMinClosingSpeed) {
+        const auto out =
+            physics::collide(a.vel, b.vel, a.mass, b.mass, phys.ball_restitution, normal);
         a.vel = out.v1;
         b.vel = out.v2;
         Event e;
@@ -339,6 +339,7 @@ struct World::Impl {
       if (!pocket) continue;
       b.pos = p;
       b.pocket = pocket;
+      last_stop = std::max(last_stop, t);
       world.DestroyBody(b.body);  // safe: Step has returned
       b.body = nullptr;
       Event e;
@@ -445,7 +446,9 @@ void World::placeBall(int ball_id, Vec2 pos) {
   b.pos = pos;
 }
 
-void World::step() { impl_->step(); }
+void World::step() {
+  impl_->step();
+}
 
 void World::runFor(double seconds) {
   const long target = impl_->steps + std::lround(seconds * impl_->sp.hz);
@@ -461,9 +464,15 @@ void World::runUntilRest() {
   }
 }
 
-bool World::atRest() const { return impl_->atRest(); }
-double World::time() const { return impl_->time; }
-long World::steps() const { return impl_->steps; }
+bool World::atRest() const {
+  return impl_->atRest();
+}
+double World::time() const {
+  return impl_->time;
+}
+long World::steps() const {
+  return impl_->steps;
+}
 
 std::vector<BallState> World::balls() const {
   std::vector<BallState> out;
@@ -480,10 +489,20 @@ std::vector<BallState> World::balls() const {
   return out;
 }
 
-const std::vector<Event>& World::events() const { return impl_->events; }
-void World::clearEvents() { impl_->events.clear(); }
-const TableGeometry& World::table() const { return impl_->table; }
-const PhysicsParams& World::physics() const { return impl_->phys; }
-const StepParams& World::stepParams() const { return impl_->sp; }
+const std::vector<Event>& World::events() const {
+  return impl_->events;
+}
+void World::clearEvents() {
+  impl_->events.clear();
+}
+const TableGeometry& World::table() const {
+  return impl_->table;
+}
+const PhysicsParams& World::physics() const {
+  return impl_->phys;
+}
+const StepParams& World::stepParams() const {
+  return impl_->sp;
+}
 
 }  // namespace nineball

@@ -6,7 +6,9 @@
 namespace nineball::rules {
 namespace {
 
-bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+bool contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
 
 // The ball that wins the rack: the 9, or in a custom layout without it the highest number.
 int gameBall(const std::vector<int>& balls) {
@@ -20,7 +22,9 @@ constexpr int kFoulsToLose = 3;
 
 }  // namespace
 
-const char* ruleSetName(RuleSet r) { return r == RuleSet::Wpa ? "wpa" : "paper"; }
+const char* ruleSetName(RuleSet r) {
+  return r == RuleSet::Wpa ? "wpa" : "paper";
+}
 
 std::optional<RuleSet> ruleSetFromName(const std::string& name) {
   if (name == "wpa") return RuleSet::Wpa;
@@ -30,13 +34,20 @@ std::optional<RuleSet> ruleSetFromName(const std::string& name) {
 
 const char* foulName(Foul f) {
   switch (f) {
-    case Foul::None: return "none";
-    case Foul::Scratch: return "scratch";
-    case Foul::WrongBallFirst: return "wrong-ball-first";
-    case Foul::NoContact: return "no-contact";
-    case Foul::NoRail: return "no-rail";
-    case Foul::BadBreak: return "bad-break";
-    case Foul::ThreeFouls: return "three-fouls";
+    case Foul::None:
+      return "none";
+    case Foul::Scratch:
+      return "scratch";
+    case Foul::WrongBallFirst:
+      return "wrong-ball-first";
+    case Foul::NoContact:
+      return "no-contact";
+    case Foul::NoRail:
+      return "no-rail";
+    case Foul::BadBreak:
+      return "bad-break";
+    case Foul::ThreeFouls:
+      return "three-fouls";
   }
   return "?";
 }
@@ -46,10 +57,13 @@ Rack::Rack(RuleSet rules, std::vector<int> object_balls, bool opening_break)
   std::sort(on_table_.begin(), on_table_.end());
 }
 
-int Rack::ballOn() const { return on_table_.empty() ? 0 : on_table_.front(); }
+int Rack::ballOn() const {
+  return on_table_.empty() ? 0 : on_table_.front();
+}
 
 void Rack::removePocketed(const std::vector<int>& balls) {
-  for (int b : balls) on_table_.erase(std::remove(on_table_.begin(), on_table_.end(), b), on_table_.end());
+  for (int b : balls)
+    on_table_.erase(std::remove(on_table_.begin(), on_table_.end(), b), on_table_.end());
 }
 
 void Rack::respot(int ball) {

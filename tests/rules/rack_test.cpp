@@ -30,7 +30,9 @@ ShotSummary breakShot(int first, std::vector<int> pocketed, int to_rail) {
 }
 
 // A rack past its break, A to shoot, with `balls` on the table.
-Rack afterBreak(RuleSet rules, std::vector<int> balls) { return Rack(rules, balls, false); }
+Rack afterBreak(RuleSet rules, std::vector<int> balls) {
+  return Rack(rules, balls, false);
+}
 
 struct Case {
   const char* name;
@@ -180,10 +182,10 @@ TEST(WpaRules, PushOutScratchIsAFoulAndNineIsSpotted) {
 TEST(WpaRules, ThreeFoulsInARowLoseTheRack) {
   Rack rack = afterBreak(RuleSet::Wpa, kFullRack);
   ShotSummary miss;
-  rack.shoot(miss);        // A foul 1
-  rack.shoot(hit(1));      // B legal miss
-  rack.shoot(miss);        // A foul 2
-  rack.shoot(hit(1));      // B
+  rack.shoot(miss);                 // A foul 1
+  rack.shoot(hit(1));               // B legal miss
+  rack.shoot(miss);                 // A foul 2
+  rack.shoot(hit(1));               // B
   const auto v = rack.shoot(miss);  // A foul 3
   EXPECT_EQ(v.foul, Foul::ThreeFouls);
   ASSERT_TRUE(v.winner);

@@ -1,0 +1,198 @@
+// Scripted racks played through the real physics, checking the verdict of every turn.
+#include "nineball/match.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using nineball::BallState;
+using nineball::IllegalAction;
+using nineball::Match;
+using nineball::MatchSetup;
+using nineball::Shot;
+using nineball::TurnInput;
+using nineball::TurnRecord;
+using nineball::Vec2;
+using nineball::rules::Foul;
+using nineball::rules::Player;
+using nineball::rules::RuleSet;
+
+namespace {
+
+constexpr double kR = 0.028575;
+
+BallState ball(int id, Vec2 p) {
+  BallState b;
+  b.id = id;
+  b.pos = p;
+  return b;
+}
+
+TurnInput shot(double heading_deg, double speed, std::optional<Vec2> cue = std::nullopt) {
+  TurnInput t;
+  t.shot = Shot::withSpeed(heading_deg, speed);
+  t.cue = cue;
+  return t;
+}
+
+double headingTo(Vec2 from, Vec2 to) {
+  return nineball::radToDeg(std::atan2(to.y - from.y, to.x - from.x));
+}
+
+MatchSetup layout(std::vector<BallState> balls, RuleSet rules = RuleSet::Wpa) {
+  MatchSetup s;
+  s.rules = rules;
+  s.balls = std::move(balls);
+  return s;
+}
+
+void expectTurn(const TurnRecord& r, Player shooter, Foul foul, Player next, bool in_hand) {
+  EXPECT_EQ(r.shooter, shooter);
+  EXPECT_EQ(r.verdict.foul, foul) << foulName(r.verdict.foul);
+  EXPECT_EQ(r.verdict.next, next);
+  EXPECT_EQ(r.verdict.ball_in_hand, in_hand);
+}
+
+}  // namespace
+
+TEST(MatchThroughPhysics, ScratchGivesBallInHand) {
+  // A perfectly inelastic hit: the cue ball follows the 1 into the corner pocket.
+  MatchSetup setup = layout({});
+  setup.physics.ball_restitution = 0.0;
+  Match probe(setup);
+  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;  // bottom-right
+  const Vec2 cue{0.4, 0.0};
+  const Vec2 dir = nineball::normalized(pocket - cue);
+  setup.balls =
+      std::vector<BallState>{ball(0, cue), ball(1, cue + dir * 0.3), ball(2, {-0.8, 0.3})};
+  Match match(setup);
+  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  expectTurn(r, Player::A, Foul::Scratch, Player::B, true);
+  EXPECT_EQ(r.verdict.pocketed, std::vector<int>{1});
+  EXPECT_EQ(r.ball_on, 2);
+  EXPECT_TRUE(match.cueInHand());
+  // The next shooter must place the cue ball, and not on another ball.
+  EXPECT_THROW(match.play(shot(0.0, 1.0)), IllegalAction);
+  EXPECT_THROW(match.play(shot(0.0, 1.0, Vec2{-0.8, 0.3})), IllegalAction);
+  EXPECT_THROW(match.play(shot(0.0, 1.0, Vec2{5.0, 0.0})), IllegalAction);
+  const TurnRecord next =
+      match.play(shot(headingTo({-0.3, 0.3}, {-0.8, 0.3}), 1.0, Vec2{-0.3, 0.3}));
+  EXPECT_EQ(next.shooter, Player::B);
+  EXPECT_TRUE(next.verdict.legal());
+}
+
+TEST(MatchThroughPhysics, WrongBallFirst) {
+  Match match(layout({ball(0, {-0.5, 0.0}), ball(2, {0.0, 0.0}), ball(1, {0.3, 0.4})}));
+  const TurnRecord r = match.play(shot(0.0, 1.5));
+  expectTurn(r, Player::A, Foul::WrongBallFirst, Player::B, true);
+}
+
+TEST(MatchThroughPhysics, NoRailAfterContact) {
+  // A soft full hit in the middle of the table: nothing reaches a cushion.
+  Match match(layout({ball(0, {-0.3, 0.0}), ball(1, {0.0, 0.0}), ball(9, {-1.0, 0.4})}));
+  const TurnRecord r = match.play(shot(0.0, 0.3));
+  expectTurn(r, Player::A, Foul::NoRail, Player::B, true);
+  EXPECT_TRUE(r.verdict.pocketed.empty());
+}
+
+TEST(MatchThroughPhysics, CombinationOnTheNineWins) {
+  Match probe(layout({}));
+  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
+  const Vec2 cue{0.2, 0.1};
+  const Vec2 dir = nineball::normalized(pocket - cue);
+  const Vec2 one = cue + dir * 0.4;
+  const Vec2 nine = one + dir * (2.0 * kR + 0.01);
+  Match match(layout({ball(0, cue), ball(1, one), ball(9, nine), ball(5, {-0.8, -0.3})}));
+  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 3.0));
+  EXPECT_TRUE(r.verdict.legal());
+  ASSERT_TRUE(r.verdict.winner);
+  EXPECT_EQ(*r.verdict.winner, Player::A);
+  EXPECT_TRUE(match.rack().over());
+  EXPECT_THROW(match.play(shot(0.0, 1.0)), IllegalAction);
+}
+
+TEST(MatchThroughPhysics, BreakPushOutAndPass) {
+  MatchSetup setup;
+  setup.seed = 7;
+  Match match(setup);
+  EXPECT_TRUE(match.cueBehindHeadString());
+  EXPECT_THROW(match.play(shot(0.0, 10.0, Vec2{0.0, 0.0})), IllegalAction);  // not behind
+  const TurnRecord brk = match.play(shot(0.0, 10.0));
+  EXPECT_TRUE(brk.verdict.legal());
+  const Player pusher = brk.verdict.next;
+  ASSERT_TRUE(match.rack().pushOutAvailable());
+  TurnInput push = shot(90.0, 0.4);
+  push.kind = TurnInput::Kind::PushOut;
+  const TurnRecord p = match.play(push);
+  EXPECT_EQ(p.shooter, pusher);
+  EXPECT_TRUE(p.verdict.legal());
+  EXPECT_TRUE(p.verdict.awaiting_decision);
+  EXPECT_THROW(match.play(shot(0.0, 1.0)), IllegalAction);  // the opponent must decide first
+  TurnInput pass;
+  pass.kind = TurnInput::Kind::Decision;
+  pass.shoot = false;
+  const TurnRecord d = match.play(pass);
+  EXPECT_EQ(d.shooter, nineball::rules::other(pusher));
+  EXPECT_EQ(d.verdict.next, pusher);
+  EXPECT_EQ(match.rack().shooter(), pusher);
+  EXPECT_THROW(match.play(push), IllegalAction);  // no second push-out
+}
+
+TEST(MatchThroughPhysics, ThreeFoulsInARow) {
+  // Every turn sends the cue ball across the table, away from the object balls: no contact.
+  Match match(layout({ball(0, {-0.8, 0.0}), ball(1, {0.6, 0.0}), ball(9, {0.9, 0.3})}));
+  const Foul expected[] = {Foul::NoContact, Foul::NoContact, Foul::NoContact, Foul::NoContact,
+                           Foul::ThreeFouls};
+  Player shooter = Player::A;
+  for (int i = 0; i < 5; ++i) {
+    const std::optional<Vec2> cue = i == 0 ? std::nullopt : std::optional<Vec2>(Vec2{-0.8, 0.0});
+    const TurnRecord r = match.play(shot(90.0, 0.8, cue));
+    EXPECT_EQ(r.shooter, shooter) << i;
+    EXPECT_EQ(r.verdict.foul, expected[i]) << i;
+    shooter = nineball::rules::other(shooter);
+  }
+  ASSERT_TRUE(match.rack().winner());
+  EXPECT_EQ(*match.rack().winner(), Player::B);
+}
+
+TEST(MatchThroughPhysics, PaperScratchReturnsTheCueBallToTheHeadSpot) {
+  MatchSetup setup = layout({}, RuleSet::Paper);
+  setup.physics.ball_restitution = 0.0;
+  Match probe(setup);
+  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
+  const Vec2 cue{0.4, 0.0};
+  const Vec2 dir = nineball::normalized(pocket - cue);
+  setup.balls =
+      std::vector<BallState>{ball(0, cue), ball(1, cue + dir * 0.3), ball(2, {-0.8, 0.3})};
+  Match match(setup);
+  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  EXPECT_EQ(r.verdict.foul, Foul::Scratch);
+  EXPECT_FALSE(r.verdict.ball_in_hand);
+  const BallState cue_after = match.balls()[0];
+  EXPECT_FALSE(cue_after.pocket);
+  EXPECT_DOUBLE_EQ(cue_after.pos.x, match.world().table().headStringX());
+  EXPECT_FALSE(match.cueInHand());
+}
+
+TEST(MatchThroughPhysics, NineOnAFoulIsSpottedOnTheFootSpot) {
+  // Wrong ball first sends the 9 into the pocket: it comes back to the foot spot.
+  MatchSetup setup = layout({});
+  Match probe(setup);
+  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
+  const Vec2 cue{0.3, 0.0};
+  const Vec2 dir = nineball::normalized(pocket - cue);
+  setup.balls =
+      std::vector<BallState>{ball(0, cue), ball(9, cue + dir * 0.3), ball(1, {-0.8, 0.3})};
+  Match match(setup);
+  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  EXPECT_EQ(r.verdict.foul, Foul::WrongBallFirst);
+  EXPECT_EQ(r.verdict.to_spot, std::vector<int>{9});
+  EXPECT_FALSE(r.verdict.winner);
+  for (const BallState& b : match.balls()) {
+    if (b.id != 9) continue;
+    EXPECT_FALSE(b.pocket);
+    // On the foot spot, or behind it on the long axis if the cue ball sits there.
+    EXPECT_GE(b.pos.x, match.world().table().footSpot().x - 1e-12);
+    EXPECT_NEAR(b.pos.y, 0.0, 1e-12);
+  }
+}
