@@ -2,6 +2,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/bench_command.hpp"
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/match_command.hpp"
@@ -27,6 +28,8 @@ int run(int argc, char** argv) {
   CLI::App* sim = addSimCommand(app, sim_options);
   MatchOptions match_options;
   CLI::App* match = addMatchCommand(app, match_options);
+  BenchOptions bench_options;
+  CLI::App* bench = addBenchCommand(app, bench_options);
   BreakOptions break_options;
   CLI::App* brk = addBreakCommand(app, break_options);
 
@@ -45,6 +48,7 @@ int run(int argc, char** argv) {
 
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
+  if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
   // Headless until the game window exists.
   return runBreak(BreakOptions{}, std::cout, std::cerr);

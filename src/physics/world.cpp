@@ -360,6 +360,9 @@ struct World::Impl {
     double done = 0.0;
     for (int pieces = 0; done < h; ++pieces) {
       double piece = h - done;
+      // A contact earlier in the step can leave a ball faster than any was at its start.
+      const double speed = maxSpeed() * k;
+      if (speed * piece > kMaxTravelUnitsPerStep) piece = kMaxTravelUnitsPerStep / speed;
       if (pairwise && pieces < kMaxPiecesPerStep) {
         // Step Box2D only up to the next ball contact, so that it is resolved where the balls
         // really are, whatever the cushions did before it.
