@@ -43,7 +43,7 @@ struct PhysicsParams {
 
 /// Solver settings. Box2D units are metres x scale.
 struct StepParams {
-  double hz = 500.0;  ///< fixed steps per simulated second
+  double hz = 250.0;  ///< fixed steps per simulated second
   int velocity_iterations = 8;
   int position_iterations = 3;
   double scale = 100.0;  ///< Box2D units per metre (k)
