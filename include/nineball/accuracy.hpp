@@ -27,4 +27,9 @@ struct BreakTiming {
 };
 BreakTiming timeBreak(const StepParams& step);
 
+/// The cue ball's velocity along the break line 0.3 s after a 10 m/s break into a rack whose
+/// neighbouring balls are `gap` metres apart, as a fraction of the break speed (negative: it
+/// comes back off the rack).
+double breakCueRebound(const StepParams& step, double gap);
+
 }  // namespace nineball

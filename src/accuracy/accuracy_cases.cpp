@@ -217,6 +217,17 @@ std::vector<CaseError> runAccuracyCases(const StepParams& step) {
           {"bank-kiss", "deg", bankKiss(step)}};
 }
 
+double breakCueRebound(const StepParams& step, double gap) {
+  Scene s = breakScene(1, 10.0);
+  s.step = step;
+  s.until = 0.3;
+  s.balls.resize(1);
+  for (const BallState& b : rackNineBall(s.table, s.physics.ball_radius, 1, gap)) {
+    s.balls.push_back(b);
+  }
+  return simulate(s).balls[0].vel.x / 10.0;
+}
+
 BreakTiming timeBreak(const StepParams& step) {
   Scene s = breakScene();
   s.step = step;

@@ -95,6 +95,19 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     csv << '\n';
     out << '\n';
   }
+  out << "\ncue ball after the break (vx / break speed at 0.3 s), by rack gap:\n";
+  for (ContactModel contacts : {ContactModel::Pairwise, ContactModel::Box2D}) {
+    StepParams s;
+    s.contacts = contacts;
+    out << "  " << contactModelName(contacts) << ':';
+    for (double gap : {0.0, 1e-4, 5e-4}) {
+      char cell[64];
+      std::snprintf(cell, sizeof cell, "  gap %.1f mm %+.3f", gap * 1000.0,
+                    breakCueRebound(s, gap));
+      out << cell;
+    }
+    out << '\n';
+  }
   if (!options.csv_path.empty()) {
     // Written whole or not at all: to a temporary name, then renamed.
     const std::string tmp = options.csv_path + ".tmp";
