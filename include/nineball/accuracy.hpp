@@ -25,7 +25,7 @@ struct BreakTiming {
   long steps = 0;
   double wall_ms = 0.0;
 };
-BreakTiming timeBreak(const StepParams& step);
+BreakTiming timeBreak(const StepParams& step, const PhysicsParams& physics = PhysicsParams::real());
 
 /// The cue ball's velocity along the break line 0.3 s after a 10 m/s break into a rack whose
 /// neighbouring balls are `gap` metres apart, as a fraction of the break speed (negative: it

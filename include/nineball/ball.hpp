@@ -4,6 +4,7 @@
 
 #include "nineball/table.hpp"
 #include "nineball/vec2.hpp"
+#include "nineball/vec3.hpp"
 
 namespace nineball {
 
@@ -17,6 +18,7 @@ struct BallState {
   Vec2 vel;                        ///< m/s
   std::optional<double> mass;      ///< kg; the physics' ball_mass when empty
   std::optional<PocketId> pocket;  ///< set once the ball has dropped
+  Vec3 w;                          ///< rad/s, z up; rolling along +x at speed v has w = (0, v/R, 0)
 };
 
 }  // namespace nineball

@@ -5,13 +5,13 @@
 
 namespace nineball {
 
-enum class EventType { BallBall, Cushion, Pocket, AllAtRest };
+enum class EventType { BallBall, Cushion, Pocket, AllAtRest, Miscue };
 
 /// Something that happened during a step, with its simulated time.
 struct Event {
   EventType type = EventType::BallBall;
   double t = 0.0;  ///< s
-  int a = -1;      ///< ball id (the ball of a cushion or pocket event, the first of a pair)
+  int a = -1;      ///< ball id (of a cushion, pocket or miscue event, the first of a pair)
   int b = -1;      ///< second ball of a ball-ball event
   Vec2 va;         ///< velocity of a just after the contact
   Vec2 vb;         ///< velocity of b just after the contact

@@ -7,6 +7,7 @@ namespace nineball {
 
 /// How the cloth slows a ball.
 enum class ClothModel {
+  Spin,      ///< sliding friction on the contact point's slip, then rolling resistance
   Friction,  ///< constant deceleration mu g against the velocity (paper eq. 4.5-4.8)
   Damping,   ///< Box2D linear damping: v <- v / (1 + h c) each step
 };
@@ -24,18 +25,23 @@ struct PhysicsParams {
   double ball_restitution = 0.95;     ///< ball-ball e (0.92-0.98)
   double cushion_restitution = 0.85;  ///< ball-cushion e (0.6-0.9)
   double rolling_friction = 0.01;     ///< mu of the cloth model (rolling resistance)
-  double sliding_friction = 0.2;      ///< mu of a sliding ball (used by the spin model)
-  double ball_friction = 0.06;        ///< ball-ball friction (used by the spin model)
+  double sliding_friction = 0.2;      ///< mu of a sliding ball (spin model)
+  double ball_friction = 0.06;        ///< ball-ball friction (balls do not grip: unused)
+  double cushion_friction = 0.2;      ///< mu between ball and cushion nose (spin model)
   double spin_decay = 10.0;           ///< rad/s^2, decay of spin about the vertical
   double gravity = 9.81;              ///< m/s^2
   double linear_damping = 0.2;        ///< 1/s, the damping model's c
   double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
-  ClothModel cloth = ClothModel::Friction;
+  ClothModel cloth = ClothModel::Spin;
+  double miscue_limit = 0.5;  ///< largest tip offset (fraction of R) that is a hit
+
+  /// True when balls carry spin (the Spin cloth model).
+  bool spin() const { return cloth == ClothModel::Spin; }
 
   /// Real equipment (WPA, Alciatore, pooltool defaults).
   static PhysicsParams real() { return {}; }
   /// The seed paper's values: m 0.16 kg, ball e 0.9, rail keeps 70 % of the normal speed,
-  /// mu m g on the cloth and nothing else.
+  /// mu m g on the cloth and nothing else (no spin).
   static PhysicsParams paper();
   /// "real" or "paper".
   static std::optional<PhysicsParams> preset(const std::string& name);

@@ -22,8 +22,9 @@ class World {
 
   /// Adds a ball. Ids must be unique; the caller checks that it fits on the table.
   void addBall(const BallState& ball);
-  /// Gives the cue ball (or any ball) the velocity of a shot.
-  void strike(int ball_id, const Shot& shot);
+  /// Gives the cue ball (or any ball) the velocity and spin of a shot. A tip offset beyond
+  /// PhysicsParams::miscue_limit is a miscue: a Miscue event, the ball stays still, false.
+  bool strike(int ball_id, const Shot& shot);
   /// Moves a ball that is still on the table (ball in hand, spotting), velocity zero.
   void placeBall(int ball_id, Vec2 pos);
 

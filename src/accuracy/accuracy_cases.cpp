@@ -10,6 +10,14 @@
 namespace nineball {
 namespace {
 
+// The cases compare with the paper's formulas, which know no spin: the real preset with the
+// paper's cloth (constant deceleration).
+PhysicsParams paperCloth() {
+  PhysicsParams p = PhysicsParams::real();
+  p.cloth = ClothModel::Friction;
+  return p;
+}
+
 // A table long enough that no case meets a cushion it does not aim at.
 TableDef openTable() {
   return {60.0, 20.0};
@@ -34,14 +42,14 @@ void runToEvent(World& w, EventType type, double max_seconds) {
 // Cue ball at speed u along +x into ball 1 whose centre sits `cut` off the line, e given.
 // Returns {object-ball direction error in degrees, worst speed error in % of u}.
 std::pair<double, double> cutShot(const StepParams& sp, double cut_deg, double u, double e) {
-  PhysicsParams p;
+  PhysicsParams p = paperCloth();
   p.rolling_friction = 0.0;
   p.ball_restitution = e;
   World w(openTable(), p, sp);
   const double r = p.ball_radius;
   const double offset = 2.0 * r * std::sin(degToRad(cut_deg));
-  w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}});
-  w.addBall({1, {0.0, -offset}, {}, {}, {}});
+  w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}, {}});
+  w.addBall({1, {0.0, -offset}, {}, {}, {}, {}});
   runToEvent(w, EventType::BallBall, 1.0);
   const Event* ev = firstEvent(w, EventType::BallBall);
   if (!ev) return {180.0, 100.0};
@@ -60,13 +68,13 @@ double headOn(const StepParams& sp) {
   double worst = 0.0;
   for (double e : {1.0, 0.9}) {
     for (double m2 : {0.170, 0.34}) {
-      PhysicsParams p;
+      PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
       p.ball_restitution = e;
       World w(openTable(), p, sp);
       const double u = 10.0, m1 = 0.170;
-      w.addBall({0, {-0.5, 0.0}, {u, 0.0}, m1, {}});
-      w.addBall({1, {0.0, 0.0}, {}, m2, {}});
+      w.addBall({0, {-0.5, 0.0}, {u, 0.0}, m1, {}, {}});
+      w.addBall({1, {0.0, 0.0}, {}, m2, {}, {}});
       runToEvent(w, EventType::BallBall, 1.0);
       const Event* ev = firstEvent(w, EventType::BallBall);
       if (!ev) return 100.0;
@@ -82,12 +90,12 @@ double cushion(const StepParams& sp) {
   double worst = 0.0;
   for (double angle : {0.0, 30.0, 60.0}) {
     for (double speed : {0.2, 2.0, 8.0}) {
-      PhysicsParams p;
+      PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
       World w(TableDef{}, p, sp);
       // Towards the top cushion between the pockets, `angle` from its normal.
       const Vec2 v = Vec2{std::sin(degToRad(angle)), std::cos(degToRad(angle))} * speed;
-      w.addBall({0, {-0.6 - v.x / v.y * 0.3, 0.3}, v, {}, {}});
+      w.addBall({0, {-0.6 - v.x / v.y * 0.3, 0.3}, v, {}, {}, {}});
       runToEvent(w, EventType::Cushion, 5.0);
       const Event* ev = firstEvent(w, EventType::Cushion);
       if (!ev) return 100.0;
@@ -105,10 +113,10 @@ double cushion(const StepParams& sp) {
 double cushionGap(const StepParams& sp) {
   double worst = 0.0;
   for (double speed : {0.2, 3.0}) {
-    PhysicsParams p;
+    PhysicsParams p = paperCloth();
     p.rolling_friction = 0.0;
     World w(TableDef{}, p, sp);
-    w.addBall({0, {-0.6, 0.3}, {0.0, speed}, {}, {}});
+    w.addBall({0, {-0.6, 0.3}, {0.0, speed}, {}, {}, {}});
     double y0 = 0.0;
     const long limit = w.steps() + std::lround(2.0 * sp.hz);
     while (w.steps() < limit && !firstEvent(w, EventType::Cushion)) {
@@ -132,7 +140,7 @@ double bankKiss(const StepParams& sp) {
   double worst = 0.0;
   for (double speed : {1.0, 3.0, 8.0}) {
     for (double gap : {0.2, 1.0, 3.0}) {  // mm travelled after the bounce before the kiss
-      PhysicsParams p;
+      PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
       p.ball_restitution = 1.0;
       World w(TableDef{}, p, sp);
@@ -147,8 +155,8 @@ double bankKiss(const StepParams& sp) {
       const Vec2 contact = bounce + d * (gap / 1000.0);
       const Vec2 n = rotated(d, degToRad(30.0));
       const Vec2 object = contact + n * (2.0 * r);
-      w.addBall({0, bounce - v_in * (0.1 / speed), v_in, {}, {}});
-      w.addBall({1, object, {}, {}, {}});
+      w.addBall({0, bounce - v_in * (0.1 / speed), v_in, {}, {}, {}});
+      w.addBall({1, object, {}, {}, {}, {}});
       runToEvent(w, EventType::BallBall, 1.0);
       const Event* ev = firstEvent(w, EventType::BallBall);
       if (!ev) return 180.0;
@@ -162,10 +170,10 @@ double bankKiss(const StepParams& sp) {
 double stopping(const StepParams& sp) {
   double worst = 0.0;
   for (double v0 : {0.5, 2.0, 5.0}) {
-    PhysicsParams p;
+    PhysicsParams p = paperCloth();
     p.rolling_friction = 0.2;
     World w(openTable(), p, sp);
-    w.addBall({0, {-25.0, 0.0}, {v0, 0.0}, {}, {}});
+    w.addBall({0, {-25.0, 0.0}, {v0, 0.0}, {}, {}, {}});
     w.runUntilRest();
     const double a = p.rolling_friction * p.gravity;
     const double dist = w.balls()[0].pos.x + 25.0;
@@ -178,18 +186,40 @@ double stopping(const StepParams& sp) {
 }
 
 double cradle(const StepParams& sp) {
-  PhysicsParams p;
+  PhysicsParams p = paperCloth();
   p.rolling_friction = 0.0;
   p.ball_restitution = 1.0;
   World w(openTable(), p, sp);
   const double r = p.ball_radius, u = 3.0;
-  w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}});
-  for (int i = 1; i <= 3; ++i) w.addBall({i, {2.0 * r * (i - 1), 0.0}, {}, {}, {}});
+  w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}, {}});
+  for (int i = 1; i <= 3; ++i) w.addBall({i, {2.0 * r * (i - 1), 0.0}, {}, {}, {}, {}});
   w.runFor(0.2);
   double worst = 0.0;
   for (const BallState& b : w.balls()) {
     const double want = b.id == 3 ? u : 0.0;
     worst = std::max(worst, length(b.vel - Vec2{want, 0.0}) / u * 100.0);
+  }
+  return worst;
+}
+
+// Spin model: a centre-ball hit slides, then rolls at 5/7 v0 once it has gone
+// 12 v0^2 / (49 mu_s g). Rolling resistance off, so the rolling speed holds. Worst of the
+// speed and the distance error, in %.
+double stunToRoll(const StepParams& sp) {
+  double worst = 0.0;
+  for (double v0 : {1.0, 3.0, 6.0}) {
+    PhysicsParams p = PhysicsParams::real();
+    p.rolling_friction = 0.0;
+    World w(openTable(), p, sp);
+    w.addBall({0, {-5.0, 0.0}, {}, {}, {}, {}});
+    w.strike(0, Shot::withSpeed(0.0, v0));
+    const double mu_g = p.sliding_friction * p.gravity;
+    const double t_roll = 2.0 * v0 / (7.0 * mu_g);
+    w.runFor(t_roll + 0.5);
+    const BallState b = w.balls()[0];
+    const double d_roll = 12.0 * v0 * v0 / (49.0 * mu_g);
+    const double want_x = -5.0 + d_roll + 5.0 / 7.0 * v0 * (w.time() - t_roll);
+    worst = std::max({worst, relErr(b.vel.x, 5.0 / 7.0 * v0, v0), relErr(b.pos.x, want_x, d_roll)});
   }
   return worst;
 }
@@ -214,7 +244,8 @@ std::vector<CaseError> runAccuracyCases(const StepParams& step) {
           {"stopping", "%", stopping(step)},
           {"cradle", "%", cradle(step)},
           {"cushion-gap", "mm", cushionGap(step)},
-          {"bank-kiss", "deg", bankKiss(step)}};
+          {"bank-kiss", "deg", bankKiss(step)},
+          {"stun-to-roll", "%", stunToRoll(step)}};
 }
 
 double breakCueRebound(const StepParams& step, double gap) {
@@ -228,9 +259,10 @@ double breakCueRebound(const StepParams& step, double gap) {
   return simulate(s).balls[0].vel.x / 10.0;
 }
 
-BreakTiming timeBreak(const StepParams& step) {
+BreakTiming timeBreak(const StepParams& step, const PhysicsParams& physics) {
   Scene s = breakScene();
   s.step = step;
+  s.physics = physics;
   const SimResult r = simulate(s);
   return {r.time, r.steps, r.wall_ms};
 }

@@ -95,6 +95,33 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     csv << '\n';
     out << '\n';
   }
+  // Spin against the paper's cloth, interleaved so that both see the same machine load.
+  {
+    PhysicsParams no_spin = PhysicsParams::real();
+    no_spin.cloth = ClothModel::Friction;
+    std::vector<double> with, without, with_ms, without_ms;
+    BreakTiming spin_run, plain_run;
+    for (int i = 0; i < std::max(options.repeats, 5); ++i) {
+      spin_run = timeBreak(StepParams{});
+      plain_run = timeBreak(StepParams{}, no_spin);
+      with.push_back(spin_run.wall_ms / static_cast<double>(spin_run.steps));
+      without.push_back(plain_run.wall_ms / static_cast<double>(plain_run.steps));
+      with_ms.push_back(spin_run.wall_ms);
+      without_ms.push_back(plain_run.wall_ms);
+    }
+    for (auto* v : {&with_ms, &without_ms}) std::sort(v->begin(), v->end());
+    std::sort(with.begin(), with.end());
+    std::sort(without.begin(), without.end());
+    const double a = with[with.size() / 2] * 1000.0, b = without[without.size() / 2] * 1000.0;
+    const double ma = with_ms[with_ms.size() / 2], mb = without_ms[without_ms.size() / 2];
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "\nspin cost (default settings, medians of %zu runs): with spin %.2f us/step, "
+                  "break %.2f ms (%.2f s simulated); without %.2f us/step, break %.2f ms "
+                  "(%.2f s simulated); ratio per step %.2f, per break %.2f\n",
+                  with.size(), a, ma, spin_run.sim_time, b, mb, plain_run.sim_time, a / b, ma / mb);
+    out << line;
+  }
   out << "\ncue ball after the break (vx / break speed at 0.3 s), by rack gap:\n";
   for (ContactModel contacts : {ContactModel::Pairwise, ContactModel::Box2D}) {
     StepParams s;

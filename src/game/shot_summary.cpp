@@ -28,6 +28,7 @@ rules::ShotSummary summarize(const std::vector<Event>& events) {
         }
         break;
       case EventType::AllAtRest:
+      case EventType::Miscue:  // the cue ball never moved: no contact follows
         break;
     }
   }

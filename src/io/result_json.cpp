@@ -19,6 +19,7 @@ ordered_json ballToJson(const BallState& ball) {
   j["y"] = ball.pos.y;
   j["vx"] = ball.vel.x;
   j["vy"] = ball.vel.y;
+  j["w"] = ordered_json::array({ball.w.x, ball.w.y, ball.w.z});
   j["pocket"] = ball.pocket ? ordered_json(pocketName(*ball.pocket)) : ordered_json(nullptr);
   return j;
 }
@@ -47,6 +48,10 @@ ordered_json eventToJson(const Event& event) {
       break;
     case EventType::AllAtRest:
       j["type"] = "rest";
+      break;
+    case EventType::Miscue:
+      j["type"] = "miscue";
+      j["ball"] = event.a;
       break;
   }
   return j;

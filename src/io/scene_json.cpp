@@ -22,6 +22,8 @@ constexpr double kMaxSpeed = 100.0;  // m/s
 
 constexpr double kMaxTableSize = 100.0;  // m
 constexpr double kMaxUntil = 3600.0;     // s
+// Far beyond any cue strike (a 100 m/s ball rolling has 3500 rad/s).
+constexpr double kMaxSpin = 1e5;  // rad/s
 
 }  // namespace
 
@@ -80,6 +82,8 @@ const ParamField kParamFields[] = {
     {"sliding_friction", &PhysicsParams::sliding_friction, Bounds::nonNegative(10.0)},
     {"ball_friction", &PhysicsParams::ball_friction, Bounds::nonNegative(10.0)},
     {"spin_decay", &PhysicsParams::spin_decay, Bounds::nonNegative(1e4)},
+    {"cushion_friction", &PhysicsParams::cushion_friction, Bounds::nonNegative(10.0)},
+    {"miscue_limit", &PhysicsParams::miscue_limit, Bounds::closed(0.0, 1.0)},
     {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0)},
     {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0)},
     {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed)},
@@ -107,8 +111,8 @@ PhysicsParams parsePhysics(const json& v) {
       const std::string name = text(item.value(), field_path);
       auto model = clothModelFromName(name);
       if (!model) {
-        refuse(field_path,
-               "unknown cloth model " + quote(name) + " (expected \"friction\" or \"damping\")");
+        refuse(field_path, "unknown cloth model " + quote(name) +
+                               " (expected \"spin\", \"friction\" or \"damping\")");
       }
       p.cloth = *model;
       continue;
@@ -134,7 +138,7 @@ std::vector<BallState> parseBalls(const json& v) {
     const json& b = v[i];
     const std::string at = element(path, i);
     expectObject(b, at);
-    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "mass"});
+    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "w", "mass"});
     BallState ball;
     ball.id = integer(required(b, at, "id"), member(at, "id"), 0, INT_MAX);
     const auto [seen, fresh] = index_of_id.emplace(ball.id, i);
@@ -148,6 +152,15 @@ std::vector<BallState> parseBalls(const json& v) {
     if (const json* p = optional(b, "vy")) ball.vel.y = number(*p, member(at, "vy"));
     if (std::hypot(ball.vel.x, ball.vel.y) > kMaxSpeed) {
       refuse(at, "speed hypot(vx, vy) must be <= " + formatNumber(kMaxSpeed) + " m/s");
+    }
+    if (const json* p = optional(b, "w")) {
+      const std::string wpath = member(at, "w");
+      if (!p->is_array() || p->size() != 3) {
+        refuse(wpath, "expected [wx, wy, wz] in rad/s, found " + describe(*p));
+      }
+      const Bounds spin = Bounds::closed(-kMaxSpin, kMaxSpin);
+      ball.w = {number((*p)[0], element(wpath, 0), spin), number((*p)[1], element(wpath, 1), spin),
+                number((*p)[2], element(wpath, 2), spin)};
     }
     if (const json* p = optional(b, "mass")) {
       ball.mass = number(*p, member(at, "mass"), Bounds::positive(kMaxMass));

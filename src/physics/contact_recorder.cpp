@@ -72,4 +72,15 @@ void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*old_manif
   }
 }
 
+void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {
+  Pair p{};
+  if (!asBallPair(contact, p) || p.other_kind != FixtureKind::Cushion) return;
+  if (impulse->count < 1 || impulse->normalImpulses[0] <= 0.0f) return;
+  b2WorldManifold wm;
+  contact->GetWorldManifold(&wm);
+  // Box2D's normal points from fixture A to fixture B.
+  const b2Vec2 towards_cushion = p.ball == contact->GetFixtureA() ? wm.normal : -wm.normal;
+  cushion_pushes.push_back({fixtureIndex(p.ball), towards_cushion, impulse->normalImpulses[0]});
+}
+
 }  // namespace nineball::physics

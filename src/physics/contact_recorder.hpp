@@ -30,6 +30,16 @@ class ContactRecorder : public b2ContactListener {
   void BeginContact(b2Contact* contact) override;
   void EndContact(b2Contact* contact) override;
   void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
+  void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
+
+  /// A cushion pushing a ball: the unit normal from the ball towards the cushion and the
+  /// normal impulse, in Box2D units.
+  struct CushionPush {
+    std::size_t ball;
+    b2Vec2 normal;
+    float impulse;
+  };
+  std::vector<CushionPush> cushion_pushes;  ///< this step, in solver order
 
   std::vector<std::size_t> cushion_hits;                       ///< ball indices, this step
   std::vector<std::pair<std::size_t, std::size_t>> ball_hits;  ///< Box2D contact model only

@@ -20,7 +20,12 @@ std::optional<PhysicsParams> PhysicsParams::preset(const std::string& name) {
 }
 
 const char* clothModelName(ClothModel m) {
-  return m == ClothModel::Friction ? "friction" : "damping";
+  switch (m) {
+    case ClothModel::Spin: return "spin";
+    case ClothModel::Friction: return "friction";
+    case ClothModel::Damping: return "damping";
+  }
+  return "?";
 }
 
 const char* contactModelName(ContactModel m) {
@@ -28,6 +33,7 @@ const char* contactModelName(ContactModel m) {
 }
 
 std::optional<ClothModel> clothModelFromName(const std::string& name) {
+  if (name == "spin") return ClothModel::Spin;
   if (name == "friction") return ClothModel::Friction;
   if (name == "damping") return ClothModel::Damping;
   return std::nullopt;

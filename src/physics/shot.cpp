@@ -25,6 +25,8 @@ const char* eventTypeName(EventType t) {
       return "pocket";
     case EventType::AllAtRest:
       return "rest";
+    case EventType::Miscue:
+      return "miscue";
   }
   return "?";
 }

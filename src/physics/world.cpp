@@ -11,6 +11,7 @@
 
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
+#include "physics/cloth.hpp"
 #include "physics/contact_recorder.hpp"
 
 namespace nineball {
@@ -35,12 +36,6 @@ constexpr double kMinPiece = 1e-9;
 // of the step (a frozen cluster of many balls).
 constexpr int kMaxPiecesPerStep = 64;
 
-Vec2 reduceSpeed(Vec2 v, double dv) {
-  const double s = length(v);
-  if (s <= dv) return {};
-  return v * ((s - dv) / s);
-}
-
 }  // namespace
 
 struct World::Impl {
@@ -51,6 +46,7 @@ struct World::Impl {
     Vec2 pos;                // kept for pocketed balls
     std::optional<PocketId> pocket;
     // Trajectory over the current sub-step, used by the pairwise contact model.
+    Vec3 w;  // angular velocity, rad/s (spin model)
     Vec2 start, move, vel;
     double from = 0.0;
     bool changed = false;
@@ -109,10 +105,19 @@ struct World::Impl {
   }
   Vec2 position(const Ball& b) const { return b.body ? fromB2(b.body->GetPosition()) : b.pos; }
 
-  void setVelocity(Ball& b, Vec2 v) {
+  static bool rests(Vec2 v, Vec3 w) { return v == Vec2{} && w.x == 0.0 && w.y == 0.0; }
+
+  void setMotion(Ball& b, Vec2 v, Vec3 w) {
+    b.w = w;
     b.body->SetLinearVelocity(toB2(v));
-    if (v == Vec2{}) b.body->SetAwake(false);  // a resting ball costs the solver nothing
+    if (rests(v, w)) {
+      b.w = {};
+      b.body->SetAwake(false);  // a resting ball costs the solver nothing
+    } else if (!b.body->IsAwake()) {
+      b.body->SetAwake(true);
+    }
   }
+  void setVelocity(Ball& b, Vec2 v) { setMotion(b, v, b.w); }
 
   void createBody(std::size_t index, Vec2 pos, Vec2 vel) {
     Ball& b = balls[index];
@@ -143,7 +148,7 @@ struct World::Impl {
     md.I = 0.0f;
     b.body->SetMassData(&md);
     b.pocket.reset();
-    setVelocity(b, vel);
+    setMotion(b, vel, b.w);
   }
 
   std::size_t indexOf(int id) const {
@@ -155,7 +160,10 @@ struct World::Impl {
 
   bool atRest() const {
     for (const Ball& b : balls) {
-      if (b.body && b.body->GetLinearVelocity() != b2Vec2(0.0f, 0.0f)) return false;
+      if (b.body &&
+          (b.body->GetLinearVelocity() != b2Vec2(0.0f, 0.0f) || b.w.x != 0.0 || b.w.y != 0.0)) {
+        return false;
+      }
     }
     return true;
   }
@@ -168,25 +176,52 @@ struct World::Impl {
     return m / k;
   }
 
-  // Constant deceleration over h seconds starting at t; a ball that stops inside the interval
-  // records the exact instant, so the rest event is not rounded to the step.
+  // The cloth over h seconds starting at t; a ball that stops inside the interval records the
+  // exact instant, so the rest event is not rounded to the step.
   void applyCloth(double t, double h) {
-    if (phys.cloth != ClothModel::Friction || phys.rolling_friction <= 0.0) return;
-    const double decel = phys.rolling_friction * phys.gravity;
+    if (phys.cloth == ClothModel::Damping) return;
     for (Ball& b : balls) {
-      if (!b.body || !b.body->IsAwake()) continue;
-      const Vec2 v = velocity(b);
-      const Vec2 slowed = reduceSpeed(v, decel * h);
-      if (slowed == Vec2{} && v != Vec2{}) last_stop = std::max(last_stop, t + length(v) / decel);
-      setVelocity(b, slowed);
+      if (!b.body || (!b.body->IsAwake() && b.w == Vec3{})) continue;
+      const physics::Motion m{velocity(b), b.w};
+      const physics::ClothStep c =
+          phys.spin() ? physics::slideAndRoll(m, h, phys) : physics::decelerate(m, h, phys);
+      if (c.stopped_after) last_stop = std::max(last_stop, t + *c.stopped_after);
+      setMotion(b, c.end.v, c.end.w);
     }
+  }
+
+  // Friction at the cushion nose acts on the slip of the contact point: side spin changes the
+  // angle off the rail, and the rail changes the side spin (Coulomb, capped where it grips).
+  void applyCushionFriction() {
+    auto& pushes = recorder.cushion_pushes;
+    if (phys.spin() && phys.cushion_friction > 0.0) {
+      const double r = phys.ball_radius;
+      for (const auto& push : pushes) {
+        Ball& b = balls[push.ball];
+        if (!b.body) continue;
+        const Vec2 n = normalized(Vec2{push.normal.x, push.normal.y});
+        const double normal_impulse = push.impulse / k;  // kg m/s
+        const Vec3 arm = lift(n * r);
+        const Vec2 v = velocity(b);
+        const Vec2 at_contact = flat(lift(v) + cross(b.w, arm));
+        const Vec2 sliding = at_contact - n * dot(at_contact, n);
+        const double speed = length(sliding);
+        if (speed < 1e-12) continue;
+        const double grip = 2.0 / 7.0 * b.mass * speed;
+        const Vec2 impulse =
+            sliding * (-std::min(phys.cushion_friction * normal_impulse, grip) / speed);
+        const double inertia = 0.4 * b.mass * r * r;
+        setMotion(b, v + impulse / b.mass, b.w + cross(arm, lift(impulse)) * (1.0 / inertia));
+      }
+    }
+    pushes.clear();
   }
 
   void stopCreepingBalls(double t) {
     if (phys.cloth != ClothModel::Damping) return;
     for (Ball& b : balls) {
       if (b.body && b.body->IsAwake() && length(velocity(b)) < phys.rest_speed) {
-        setVelocity(b, {});
+        setMotion(b, {}, {});
         last_stop = std::max(last_stop, t);
       }
     }
@@ -373,6 +408,7 @@ struct World::Impl {
         }
       }
       world.Step(static_cast<float>(piece), sp.velocity_iterations, sp.position_iterations);
+      applyCushionFriction();
       recordCushionHits(t0 + done + piece);
       if (pairwise) {
         resolvePairwise(t0 + done, piece);
@@ -420,6 +456,7 @@ void World::addBall(const BallState& ball) {
   b.id = ball.id;
   b.mass = ball.mass.value_or(impl_->phys.ball_mass);
   b.pos = ball.pos;
+  b.w = ball.w;
   impl_->balls.push_back(b);
   impl_->recorder.resize(impl_->balls.size());
   if (ball.pocket) {
@@ -427,14 +464,28 @@ void World::addBall(const BallState& ball) {
     return;
   }
   impl_->createBody(impl_->balls.size() - 1, ball.pos, ball.vel);
-  impl_->moving = impl_->moving || ball.vel != Vec2{};
+  impl_->moving = impl_->moving || !Impl::rests(ball.vel, ball.w);
 }
 
-void World::strike(int ball_id, const Shot& shot) {
+bool World::strike(int ball_id, const Shot& shot) {
   Impl::Ball& b = impl_->balls[impl_->indexOf(ball_id)];
   if (!b.body) throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
-  impl_->setVelocity(b, shot.velocity());
-  impl_->moving = impl_->moving || shot.speed > 0.0;
+  const PhysicsParams& p = impl_->phys;
+  if (length(shot.tip) > p.miscue_limit) {
+    Event e;
+    e.type = EventType::Miscue;
+    e.t = impl_->time;
+    e.a = ball_id;
+    impl_->events.push_back(e);
+    return false;
+  }
+  const Vec2 v = shot.velocity();
+  const Vec3 w = p.spin() ? physics::strikeSpin(fromAngle(shot.heading_rad), shot.speed, shot.tip,
+                                                p.ball_radius)
+                          : Vec3{};
+  impl_->setMotion(b, v, w);
+  impl_->moving = impl_->moving || !Impl::rests(v, w);
+  return true;
 }
 
 void World::placeBall(int ball_id, Vec2 pos) {
@@ -442,8 +493,9 @@ void World::placeBall(int ball_id, Vec2 pos) {
   Impl::Ball& b = impl_->balls[i];
   if (b.body) {
     b.body->SetTransform(impl_->toB2(pos), 0.0f);
-    impl_->setVelocity(b, {});
+    impl_->setMotion(b, {}, {});
   } else {
+    b.w = {};
     impl_->createBody(i, pos, {});
   }
   b.pos = pos;
@@ -485,6 +537,7 @@ std::vector<BallState> World::balls() const {
     s.id = b.id;
     s.pos = impl_->position(b);
     s.vel = impl_->velocity(b);
+    s.w = b.body ? b.w : Vec3{};
     s.mass = b.mass;
     s.pocket = b.pocket;
     out.push_back(s);

@@ -25,7 +25,7 @@ std::string describe(double v0, const Solver& s) {
 TEST(NoClamping, FastBallCoversTheFullDistance) {
   WorstError distance("no clamping: distance v t - mu g t^2/2 after 0.25 s", kClampTolerance);
   WorstError speed("no clamping: speed v - mu g t after 0.25 s", kClampTolerance);
-  const PhysicsParams p;
+  const PhysicsParams p = constantDeceleration();
   const double a = p.rolling_friction * p.gravity;
   // 13 m/s is a power break, 20 m/s beyond any human shot. 120 and 60 Hz move the ball 11 to
   // 33 Box2D units a step at k = 100, so the world has to split every step.

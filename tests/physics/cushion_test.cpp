@@ -86,7 +86,8 @@ TEST(Cushion, SlowBallStillBounces) {
   const TableDef table;
   for (const PhysicsParams& preset : {PhysicsParams::real(), PhysicsParams::paper()}) {
     for (double speed : {0.2, 0.05}) {
-      const Bounce b = bounce(preset, topRail(table), 0.0, speed, StepParams{}, 0.001);
+      const Bounce b =
+          bounce(constantDeceleration(preset), topRail(table), 0.0, speed, StepParams{}, 0.001);
       const double want = preset.cushion_restitution * length(b.u);
       normal.check(
           relativeError(dot(b.hit.va, topRail(table).inward), want, speed),

@@ -37,7 +37,7 @@ TEST(Friction, StoppingDistanceAndTimeMatchTheClosedForm) {
   // mu 0.2 fits every speed on the 60 m table; the real 0.01 fits the two slow ones.
   for (const Case c : {Case{0.2, 0.5}, Case{0.2, 2.0}, Case{0.2, 5.0}, Case{0.2, 10.0},
                        Case{0.01, 0.5}, Case{0.01, 2.0}}) {
-    PhysicsParams p;
+    PhysicsParams p = constantDeceleration();
     p.rolling_friction = c.mu;
     const double a = c.mu * p.gravity;
     const Stop s = rollToRest(p, StepParams{}, c.v0);
@@ -52,7 +52,7 @@ TEST(Friction, StoppingDistanceDoesNotDependOnTheStepRate) {
   // frame rate. Here 60 Hz (which also makes the world sub-step fast balls), 120 Hz and the
   // default must all give the closed form.
   WorstError distance("friction: stopping distance at 60/120/500/2000 Hz", kStoppingTolerance);
-  PhysicsParams p;
+  PhysicsParams p = constantDeceleration();
   p.rolling_friction = 0.2;
   const double a = p.rolling_friction * p.gravity;
   for (double hz : {60.0, 120.0, 500.0, 2000.0}) {
@@ -69,7 +69,7 @@ TEST(Friction, StoppingDistanceDoesNotDependOnTheStepRate) {
 TEST(Friction, SpeedFallsLinearly) {
   // v(t) = v0 - mu g t at every step, not only at the end.
   WorstError speed("friction: speed v0 - mu g t at t = 0.25 T .. 0.75 T", kStoppingTolerance);
-  PhysicsParams p;
+  PhysicsParams p = constantDeceleration();
   p.rolling_friction = 0.2;
   const double a = p.rolling_friction * p.gravity;
   const double v0 = 5.0;
@@ -90,7 +90,7 @@ TEST(Friction, DampingModelFollowsItsExponentialLaw) {
   WorstError speed("damping: speed v0 exp(-c t)", kStoppingTolerance);
   WorstError distance("damping: distance (v0 - v)/c", kStoppingTolerance);
   for (double c : {0.2, 1.0}) {
-    PhysicsParams p;
+    PhysicsParams p = constantDeceleration();
     p.cloth = ClothModel::Damping;
     p.linear_damping = c;
     for (double v0 : {0.5, 2.0, 5.0, 10.0}) {
@@ -111,7 +111,7 @@ TEST(Friction, DampingModelFollowsItsExponentialLaw) {
 TEST(Friction, DampingModelIsNotTheConstantDecelerationLaw) {
   // The two cloth models differ in kind: with c chosen so that both start with the same
   // deceleration (c v0 = mu g), the damped ball has not stopped when the friction ball has.
-  PhysicsParams p;
+  PhysicsParams p = constantDeceleration();
   p.cloth = ClothModel::Damping;
   const double v0 = 2.0, mu = 0.2;
   p.linear_damping = mu * p.gravity / v0;

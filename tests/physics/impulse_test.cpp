@@ -43,7 +43,7 @@ TEST(Impulse, WorldGivesTheBallTheImpulseSpeed) {
   WorstError worst("impulse: ball speed after strike + 1 step", kCollisionSpeedTolerance);
   const double v = kForce * kContactTime / kMass;
   for (double mu : {0.0, 0.01}) {
-    PhysicsParams p;
+    PhysicsParams p = constantDeceleration();
     p.ball_mass = kMass;
     p.rolling_friction = mu;
     const StepParams sp;

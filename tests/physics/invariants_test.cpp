@@ -16,7 +16,14 @@ constexpr double kOverlapRounding = 1e-6;
 
 double kineticEnergy(const World& w) {
   double ke = 0.0;
-  for (const BallState& b : w.balls()) ke += 0.5 * b.mass.value_or(0.0) * dot(b.vel, b.vel);
+  // Translation and rotation (I = 2/5 m R^2): spin turns into speed and back, the sum only
+  // falls.
+  const double r = w.physics().ball_radius;
+  for (const BallState& b : w.balls()) {
+    const double m = b.mass.value_or(0.0);
+    const double spin2 = b.w.x * b.w.x + b.w.y * b.w.y + b.w.z * b.w.z;
+    ke += 0.5 * m * dot(b.vel, b.vel) + 0.5 * 0.4 * m * r * r * spin2;
+  }
   return ke;
 }
 

@@ -93,7 +93,7 @@ TEST(Oblique, CutSweepWithClothFrictionAndSlowSteps) {
   WorstError direction("cut sweep with cloth: object-ball direction", kDirectionToleranceDeg,
                        "deg");
   WorstError velocity("cut sweep with cloth: velocities after", kCollisionSpeedTolerance);
-  const PhysicsParams p = PhysicsParams::real();
+  const PhysicsParams p = constantDeceleration();
   for (double hz : {500.0, 120.0}) {
     StepParams sp;
     sp.hz = hz;
@@ -115,7 +115,7 @@ TEST(Oblique, CutSweepWithClothFrictionAndSlowSteps) {
 
 TEST(Oblique, HalfBallHitSendsTheObjectBallThirtyDegreesOff) {
   // Centre offset R (a "half-ball hit"): the object ball leaves 30 degrees off the cue line.
-  const PhysicsParams p = PhysicsParams::real();
+  const PhysicsParams p = constantDeceleration();
   const double offset = p.ball_radius;
   auto world = makeWorld(longTable(), p, StepParams{},
                          {makeBall(kCueBall, {-0.4, offset}, {2.0, 0.0}), makeBall(1, {0.0, 0.0})});

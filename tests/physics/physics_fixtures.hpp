@@ -42,8 +42,16 @@ inline TableDef longTable() {
   return t;
 }
 
+/// The real preset with the paper's cloth (constant deceleration mu g, no spin): the model
+/// the paper's closed forms describe.
+inline PhysicsParams constantDeceleration(PhysicsParams p = PhysicsParams::real()) {
+  p.cloth = ClothModel::Friction;
+  return p;
+}
+
 /// The real preset with the cloth switched off, for comparisons that friction would blur.
 inline PhysicsParams frictionless(PhysicsParams p = PhysicsParams::real()) {
+  p = constantDeceleration(p);
   p.rolling_friction = 0.0;
   return p;
 }

@@ -23,7 +23,7 @@ double speedToStopIn(const PhysicsParams& p, double distance) {
 }
 
 TEST(Pocket, EachPocketTakesABallSentIntoIt) {
-  const PhysicsParams p;
+  const PhysicsParams p = constantDeceleration();
   const TableGeometry table = buildTable(TableDef{}, p.ball_radius);
   for (const Pocket& pocket : table.pockets) {
     const std::string name = pocketName(pocket.id);
@@ -64,7 +64,7 @@ TEST(Pocket, JawPointSendsTheBallStraightBack) {
   // along the pocket's axis and the side faces lie inside the drop circle; balls that glance
   // off a face go down, as they do on a real table.)
   WorstError rebound("pocket jaw point: velocity after", kCushionTolerance);
-  PhysicsParams p;
+  PhysicsParams p = constantDeceleration();
   const double approach = 0.1, v0 = 0.5;
   const TableGeometry table = buildTable(TableDef{}, p.ball_radius);
   const auto& loop = table.cushion_loop;
@@ -97,7 +97,7 @@ TEST(Pocket, BallRollingAlongTheRailPassesTheSidePocket) {
   // says, beyond the mouth.
   WorstError distance("pocket: rail-side roll past the side pocket, stopping distance",
                       kStoppingTolerance);
-  const PhysicsParams p;
+  const PhysicsParams p = constantDeceleration();
   const TableDef t;
   const double v0 = 0.4;
   for (double gap : {0.005, 0.001}) {
@@ -121,7 +121,7 @@ TEST(Pocket, BallRollingAlongTheRailPassesTheSidePocket) {
 TEST(Pocket, BallHangingOnTheLipStaysUp) {
   // A ball rolled straight into each pocket so that it stops with its centre 2 mm short of
   // the drop circle stays on the table; 2 mm past, it drops. The drop circle is the rule.
-  const PhysicsParams p;
+  const PhysicsParams p = constantDeceleration();
   const TableGeometry table = buildTable(TableDef{}, p.ball_radius);
   const double run = 0.3;
   for (const Pocket& pocket : table.pockets) {
