@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "nineball/params.hpp"
@@ -9,10 +10,21 @@ namespace nineball {
 
 /// The worst error of one canonical case against its closed form.
 struct CaseError {
-  std::string name;  ///< head-on, cut-sweep, cushion, stopping, cradle
-  std::string unit;  ///< "%" (relative to the formula) or "deg"
+  std::string name;  ///< head-on, cut-direction, cushion, stopping, cradle, ...
+  std::string unit;  ///< "%" (relative to the formula), "deg" or "mm"
   double worst = 0.0;
+  double target = 0.0;  ///< the accuracy target of the case, same unit
+
+  /// worst / target: at most 1 when the case meets its target.
+  double score() const { return worst / target; }
 };
+
+/// Which of the points (run time, error), both to be small, no other point beats on both:
+/// the Pareto front.
+std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& time_error);
+
+/// The largest score over the cases: at most 1 when every case meets its target.
+double worstScore(const std::vector<CaseError>& errors);
 
 /// Runs every canonical case under the given solver settings (physics: the real preset with
 /// the friction and restitution each case needs) and returns its worst error.

@@ -49,12 +49,24 @@ struct PhysicsParams {
 
 /// Solver settings. Box2D units are metres x scale.
 struct StepParams {
-  double hz = 250.0;  ///< fixed steps per simulated second
+  double hz = 60.0;  ///< base step rate; steps split further for fast balls and contacts
   int velocity_iterations = 8;
   int position_iterations = 3;
   double scale = 100.0;  ///< Box2D units per metre (k)
   ContactModel contacts = ContactModel::Pairwise;
   double max_time = 600.0;  ///< s, a run to rest gives up after this long
+  /// The plain fixed-rate reference: every ball, resting or not, stepped at every step, no
+  /// skipping of idle work. Steps still split where a ball would outrun Box2D's travel limit.
+  bool baseline = false;
+
+  /// The baseline as measured against: every ball at the finest rate of the sweep.
+  static StepParams plainBaseline() {
+    StepParams s;
+    s.hz = kBaselineHz;
+    s.baseline = true;
+    return s;
+  }
+  static constexpr double kBaselineHz = 2000.0;
 
   double dt() const { return 1.0 / hz; }
 };

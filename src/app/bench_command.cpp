@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <ostream>
 #include <sstream>
 #include <vector>
 
+#include "app/atomic_file.hpp"
 #include "app/exit_codes.hpp"
+#include "app/svg_plot.hpp"
 #include "nineball/accuracy.hpp"
 
 namespace nineball::app {
@@ -17,23 +18,47 @@ struct Row {
   StepParams step;
   std::vector<CaseError> errors;
   BreakTiming timing;  // wall_ms holds the median
+  bool on_front = false;
 };
 
+StepParams setting(ContactModel contacts, double scale, double hz, int iterations = 8) {
+  StepParams s;
+  s.contacts = contacts;
+  s.scale = scale;
+  s.hz = hz;
+  s.velocity_iterations = iterations;
+  return s;
+}
+
 std::vector<StepParams> settings(bool quick) {
+  if (quick) return {StepParams{}, StepParams::plainBaseline()};
   std::vector<StepParams> out;
-  if (quick) return {StepParams{}};
-  for (ContactModel contacts : {ContactModel::Pairwise, ContactModel::Box2D}) {
-    for (double scale : {1.0, 10.0, 50.0, 100.0, 200.0}) {
-      for (double hz : {250.0, 500.0, 1000.0, 2000.0}) {
-        StepParams s;
-        s.scale = scale;
-        s.hz = hz;
-        s.contacts = contacts;
-        out.push_back(s);
-      }
+  for (double scale : {10.0, 50.0, 100.0, 200.0}) {
+    for (double hz : {30.0, 60.0, 120.0, 250.0, 500.0, 1000.0, 2000.0}) {
+      out.push_back(setting(ContactModel::Pairwise, scale, hz));
     }
   }
+  for (int iterations : {1, 3}) {
+    for (double hz : {60.0, 250.0})
+      out.push_back(setting(ContactModel::Pairwise, 100.0, hz, iterations));
+  }
+  for (double scale : {50.0, 100.0, 200.0}) {
+    for (double hz : {60.0, 250.0, 1000.0}) out.push_back(setting(ContactModel::Box2D, scale, hz));
+  }
+  out.push_back(StepParams::plainBaseline());
   return out;
+}
+
+std::string label(const StepParams& s) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s%s k=%g %gHz vi=%d", s.baseline ? "baseline " : "",
+                contactModelName(s.contacts), s.scale, s.hz, s.velocity_iterations);
+  return buf;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
 }
 
 Row measure(const StepParams& step, int repeats) {
@@ -45,83 +70,65 @@ Row measure(const StepParams& step, int repeats) {
     row.timing = timeBreak(step);
     times.push_back(row.timing.wall_ms);
   }
-  std::sort(times.begin(), times.end());
-  row.timing.wall_ms = times[times.size() / 2];
+  row.timing.wall_ms = median(times);
   return row;
 }
 
-std::string scientific(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%9.2e", v);
+bool isDefault(const StepParams& s) {
+  const StepParams d;
+  return !s.baseline && s.contacts == d.contacts && s.scale == d.scale && s.hz == d.hz &&
+         s.velocity_iterations == d.velocity_iterations;
+}
+
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %9.2e", v);
   return buf;
 }
 
-}  // namespace
+// Default against baseline, and spin against the paper's cloth, each pair interleaved so that
+// both sides see the same machine load.
+void compareInterleaved(std::ostream& out, int repeats) {
+  std::vector<double> fast, slow;
+  BreakTiming f{}, b{};
+  for (int i = 0; i < repeats; ++i) {
+    f = timeBreak(StepParams{});
+    b = timeBreak(StepParams::plainBaseline());
+    fast.push_back(f.wall_ms);
+    slow.push_back(b.wall_ms);
+  }
+  const double mf = median(fast), mb = median(slow);
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "\nbreak to rest, medians of %d interleaved runs: default %.2f ms (%ld steps, "
+                "%.2f s simulated); baseline %.2f ms (%ld steps, %.2f s simulated); "
+                "%.1f times faster\n",
+                repeats, mf, f.steps, f.sim_time, mb, b.steps, b.sim_time, mb / mf);
+  out << line;
 
-CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
-  CLI::App* cmd = app.add_subcommand(
-      "bench", "Sweep solver settings: worst error of each canonical case and break run time");
-  cmd->add_option("--repeats", options.repeats, "Timed breaks per setting (median reported)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_flag("--quick", options.quick, "Measure the default setting only");
-  cmd->add_option("--csv", options.csv_path, "Also write the table as CSV to this file");
-  return cmd;
+  PhysicsParams no_spin = PhysicsParams::real();
+  no_spin.cloth = ClothModel::Friction;
+  std::vector<double> with_step, without_step, with_ms, without_ms;
+  BreakTiming s{}, p{};
+  for (int i = 0; i < repeats; ++i) {
+    s = timeBreak(StepParams{});
+    p = timeBreak(StepParams{}, no_spin);
+    with_step.push_back(s.wall_ms / static_cast<double>(s.steps) * 1000.0);
+    without_step.push_back(p.wall_ms / static_cast<double>(p.steps) * 1000.0);
+    with_ms.push_back(s.wall_ms);
+    without_ms.push_back(p.wall_ms);
+  }
+  const double ws = median(with_step), wo = median(without_step);
+  const double wm = median(with_ms), om = median(without_ms);
+  std::snprintf(line, sizeof line,
+                "spin cost, medians of %d interleaved runs: with spin %.2f us/step, break %.2f ms "
+                "(%.2f s simulated); without %.2f us/step, break %.2f ms (%.2f s simulated); "
+                "ratio per step %.2f, per break %.2f\n",
+                repeats, ws, wm, s.sim_time, wo, om, p.sim_time, ws / wo, wm / om);
+  out << line;
 }
 
-int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
-  std::vector<Row> rows;
-  for (const StepParams& s : settings(options.quick)) rows.push_back(measure(s, options.repeats));
-
-  std::ostringstream csv;
-  csv << "contacts,scale,hz,break_sim_s,break_steps,break_wall_ms_median";
-  for (const CaseError& e : rows.front().errors)
-    csv << ',' << e.name << '_' << (e.unit == "%" ? "pct" : e.unit);
-  csv << '\n';
-  out << "contacts  scale     hz  break: sim s  steps  wall ms |";
-  for (const CaseError& e : rows.front().errors) out << ' ' << e.name << " (" << e.unit << ")";
-  out << '\n';
-  for (const Row& r : rows) {
-    csv << contactModelName(r.step.contacts) << ',' << r.step.scale << ',' << r.step.hz << ','
-        << r.timing.sim_time << ',' << r.timing.steps << ',' << r.timing.wall_ms;
-    char head[128];
-    std::snprintf(head, sizeof head, "%-8s %6.0f %6.0f  %12.2f %6ld %8.2f |",
-                  contactModelName(r.step.contacts), r.step.scale, r.step.hz, r.timing.sim_time,
-                  r.timing.steps, r.timing.wall_ms);
-    out << head;
-    for (const CaseError& e : r.errors) {
-      csv << ',' << e.worst;
-      out << ' ' << scientific(e.worst);
-    }
-    csv << '\n';
-    out << '\n';
-  }
-  // Spin against the paper's cloth, interleaved so that both see the same machine load.
-  {
-    PhysicsParams no_spin = PhysicsParams::real();
-    no_spin.cloth = ClothModel::Friction;
-    std::vector<double> with, without, with_ms, without_ms;
-    BreakTiming spin_run, plain_run;
-    for (int i = 0; i < std::max(options.repeats, 5); ++i) {
-      spin_run = timeBreak(StepParams{});
-      plain_run = timeBreak(StepParams{}, no_spin);
-      with.push_back(spin_run.wall_ms / static_cast<double>(spin_run.steps));
-      without.push_back(plain_run.wall_ms / static_cast<double>(plain_run.steps));
-      with_ms.push_back(spin_run.wall_ms);
-      without_ms.push_back(plain_run.wall_ms);
-    }
-    for (auto* v : {&with_ms, &without_ms}) std::sort(v->begin(), v->end());
-    std::sort(with.begin(), with.end());
-    std::sort(without.begin(), without.end());
-    const double a = with[with.size() / 2] * 1000.0, b = without[without.size() / 2] * 1000.0;
-    const double ma = with_ms[with_ms.size() / 2], mb = without_ms[without_ms.size() / 2];
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "\nspin cost (default settings, medians of %zu runs): with spin %.2f us/step, "
-                  "break %.2f ms (%.2f s simulated); without %.2f us/step, break %.2f ms "
-                  "(%.2f s simulated); ratio per step %.2f, per break %.2f\n",
-                  with.size(), a, ma, spin_run.sim_time, b, mb, plain_run.sim_time, a / b, ma / mb);
-    out << line;
-  }
+void rackGaps(std::ostream& out) {
   out << "\ncue ball after the break (vx / break speed at 0.3 s), by rack gap:\n";
   for (ContactModel contacts : {ContactModel::Pairwise, ContactModel::Box2D}) {
     StepParams s;
@@ -135,23 +142,73 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     }
     out << '\n';
   }
-  if (!options.csv_path.empty()) {
-    // Written whole or not at all: to a temporary name, then renamed.
-    const std::string tmp = options.csv_path + ".tmp";
-    {
-      std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-      f << csv.str();
-      if (!f.flush()) {
-        err << "nineball bench: cannot write " << options.csv_path << '\n';
-        std::remove(tmp.c_str());
-        return kExitBadInput;
-      }
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Sweep solver settings: worst error of each canonical case against break run time");
+  cmd->add_option("--repeats", options.repeats, "Timed breaks per setting (median reported)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_flag("--quick", options.quick, "Measure the default setting and the baseline only");
+  cmd->add_option("--csv", options.csv_path, "Also write the table as CSV to this file");
+  cmd->add_option("--svg", options.svg_path, "Also plot error against run time (SVG)");
+  return cmd;
+}
+
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  std::vector<Row> rows;
+  for (const StepParams& s : settings(options.quick)) rows.push_back(measure(s, options.repeats));
+  std::vector<std::pair<double, double>> points;
+  for (const Row& r : rows) points.emplace_back(r.timing.wall_ms, worstScore(r.errors));
+  const std::vector<bool> front = paretoFront(points);
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].on_front = front[i];
+
+  std::ostringstream csv;
+  csv << "setting,contacts,scale,hz,velocity_iterations,baseline,break_sim_s,break_steps,"
+         "break_wall_ms_median,worst_over_target,pareto";
+  out << "setting                          sim s  steps  wall ms  worst/target front |";
+  for (const CaseError& e : rows.front().errors) {
+    csv << ',' << e.name << '_' << (e.unit == "%" ? "pct" : e.unit);
+    out << ' ' << e.name << " (" << e.unit << ")";
+  }
+  csv << '\n';
+  out << '\n';
+  std::vector<PlotPoint> plot;
+  for (const Row& r : rows) {
+    const double score = worstScore(r.errors);
+    csv << label(r.step) << ',' << contactModelName(r.step.contacts) << ',' << r.step.scale << ','
+        << r.step.hz << ',' << r.step.velocity_iterations << ',' << r.step.baseline << ','
+        << r.timing.sim_time << ',' << r.timing.steps << ',' << r.timing.wall_ms << ',' << score
+        << ',' << r.on_front;
+    char head[160];
+    std::snprintf(head, sizeof head, "%-30s %7.2f %6ld %8.2f %12.2e %5s |", label(r.step).c_str(),
+                  r.timing.sim_time, r.timing.steps, r.timing.wall_ms, score,
+                  r.on_front ? "*" : "");
+    out << head;
+    for (const CaseError& e : r.errors) {
+      csv << ',' << e.worst;
+      out << sci(e.worst);
     }
-    if (std::rename(tmp.c_str(), options.csv_path.c_str()) != 0) {
-      err << "nineball bench: cannot write " << options.csv_path << '\n';
-      std::remove(tmp.c_str());
-      return kExitBadInput;
-    }
+    csv << '\n';
+    out << '\n';
+    plot.push_back({r.timing.wall_ms, score, label(r.step), r.on_front, isDefault(r.step)});
+  }
+  compareInterleaved(out, std::max(options.repeats, 5));
+  rackGaps(out);
+
+  if (!options.csv_path.empty() && !writeFileAtomically(options.csv_path, csv.str())) {
+    err << "nineball bench: cannot write " << options.csv_path << '\n';
+    return kExitBadInput;
+  }
+  if (!options.svg_path.empty() &&
+      !writeFileAtomically(options.svg_path,
+                           errorTimePlot(plot,
+                                         "nineball: error against run time per solver "
+                                         "setting (break to rest)"))) {
+    err << "nineball bench: cannot write " << options.svg_path << '\n';
+    return kExitBadInput;
   }
   return out ? kExitOk : kExitInternal;
 }

@@ -9,15 +9,18 @@ namespace nineball::app {
 /// Options of `nineball bench`.
 struct BenchOptions {
   int repeats = 7;       ///< timed breaks per setting; the median is reported
-  bool quick = false;    ///< the default setting only
+  bool quick = false;    ///< the default setting and the baseline only
   std::string csv_path;  ///< also write the table as CSV here
+  std::string svg_path;  ///< also plot error against run time here (SVG)
 };
 
 /// Registers `bench` on the app.
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 
-/// Sweeps the solver settings (scale k, step rate, contact model): for each, the worst error
-/// of every canonical case against its formula and the median wall time of a break to rest.
+/// Sweeps the solver settings (step rate, velocity iterations, scale k, contact model, the
+/// baseline): for each, the worst error of every canonical case against its formula and the
+/// median wall time of a break to rest; marks the Pareto front; compares the default with
+/// the plain fixed-rate baseline, spin with no spin, and rack gaps.
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace nineball::app

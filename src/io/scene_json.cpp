@@ -235,7 +235,8 @@ StepParams parseStep(const json& v) {
   const std::string path = "step";
   expectObject(v, path);
   allowOnly(v, path,
-            {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "max_time"});
+            {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "max_time",
+             "baseline"});
   StepParams s;
   if (const json* p = optional(v, "hz")) s.hz = number(*p, "step.hz", Bounds::positive(1e5));
   if (const json* p = optional(v, "velocity_iterations")) {
@@ -257,6 +258,12 @@ StepParams parseStep(const json& v) {
              "unknown contact model " + quote(name) + " (expected \"pairwise\" or \"box2d\")");
     }
     s.contacts = *model;
+  }
+  if (const json* p = optional(v, "baseline")) {
+    if (!p->is_boolean()) refuse("step.baseline", "expected true or false, found " + describe(*p));
+    s.baseline = p->get<bool>();
+    // The baseline steps at the finest rate unless a rate is given.
+    if (s.baseline && !optional(v, "hz")) s.hz = StepParams::kBaselineHz;
   }
   if (const json* p = optional(v, "max_time")) {
     s.max_time = number(*p, "step.max_time", Bounds::positive(36000.0));

@@ -112,7 +112,7 @@ struct World::Impl {
     b.body->SetLinearVelocity(toB2(v));
     if (rests(v, w)) {
       b.w = {};
-      b.body->SetAwake(false);  // a resting ball costs the solver nothing
+      if (!sp.baseline) b.body->SetAwake(false);  // a resting ball costs the solver nothing
     } else if (!b.body->IsAwake()) {
       b.body->SetAwake(true);
     }
@@ -181,7 +181,7 @@ struct World::Impl {
   void applyCloth(double t, double h) {
     if (phys.cloth == ClothModel::Damping) return;
     for (Ball& b : balls) {
-      if (!b.body || (!b.body->IsAwake() && b.w == Vec3{})) continue;
+      if (!b.body || (!sp.baseline && !b.body->IsAwake() && b.w == Vec3{})) continue;
       const physics::Motion m{velocity(b), b.w};
       const physics::ClothStep c =
           phys.spin() ? physics::slideAndRoll(m, h, phys) : physics::decelerate(m, h, phys);
@@ -255,7 +255,7 @@ struct World::Impl {
     for (std::size_t i = 0; i < n; ++i) {
       const Ball& a = balls[i];
       if (!a.body) continue;
-      const bool a_still = a.vel == Vec2{};
+      const bool a_still = !sp.baseline && a.vel == Vec2{};
       for (std::size_t j = i + 1; j < n; ++j) {
         const Ball& b = balls[j];
         if (!b.body || (a_still && b.vel == Vec2{})) continue;
