@@ -1,0 +1,56 @@
+// Micro benchmarks of the physics (Google Benchmark). The run-time-against-error sweep is
+// `nineball bench`; this measures the parts.
+#include <benchmark/benchmark.h>
+
+#include "nineball/scenes.hpp"
+#include "nineball/sim.hpp"
+#include "nineball/world.hpp"
+#include "physics/ball_collision.hpp"
+#include "physics/cloth.hpp"
+
+namespace {
+
+using namespace nineball;
+
+void BM_BreakToRest(benchmark::State& state, StepParams step) {
+  Scene scene = breakScene();
+  scene.step = step;
+  for (auto _ : state) benchmark::DoNotOptimize(simulate(scene));
+}
+BENCHMARK_CAPTURE(BM_BreakToRest, adaptive_default, StepParams{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BreakToRest, plain_baseline, StepParams::plainBaseline())
+    ->Unit(benchmark::kMillisecond);
+
+// One base step with the full rack moving just after the break.
+void BM_StepFullRackMoving(benchmark::State& state) {
+  const Scene scene = breakScene();
+  for (auto _ : state) {
+    state.PauseTiming();
+    World w(scene.table, scene.physics, scene.step);
+    for (const BallState& b : scene.balls) w.addBall(b);
+    w.strike(kCueBall, *scene.shot);
+    w.runFor(0.15);  // the cue ball has reached the rack
+    state.ResumeTiming();
+    w.step();
+  }
+}
+BENCHMARK(BM_StepFullRackMoving)->Unit(benchmark::kMicrosecond);
+
+void BM_ContactFraction(benchmark::State& state) {
+  const Vec2 rel{0.1, 0.02}, move{-0.2, 0.0};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(physics::contactFraction(rel, move, 0.05715, 0.0, true));
+  }
+}
+BENCHMARK(BM_ContactFraction);
+
+void BM_SlideAndRoll(benchmark::State& state) {
+  const PhysicsParams p;
+  const physics::Motion m{{2.0, 0.3}, {1.0, -4.0, 20.0}};
+  for (auto _ : state) benchmark::DoNotOptimize(physics::slideAndRoll(m, 1.0 / 60.0, p));
+}
+BENCHMARK(BM_SlideAndRoll);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "nineball/params.hpp"
+
+namespace nineball {
+
+/// What the numerical stability stress runs.
+struct StressOptions {
+  std::uint64_t seed = 1;
+  int random_layouts = 200;     ///< random tables and shots, up to 13 m/s and full spin
+  int crowded_balls = 100;      ///< balls on the crowded table
+  double long_run_s = 60.0;     ///< simulated seconds of the frictionless endless run
+  double rest_within_s = 60.0;  ///< every scenario with a cloth must be at rest by then
+  StepParams step;              ///< solver settings of every scenario
+};
+
+/// What it found.
+struct StressReport {
+  std::map<std::string, int> scenarios;  ///< kind -> count
+  long steps = 0;
+  long checks = 0;
+  std::map<std::string, long> failures;     ///< check -> count
+  std::vector<std::string> first_failures;  ///< the first few, described
+  double simulated_s = 0.0;
+
+  long failureCount() const;
+};
+
+/// Runs every scenario twice, checking after every step: no NaN or infinity; every ball inside
+/// the cushions or pocketed; no two balls overlapping by more than 0.1 mm; kinetic energy
+/// (with rotation) never rising outside a cue strike; a ball pocketed only with an event; all
+/// balls at rest within rest_within_s; the two runs identical.
+StressReport runStress(const StressOptions& options);
+
+}  // namespace nineball
