@@ -2,6 +2,8 @@
 // `nineball bench`; this measures the parts.
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/world.hpp"
@@ -35,6 +37,34 @@ void BM_StepFullRackMoving(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_StepFullRackMoving)->Unit(benchmark::kMicrosecond);
+
+// One ball rolling 2 m among N balls at rest: resting balls sleep in Box2D and are skipped in
+// the contact search, so N should cost next to nothing.
+void BM_RollingAmongRestingBalls(benchmark::State& state) {
+  const int resting = static_cast<int>(state.range(0));
+  std::vector<BallState> balls;
+  BallState cue;
+  cue.id = 0;
+  cue.pos = {-1.0, -0.5};
+  cue.vel = {1.0, 0.0};
+  cue.w = {0.0, 1.0 / 0.028575, 0.0};
+  balls.push_back(cue);
+  for (int i = 0; i < resting; ++i) {
+    BallState b;
+    b.id = i + 1;
+    b.pos = {-1.1 + 0.07 * (i % 30), -0.3 + 0.07 * (i / 30)};
+    balls.push_back(b);
+  }
+  for (auto _ : state) {
+    state.PauseTiming();
+    World w(TableDef{}, PhysicsParams{}, StepParams{});
+    for (const BallState& b : balls) w.addBall(b);
+    state.ResumeTiming();
+    w.runUntilRest();
+    benchmark::DoNotOptimize(w.time());
+  }
+}
+BENCHMARK(BM_RollingAmongRestingBalls)->Arg(0)->Arg(9)->Arg(99)->Unit(benchmark::kMillisecond);
 
 void BM_ContactFraction(benchmark::State& state) {
   const Vec2 rel{0.1, 0.02}, move{-0.2, 0.0};

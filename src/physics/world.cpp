@@ -50,6 +50,7 @@ struct World::Impl {
     Vec2 start, move, vel;
     double from = 0.0;
     bool changed = false;
+    bool active = false;  // moving, so it can meet another ball in this piece
   };
 
   TableGeometry table;
@@ -60,6 +61,7 @@ struct World::Impl {
   b2Body* table_body = nullptr;
   ContactRecorder recorder;
   std::vector<Ball> balls;
+  std::vector<std::size_t> active;  // scratch of firstContact
   std::vector<Event> events;
   double time = 0.0;
   long steps = 0;
@@ -247,18 +249,23 @@ struct World::Impl {
   }
 
   // The first pair to touch while closing, over the loaded trajectories.
-  std::optional<PairContact> firstContact() const {
+  std::optional<PairContact> firstContact() {
     const double contact = 2.0 * phys.ball_radius;
     std::optional<PairContact> best;
     double best_closing = 0.0;
-    const std::size_t n = balls.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Ball& a = balls[i];
-      if (!a.body) continue;
-      const bool a_still = !sp.baseline && a.vel == Vec2{};
-      for (std::size_t j = i + 1; j < n; ++j) {
+    // Only pairs with a moving ball can meet: resting balls cost nothing here.
+    active.clear();
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      Ball& x = balls[i];
+      x.active = x.body && (sp.baseline || x.vel != Vec2{});
+      if (x.active) active.push_back(i);
+    }
+    for (std::size_t m : active) {
+      for (std::size_t o = 0; o < balls.size(); ++o) {
+        if (o == m || !balls[o].body || (balls[o].active && o < m)) continue;
+        const std::size_t i = std::min(m, o), j = std::max(m, o);
+        const Ball& a = balls[i];
         const Ball& b = balls[j];
-        if (!b.body || (a_still && b.vel == Vec2{})) continue;
         const double from = std::max(a.from, b.from);
         const Vec2 rel = (b.start - a.start) + (b.move - a.move) * from;
         const Vec2 rel_move = (b.move - a.move) * (1.0 - from);
@@ -268,10 +275,15 @@ struct World::Impl {
             physics::contactFraction(b.start - a.start, b.move - a.move, contact, from, closing);
         if (!s) continue;
         // Contacts at the same instant (a frozen cluster) go hardest first, so the order
-        // follows the physics rather than the ball numbering.
+        // follows the physics rather than the ball numbering; the numbering only breaks ties.
         const double closing_speed = -dot(b.vel - a.vel, normalized(rel));
-        if (!best || *s < best->s - kSameInstant ||
-            (*s <= best->s + kSameInstant && closing_speed > best_closing)) {
+        const bool earlier = !best || *s < best->s - kSameInstant;
+        const bool same_instant = best && !earlier && *s <= best->s + kSameInstant;
+        const bool harder =
+            same_instant && (closing_speed > best_closing ||
+                             (closing_speed == best_closing &&
+                              std::make_pair(i, j) < std::make_pair(best->i, best->j)));
+        if (earlier || harder) {
           best = PairContact{*s, i, j};
           best_closing = closing_speed;
         }
