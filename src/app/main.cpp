@@ -5,16 +5,17 @@
 #include "app/bench_command.hpp"
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
+#include "app/game_command.hpp"
 #include "app/match_command.hpp"
 #include "app/sim_command.hpp"
+#include "app/stress_command.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
 namespace {
 
 int run(int argc, char** argv) {
-  CLI::App app{"nineball: a nine-ball pool simulator. Without a command, runs the standard break.",
-               "nineball"};
+  CLI::App app{"nineball: nine-ball pool. Without a command, opens the game window.", "nineball"};
   // Global options may follow the subcommand too.
   app.fallthrough();
   app.require_subcommand(0, 1);
@@ -30,8 +31,12 @@ int run(int argc, char** argv) {
   CLI::App* match = addMatchCommand(app, match_options);
   BenchOptions bench_options;
   CLI::App* bench = addBenchCommand(app, bench_options);
+  StressCommandOptions stress_options;
+  CLI::App* stress = addStressCommand(app, stress_options);
   BreakOptions break_options;
   CLI::App* brk = addBreakCommand(app, break_options);
+  GameOptions game_options;
+  const std::vector<CLI::Option*> game_flags = addGameOptions(app, game_options);
 
   try {
     app.parse(argc, argv);
@@ -46,12 +51,22 @@ int run(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  if (app.get_subcommands().size() > 0) {
+    for (const CLI::Option* o : game_flags) {
+      if (o->count() > 0) {
+        std::cerr << "nineball: " << o->get_name() << " is an option of the game window, not of "
+                  << app.get_subcommands().front()->get_name()
+                  << "\nRun with --help for more information.\n";
+        return kExitBadInput;
+      }
+    }
+  }
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
   if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);
+  if (stress->parsed()) return runStressCommand(stress_options, std::cout);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
-  // Headless until the game window exists.
-  return runBreak(BreakOptions{}, std::cout, std::cerr);
+  return runGameCommand(game_options, std::cin, std::cerr);
 }
 
 }  // namespace

@@ -171,7 +171,7 @@ TEST(SimCli, AcceptsALogLevelBeforeOrAfterTheCommand) {
 }
 
 TEST(SimCli, BreakPrintsASummaryOrJson) {
-  const Outcome summary = run("");
+  const Outcome summary = run("break");
   ASSERT_EQ(summary.status, 0) << summary.err;
   EXPECT_NE(summary.out.find("Pocketed"), std::string::npos) << summary.out;
   EXPECT_NE(summary.out.find("Cue ball"), std::string::npos) << summary.out;
