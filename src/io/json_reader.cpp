@@ -1,5 +1,6 @@
 #include "io/json_reader.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -122,6 +123,10 @@ class PathTrackingBuilder {
 }  // namespace
 
 json readJson(std::string_view text) {
+  const bool blank = std::all_of(text.begin(), text.end(), [](char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+  });
+  if (blank) throw ParseError{"invalid JSON: empty input"};
   PathTrackingBuilder builder;
   if (!json::sax_parse(text.begin(), text.end(), &builder)) throw builder.takeError();
   return builder.takeRoot();

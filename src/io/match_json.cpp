@@ -91,10 +91,6 @@ ordered_json winnerJson(const std::optional<rules::Player>& w) {
 }  // namespace
 
 MatchScriptResult parseMatchScript(std::string_view text) {
-  const bool blank = std::all_of(text.begin(), text.end(), [](char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-  });
-  if (blank) return ParseError{"invalid JSON: empty input"};
   try {
     return parseDocument(readJson(text));
   } catch (const ParseError& e) {

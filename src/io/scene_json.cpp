@@ -290,10 +290,6 @@ Scene parseDocument(const json& doc) {
 }  // namespace
 
 SceneResult parseScene(std::string_view text) {
-  const bool blank = std::all_of(text.begin(), text.end(), [](char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-  });
-  if (blank) return ParseError{"invalid JSON: empty input"};
   try {
     return parseDocument(readJson(text));
   } catch (const ParseError& e) {
