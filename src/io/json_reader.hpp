@@ -8,8 +8,8 @@
 namespace nineball::io {
 
 /// Parses strict JSON (no comments, no trailing text). Throws ParseError for empty input, a
-/// syntax error, a number too large for a double ("balls[0].x: number 1e999 is out of range") or a key given
-/// twice in one object ("balls[1].x: duplicate key"); the last two name the field.
+/// syntax error, a number too large for a double ("balls[0].x: number 1e999 is out of range") or a
+/// key given twice in one object ("balls[1].x: duplicate key"); the last two name the field.
 nlohmann::json readJson(std::string_view text);
 
 }  // namespace nineball::io
