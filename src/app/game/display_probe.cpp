@@ -1,0 +1,18 @@
+#include "app/game/display_probe.hpp"
+
+#include <X11/Xlib.h>
+
+#include <cstdlib>
+
+namespace nineball::app {
+
+DisplayConnection::DisplayConnection() {
+  const char* name = std::getenv("DISPLAY");
+  if (name != nullptr && *name != '\0') display_ = XOpenDisplay(nullptr);
+}
+
+DisplayConnection::~DisplayConnection() {
+  if (display_ != nullptr) XCloseDisplay(static_cast<Display*>(display_));
+}
+
+}  // namespace nineball::app

@@ -1,0 +1,111 @@
+#include "app/game/frame_builder.hpp"
+
+#include "nineball/rules.hpp"
+
+namespace nineball::app {
+namespace {
+
+using render::Overlay;
+
+const std::vector<std::string> kHelpLines = {
+    "Mouse: point where to aim; press, drag back and let go to strike",
+    "  (the further you drag, the harder the shot; right click cancels)",
+    "Left / Right: turn the aim (Shift: finer)    Up / Down: power",
+    "Space: shoot    T / B: top / back spin    C: centre the tip",
+    "Click the cue-ball icon to hit off centre (side spin too)",
+    "Ball in hand: drag the cue ball, or move it with W A S D",
+    "P: declare a push-out when offered; then S: play or P: pass",
+    "R: rematch after a rack    F1: full screen    F12: screenshot",
+    "Rules: hit the lowest ball first; the 9 wins the rack",
+};
+
+void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay) {
+  hud.overlay = overlay;
+  switch (overlay) {
+    case Overlay::Help:
+      hud.overlay_title = "How to play";
+      hud.overlay_lines = kHelpLines;
+      hud.button_right = "Close (H)";
+      break;
+    case Overlay::ConfirmQuit:
+      hud.overlay_title = "Quit nineball?";
+      hud.overlay_lines = {"The rack in play will be lost."};
+      hud.button_left = "Quit (Y)";
+      hud.button_right = "Keep playing (N)";
+      break;
+    case Overlay::PushOutChoice: {
+      const std::string name = session.seatName(session.seatToMove());
+      hud.overlay_title = "Push-out: " + name + " chooses";
+      hud.overlay_lines = {"Play from here, or pass the shot back."};
+      hud.button_left = "Play (S)";
+      hud.button_right = "Pass (P)";
+      break;
+    }
+    case Overlay::GameOver: {
+      const auto winner = session.match().rack().winner();
+      const std::string name = winner ? session.seatName(session.seatOf(*winner)) : "";
+      hud.overlay_title = name + " wins rack " + std::to_string(session.rackNumber()) + "!";
+      hud.overlay_lines = {session.message(), "Racks: " + session.seatName(0) + " " +
+                                                  std::to_string(session.racksWon(0)) + " - " +
+                                                  std::to_string(session.racksWon(1)) + " " +
+                                                  session.seatName(1)};
+      hud.button_left = "Rematch (R)";
+      hud.button_right = "Quit";
+      break;
+    }
+    case Overlay::None:
+      break;
+  }
+}
+
+}  // namespace
+
+Overlay activeOverlay(const GameSession& session, const UiState& ui) {
+  if (ui.confirm_quit) return Overlay::ConfirmQuit;
+  if (ui.help) return Overlay::Help;
+  if (session.phase() == Phase::PushOutChoice) return Overlay::PushOutChoice;
+  if (session.phase() == Phase::GameOver) return Overlay::GameOver;
+  return Overlay::None;
+}
+
+render::Frame buildFrame(const GameSession& session, const UiState& ui) {
+  render::Frame f;
+  f.balls = session.ballsToDraw();
+  f.ball_radius = session.match().world().physics().ball_radius;
+  const bool aiming = session.phase() == Phase::Aiming;
+  if (aiming && ui.drag != Drag::Cue) {
+    f.guide = session.aimGuide();
+    f.cue = render::CuePose{session.heading(), ui.pull, session.tip().x};
+  }
+  if (ui.drag == Drag::Cue && ui.ghost) {
+    f.ghost = ui.ghost;
+    for (BallState& b : f.balls) {
+      if (b.id == kCueBall) b.pocket = PocketId::TopLeft;  // drawn as the ghost instead
+    }
+  }
+
+  render::HudState& hud = f.hud;
+  for (int seat = 0; seat < 2; ++seat) {
+    hud.players[seat].name = session.seatName(seat);
+    hud.players[seat].racks = session.racksWon(seat);
+    hud.players[seat].to_move = session.phase() != Phase::GameOver && session.seatToMove() == seat;
+  }
+  const rules::Rack& rack = session.match().rack();
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    hud.players[session.seatOf(p)].fouls = rack.consecutiveFouls(p);
+  }
+  hud.ball_on = rack.over() ? 0 : rack.ballOn();
+  hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
+  hud.status = session.status();
+  hud.message = session.message();
+  hud.tone = session.tone();
+  hud.power = session.power();
+  hud.speed = session.speed();
+  hud.tip = session.tip();
+  hud.max_tip = session.maxTip();
+  hud.push_out_declared = session.pushOutDeclared();
+  fillDialog(hud, session, activeOverlay(session, ui));
+  return f;
+}
+
+}  // namespace nineball::app

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "app/game/game_session.hpp"
+#include "app/game/ui_state.hpp"
+#include "render/scene_painter.hpp"
+
+namespace nineball::app {
+
+/// The picture of the game now: the balls where they are, the cue and the guide while
+/// aiming, the HUD with its dialog.
+render::Frame buildFrame(const GameSession& session, const UiState& ui);
+
+/// The dialog on screen, if any (the same rule the input uses to route keys and clicks).
+render::Overlay activeOverlay(const GameSession& session, const UiState& ui);
+
+}  // namespace nineball::app

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <SFML/Window/Event.hpp>
+#include <map>
+
+#include "app/game/game_session.hpp"
+#include "app/game/ui_state.hpp"
+#include "render/view_transform.hpp"
+
+namespace nineball::app {
+
+/// What the window itself must do after an input.
+struct WindowRequests {
+  bool quit = false;
+  bool toggle_fullscreen = false;
+  bool screenshot = false;
+};
+
+/// Turns mouse and keyboard into play: the pointer aims, a drag back sets the power and the
+/// release strikes; the paper's keys (arrows, Space, T/B, H) and the rest of the scheme.
+class GameInput {
+ public:
+  GameInput(GameSession& session, UiState& ui) : session_(session), ui_(ui) {}
+
+  /// Handles one window event; `view` maps the pointer to the table.
+  void handle(const sf::Event& event, const render::ViewTransform& view);
+  /// Applies held keys over one frame of `seconds`.
+  void update(double seconds);
+
+  WindowRequests& requests() { return requests_; }
+
+ private:
+  void keyPressed(const sf::Event::KeyEvent& key);
+  void mousePressed(Vec2 px, const render::ViewTransform& view);
+  void mouseMoved(Vec2 px, const render::ViewTransform& view);
+  void mouseReleased();
+  void setTipFromIcon(Vec2 px, const render::ViewTransform& view);
+  void clickButton(bool left);
+  void moveCueBy(Vec2 d);
+  bool dialogOpen() const;
+
+  GameSession& session_;
+  UiState& ui_;
+  WindowRequests requests_;
+  std::map<sf::Keyboard::Key, double> held_;  // key -> seconds held
+  bool shift_ = false;
+};
+
+}  // namespace nineball::app

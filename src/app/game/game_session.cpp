@@ -1,0 +1,309 @@
+#include "app/game/game_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/game/turn_message.hpp"
+#include "game/shot_summary.hpp"
+#include "nineball/log.hpp"
+
+namespace nineball::app {
+namespace {
+
+// Catch-up in one frame, s of play: past this a slow frame slows the game down.
+constexpr double kMaxCatchUp = 0.25;
+// A shot still rolling after this long (s, simulated) is run to rest at once.
+constexpr double kMaxShotTime = 120.0;
+// Search step (m) for a free spot for the cue ball in hand.
+constexpr double kSpotSearchStep = 0.01;
+
+}  // namespace
+
+GameSession::GameSession(const MatchSetup& setup)
+    : setup_(setup),
+      clock_(setup.step.dt(),
+             std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * setup.step.hz)))) {
+  startRack();
+}
+
+int GameSession::seatOf(rules::Player p) const {
+  // Player A breaks; the seats take turns at being A.
+  const int a = rack_ % 2;
+  return p == rules::Player::A ? a : 1 - a;
+}
+
+void GameSession::setSpeed(double mps) {
+  speed_ = std::clamp(mps, kMinSpeed, kMaxSpeed);
+}
+
+void GameSession::setPower(double fraction) {
+  setSpeed(kMinSpeed + std::clamp(fraction, 0.0, 1.0) * (kMaxSpeed - kMinSpeed));
+}
+
+double GameSession::maxTip() const {
+  return std::min(kMaxTip, match_->world().physics().miscue_limit);
+}
+
+void GameSession::setTip(Vec2 tip) {
+  const double len = length(tip);
+  // A hair inside the limit: past it the physics calls the shot a miscue.
+  const double limit = maxTip() * (1.0 - 1e-12);
+  tip_ = len > limit ? tip * (limit / len) : tip;
+}
+
+bool GameSession::pushOutAvailable() const {
+  return phase_ == Phase::Aiming && match_->rack().pushOutAvailable();
+}
+
+void GameSession::togglePushOut() {
+  if (!pushOutAvailable()) return;
+  push_out_ = !push_out_;
+  say(push_out_ ? "Push-out declared: no foul for the wrong ball or no cushion; the opponent "
+                  "then chooses who shoots."
+                : "Push-out withdrawn.");
+}
+
+bool GameSession::cueInHand() const {
+  return phase_ == Phase::Aiming && match_->cueInHand();
+}
+
+Vec2 GameSession::cuePosition() const {
+  if (cueInHand() && cue_spot_) return *cue_spot_;
+  for (const BallState& b : current_) {
+    if (b.id == kCueBall) return b.pos;
+  }
+  return {};
+}
+
+std::optional<std::string> GameSession::placementProblem(Vec2 pos) const {
+  if (!cueInHand()) return std::string("the cue ball is not in hand");
+  return match_->cuePlacementProblem(pos);
+}
+
+bool GameSession::placeCue(Vec2 pos) {
+  if (auto problem = placementProblem(pos)) {
+    say("The cue ball cannot go there: " + *problem + ".", render::Tone::Warning);
+    return false;
+  }
+  cue_spot_ = pos;
+  return true;
+}
+
+AimGuide GameSession::aimGuide() const {
+  const World& w = match_->world();
+  return computeAimGuide(w.table(), w.physics().ball_radius, current_, cuePosition(), heading_);
+}
+
+void GameSession::startRack() {
+  MatchSetup s = setup_;
+  if (rack_ > 0) {
+    s.balls.reset();  // a rematch racks, whatever the first layout was
+    s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
+  }
+  match_ = std::make_unique<Match>(s);
+  speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
+  message_.clear();
+  tone_ = render::Tone::Info;
+  startTurn();
+  logger("game")->info("rack {}: {} breaks, rules {}", rackNumber(), seatName(seatToMove()),
+                       rules::ruleSetName(s.rules));
+}
+
+void GameSession::startTurn() {
+  current_ = previous_ = match_->balls();
+  phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
+  push_out_ = false;
+  tip_ = {};
+  cue_spot_.reset();
+  if (match_->cueInHand()) {
+    std::optional<Vec2> on_table;
+    for (const BallState& b : current_) {
+      if (b.id == kCueBall && !b.pocket) on_table = b.pos;
+    }
+    cue_spot_ = on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot();
+  }
+  aimAtBallOn();
+}
+
+Vec2 GameSession::freeCueSpot() const {
+  const TableGeometry& t = match_->world().table();
+  const Vec2 head{t.headStringX(), 0.0};
+  if (!match_->cuePlacementProblem(head)) return head;
+  // Rings of growing radius round the head spot, then anywhere it fits.
+  for (double radius = kSpotSearchStep; radius < t.def.length; radius += kSpotSearchStep) {
+    const int n = std::max(8, static_cast<int>(2.0 * kPi * radius / kSpotSearchStep));
+    for (int i = 0; i < n; ++i) {
+      const Vec2 p = head + fromAngle(kPi + 2.0 * kPi * i / n) * radius;
+      if (!match_->cuePlacementProblem(p)) return p;
+    }
+  }
+  return head;
+}
+
+void GameSession::aimAtBallOn() {
+  const int on = match_->rack().ballOn();
+  const Vec2 cue = cuePosition();
+  for (const BallState& b : current_) {
+    if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
+      heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
+    }
+  }
+}
+
+bool GameSession::shoot() {
+  if (phase_ != Phase::Aiming) return false;
+  TurnInput turn;
+  turn.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
+  turn.shot.heading_rad = heading_;
+  turn.shot.speed = speed_;
+  turn.shot.tip = tip_;
+  if (match_->cueInHand()) turn.cue = cue_spot_;
+  ball_on_at_shot_ = match_->rack().ballOn();
+  breaking_ = match_->rack().isBreak();
+  try {
+    match_->beginShot(turn);
+  } catch (const IllegalAction& e) {
+    say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
+    return false;
+  }
+  logger("game")->info("{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}]{}",
+                       seatName(seatToMove()), radToDeg(heading_), speed_, tip_.x, tip_.y,
+                       push_out_ ? ", push-out" : "");
+  phase_ = Phase::Rolling;
+  clock_.reset();
+  events_seen_ = 0;
+  shot_start_ = match_->world().time();
+  current_ = previous_ = match_->balls();
+  message_.clear();
+  return true;
+}
+
+std::vector<audio::Impact> GameSession::advance(double seconds) {
+  std::vector<audio::Impact> impacts;
+  if (phase_ != Phase::Rolling) return impacts;
+  const int steps = clock_.advance(seconds);
+  World& world = match_->world();
+  for (int i = 0; i < steps; ++i) {
+    previous_ = current_;
+    world.step();
+    current_ = match_->balls();
+    const auto& events = world.events();
+    if (events.size() > events_seen_) {
+      const std::vector<Event> fresh(events.begin() + static_cast<long>(events_seen_),
+                                     events.end());
+      const auto more = audio::impactsFromEvents(fresh, previous_);
+      impacts.insert(impacts.end(), more.begin(), more.end());
+      events_seen_ = events.size();
+    }
+    if (world.atRest() || shotTime() > kMaxShotTime) {
+      finishShot();
+      break;
+    }
+  }
+  return impacts;
+}
+
+double GameSession::shotTime() const {
+  return match_->world().time() - shot_start_;
+}
+
+void GameSession::finishShot() {
+  const TurnRecord record = match_->finishShot();
+  afterTurn(record, ball_on_at_shot_);
+}
+
+void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
+  if (breaking_) speed_ = kShotSpeed;
+  breaking_ = false;
+  const auto& events = match_->world().events();
+  const rules::ShotSummary summary = game::summarize(events);
+  TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
+                               seatName(seatOf(record.verdict.next)));
+  const bool miscue = record.kind != TurnInput::Kind::Decision &&
+                      std::any_of(events.begin(), events.end(),
+                                  [](const Event& e) { return e.type == EventType::Miscue; });
+  if (miscue) m.text = "Miscue! " + m.text;
+  say(m.text, m.tone);
+  logger("game")->info("turn: {}", m.text);
+  if (const auto winner = match_->rack().winner()) {
+    ++racks_won_[seatOf(*winner)];
+    current_ = previous_ = match_->balls();
+    phase_ = Phase::GameOver;
+    return;
+  }
+  startTurn();
+}
+
+void GameSession::decide(bool shoot_now) {
+  if (phase_ != Phase::PushOutChoice) return;
+  TurnInput turn;
+  turn.kind = TurnInput::Kind::Decision;
+  turn.shoot = shoot_now;
+  afterTurn(match_->play(turn), match_->rack().ballOn());
+}
+
+void GameSession::rematch() {
+  ++rack_;
+  startRack();
+}
+
+void GameSession::playTurn(const TurnInput& turn) {
+  const int ball_on = match_->rack().ballOn();
+  breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
+  afterTurn(match_->play(turn), ball_on);
+}
+
+std::vector<BallState> GameSession::ballsToDraw() const {
+  if (phase_ == Phase::Rolling) {
+    std::vector<BallState> out = current_;
+    const double a = clock_.alpha();
+    for (std::size_t i = 0; i < out.size() && i < previous_.size(); ++i) {
+      if (!out[i].pocket) out[i].pos = previous_[i].pos + (out[i].pos - previous_[i].pos) * a;
+    }
+    return out;
+  }
+  std::vector<BallState> out = current_;
+  if (cueInHand() && cue_spot_) {
+    for (BallState& b : out) {
+      if (b.id == kCueBall) {
+        b.pos = *cue_spot_;
+        b.pocket.reset();
+      }
+    }
+  }
+  return out;
+}
+
+std::string GameSession::status() const {
+  const std::string name = seatName(seatToMove());
+  switch (phase_) {
+    case Phase::Rolling:
+      return name + " shoots...";
+    case Phase::PushOutChoice:
+      return name + ": play from here (S) or pass it back (P)?";
+    case Phase::GameOver: {
+      const auto winner = match_->rack().winner();
+      return (winner ? seatName(seatOf(*winner)) : name) + " wins rack " +
+             std::to_string(rackNumber()) + ". R: rematch";
+    }
+    case Phase::Aiming:
+      break;
+  }
+  std::string s = name + " to ";
+  if (match_->rack().isBreak()) {
+    s += "break (cue ball behind the head string)";
+  } else if (cueInHand()) {
+    s += "shoot: ball in hand, drag the cue ball";
+  } else {
+    s += "shoot";
+  }
+  if (pushOutAvailable()) s += push_out_ ? " - PUSH-OUT" : " - may push out (P)";
+  return s;
+}
+
+void GameSession::say(const std::string& text, render::Tone tone) {
+  message_ = text;
+  tone_ = tone;
+}
+
+}  // namespace nineball::app

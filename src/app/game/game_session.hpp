@@ -1,0 +1,132 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/game/fixed_step_clock.hpp"
+#include "audio/impact.hpp"
+#include "nineball/aim_guide.hpp"
+#include "nineball/match.hpp"
+#include "render/hud_state.hpp"
+
+namespace nineball::app {
+
+/// What the players are doing now.
+enum class Phase {
+  Aiming,         ///< the player to move aims (and places the cue ball when in hand)
+  Rolling,        ///< a shot is on: the physics runs
+  PushOutChoice,  ///< after a push-out the opponent shoots or passes
+  GameOver,       ///< the rack is won; a rematch racks again
+};
+
+/// Two players at one table, rack after rack: the match, whose turn it is, the aim, power
+/// and spin being set, the cue ball in hand, the physics stepped in fixed steps for the
+/// window, and the messages about each turn. No SFML: the window drives it.
+class GameSession {
+ public:
+  static constexpr double kMaxSpeed = 12.0;    ///< m/s at full power (a hard break)
+  static constexpr double kMinSpeed = 0.1;     ///< m/s at the bottom of the gauge
+  static constexpr double kMaxTip = 0.5;       ///< the tip's useful range, fraction of R
+  static constexpr double kBreakSpeed = 10.0;  ///< m/s the break starts with
+  static constexpr double kShotSpeed = 3.0;    ///< m/s the first shot after the break starts with
+
+  /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
+  explicit GameSession(const MatchSetup& setup);
+
+  const Match& match() const { return *match_; }
+  Phase phase() const { return phase_; }
+
+  /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
+  const std::string& seatName(int seat) const { return names_[seat]; }
+  int seatOf(rules::Player p) const;
+  int seatToMove() const { return seatOf(match_->rack().shooter()); }
+  int racksWon(int seat) const { return racks_won_[seat]; }
+  int rackNumber() const { return rack_ + 1; }
+
+  double heading() const { return heading_; }
+  void setHeading(double radians) { heading_ = radians; }
+  double speed() const { return speed_; }
+  void setSpeed(double mps);
+  /// The gauge, 0 to 1, linear in speed from kMinSpeed to kMaxSpeed.
+  double power() const { return (speed_ - kMinSpeed) / (kMaxSpeed - kMinSpeed); }
+  void setPower(double fraction);
+  Vec2 tip() const { return tip_; }
+  /// The largest tip offset allowed: the useful range, within the physics' miscue limit.
+  double maxTip() const;
+  /// Sets the tip, pulled in to the useful range.
+  void setTip(Vec2 tip);
+
+  bool pushOutAvailable() const;
+  bool pushOutDeclared() const { return push_out_; }
+  void togglePushOut();
+
+  /// True while the player to move may move the cue ball.
+  bool cueInHand() const;
+  /// Where the cue ball is, or will be shot from when in hand.
+  Vec2 cuePosition() const;
+  /// Why the cue ball may not go there now, or nothing.
+  std::optional<std::string> placementProblem(Vec2 pos) const;
+  /// Moves the cue ball in hand; false (and a message saying why) for an illegal spot.
+  bool placeCue(Vec2 pos);
+
+  /// The aim guide from the cue ball along the current heading.
+  AimGuide aimGuide() const;
+
+  /// Strikes with the current aim, power and spin; false (and a message) when refused.
+  bool shoot();
+  /// After the opponent's push-out: shoot from there (true) or pass the shot back.
+  void decide(bool shoot_now);
+  /// Racks again after a game over; the other player breaks.
+  void rematch();
+  /// Plays a whole turn at once, as `nineball match` does (a script before the window opens).
+  /// Throws IllegalAction.
+  void playTurn(const TurnInput& turn);
+
+  /// Runs the physics for one frame's time in fixed steps; returns the sounds it made.
+  std::vector<audio::Impact> advance(double seconds);
+  /// The balls where the frame should draw them: between the last two steps while rolling,
+  /// the cue ball at its spot in hand otherwise.
+  std::vector<BallState> ballsToDraw() const;
+  /// Simulated seconds since the shot began.
+  double shotTime() const;
+
+  /// What the player to move should do now.
+  std::string status() const;
+  const std::string& message() const { return message_; }
+  render::Tone tone() const { return tone_; }
+  /// Replaces the message line (a refusal, a saved screenshot...).
+  void say(const std::string& text, render::Tone tone = render::Tone::Info);
+
+ private:
+  void startRack();
+  void startTurn();
+  void finishShot();
+  void afterTurn(const TurnRecord& record, int ball_on_before);
+  Vec2 freeCueSpot() const;
+  void aimAtBallOn();
+
+  MatchSetup setup_;
+  std::unique_ptr<Match> match_;
+  Phase phase_ = Phase::Aiming;
+  std::string names_[2] = {"Player 1", "Player 2"};
+  int racks_won_[2] = {0, 0};
+  int rack_ = 0;
+  double heading_ = 0.0;
+  double speed_ = kShotSpeed;
+  Vec2 tip_;
+  bool push_out_ = false;
+  std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
+  int ball_on_at_shot_ = 0;
+  bool breaking_ = false;  // the shot rolling is the break
+  FixedStepClock clock_;
+  std::vector<BallState> previous_;  // the state one step before current_
+  std::vector<BallState> current_;
+  std::size_t events_seen_ = 0;
+  double shot_start_ = 0.0;
+  std::string message_;
+  render::Tone tone_ = render::Tone::Info;
+};
+
+}  // namespace nineball::app

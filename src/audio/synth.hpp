@@ -1,0 +1,18 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace nineball::audio {
+
+/// Sample rate of the synthesized sounds (mono, 16-bit).
+constexpr unsigned kSampleRate = 44100;
+
+/// Two phenolic balls meeting: a short bright click.
+std::vector<std::int16_t> synthClick();
+/// A ball into a rubber cushion: a dull low thud.
+std::vector<std::int16_t> synthThud();
+/// A ball dropping into a pocket: a knock on the jaw, a rattle, a low roll away.
+std::vector<std::int16_t> synthPocketDrop();
+
+}  // namespace nineball::audio

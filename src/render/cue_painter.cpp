@@ -1,0 +1,102 @@
+#include "render/cue_painter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/cue_stick_shape.hpp"
+
+namespace nineball::render {
+namespace {
+
+struct Section {
+  double to;  // m from the tip where this section ends
+  Rgb colour;
+};
+
+// Tip leather (chalked blue), ferrule, maple shaft, joint, dark butt with a wrap, bumper.
+constexpr Section kSections[] = {
+    {0.010, {58, 104, 190}}, {0.035, {242, 238, 226}}, {0.760, {226, 196, 142}},
+    {0.775, {40, 40, 44}},   {1.050, {118, 58, 30}},   {1.300, {30, 30, 34}},
+    {1.450, {118, 58, 30}},  {1.470, {18, 18, 18}},
+};
+
+constexpr double kGuideLength = 0.45;  // m of the object ball's line on a full hit
+
+}  // namespace
+
+void CuePainter::drawStick(sf::RenderTarget& target, const ViewTransform& view, Vec2 cue,
+                           double heading_rad, double r, double pull) {
+  batch_.clear();
+  const Vec2 dir = fromAngle(heading_rad);
+  const Vec2 n = perp(dir);
+  const Vec2 tip = CueStickShape::tip(cue, dir, r, pull);
+  auto half = [](double s) {
+    return (CueStickShape::kTipWidth +
+            (CueStickShape::kButtWidth - CueStickShape::kTipWidth) * s / CueStickShape::kLength) /
+           2.0;
+  };
+  auto corner = [&](double s, double side) {
+    return view.toPixels(tip - dir * s + n * (side * half(s)));
+  };
+  // Shadow first, offset down and right as the balls' are.
+  const Vec2 shadow{view.px(0.006), view.px(0.009)};
+  const auto outline = CueStickShape::outline(cue, dir, r, pull);
+  batch_.quad(view.toPixels(outline[0]) + shadow, view.toPixels(outline[1]) + shadow,
+              view.toPixels(outline[2]) + shadow, view.toPixels(outline[3]) + shadow,
+              sf::Color(0, 0, 0, 70));
+  double from = 0.0;
+  for (const Section& s : kSections) {
+    batch_.quad(corner(from, 1.0), corner(from, -1.0), corner(s.to, -1.0), corner(s.to, 1.0),
+                toSf(s.colour));
+    from = s.to;
+  }
+  // A light streak along the shaft makes it round.
+  batch_.line(view.toPixels(tip - dir * 0.04 + n * (half(0.04) * 0.4)),
+              view.toPixels(tip - dir * 0.75 + n * (half(0.75) * 0.4)),
+              std::max(1.0, view.px(0.003)), sf::Color(255, 250, 235, 90));
+  batch_.draw(target);
+}
+
+void CuePainter::drawGuide(sf::RenderTarget& target, const ViewTransform& view,
+                           const AimGuide& guide, double r) {
+  batch_.clear();
+  const double w = std::max(1.5, view.px(0.004));
+  const sf::Color path(255, 255, 255, 150);
+  batch_.line(view.toPixels(guide.start), view.toPixels(guide.end), w, path);
+  const Vec2 end = view.toPixels(guide.end);
+  switch (guide.target) {
+    case AimTarget::Ball: {
+      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 190));
+      const Vec2 dir = normalized(guide.end - guide.start);
+      // A stun hit shares the speed: cos of the cut to the object ball, sin to the cue ball.
+      const double along = std::clamp(dot(dir, guide.object_dir), 0.0, 1.0);
+      const Vec2 object_centre = guide.end + guide.object_dir * (2.0 * r);
+      const double object_len =
+          std::min(r + kGuideLength * along, length(guide.object_end - object_centre));
+      batch_.line(view.toPixels(object_centre),
+                  view.toPixels(object_centre + guide.object_dir * object_len), w,
+                  sf::Color(255, 226, 90, 220));
+      const double across = std::sqrt(std::max(0.0, 1.0 - along * along));
+      if (length(guide.cue_dir) > 0.0) {
+        const double cue_len = std::min(kGuideLength * across, length(guide.cue_end - guide.end));
+        batch_.line(end, view.toPixels(guide.end + guide.cue_dir * cue_len), w,
+                    sf::Color(150, 210, 255, 200));
+      }
+      break;
+    }
+    case AimTarget::Cushion: {
+      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 110));
+      const Vec2 dir = normalized(guide.end - guide.start);
+      const Vec2 n = guide.cushion_normal;
+      const Vec2 bounce = dir - n * (2.0 * dot(dir, n));
+      batch_.line(end, view.toPixels(guide.end + bounce * 0.2), w, sf::Color(255, 255, 255, 70));
+      break;
+    }
+    case AimTarget::Pocket:
+      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 120, 100, 200));
+      break;
+  }
+  batch_.draw(target);
+}
+
+}  // namespace nineball::render

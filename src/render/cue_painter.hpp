@@ -1,0 +1,26 @@
+#pragma once
+
+#include <SFML/Graphics/RenderTarget.hpp>
+
+#include "nineball/aim_guide.hpp"
+#include "render/triangle_batch.hpp"
+#include "render/view_transform.hpp"
+
+namespace nineball::render {
+
+/// The cue stick behind the cue ball and the aim guide in front of it.
+class CuePainter {
+ public:
+  /// The stick aimed along `heading_rad` at the cue ball (radius r), pulled back `pull` m.
+  void drawStick(sf::RenderTarget& target, const ViewTransform& view, Vec2 cue, double heading_rad,
+                 double r, double pull);
+  /// The path to the first ball or cushion, the ghost ball, the object ball's line and the
+  /// cue ball's tangent line.
+  void drawGuide(sf::RenderTarget& target, const ViewTransform& view, const AimGuide& guide,
+                 double r);
+
+ private:
+  TriangleBatch batch_;
+};
+
+}  // namespace nineball::render

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "render/hud_state.hpp"
+#include "render/view_transform.hpp"
+
+namespace nineball::render {
+
+/// Where the HUD's parts sit in the window, so that the painter draws them and the input
+/// finds them in the same place. No SFML.
+struct HudLayout {
+  PixelRect power_bar;  ///< the power gauge in the bottom band
+  PixelRect message;    ///< the message lines between the gauge and the spin icon
+  Vec2 spin_centre;     ///< the cue-ball icon that sets the tip (px)
+  double spin_radius = 0.0;
+  PixelRect panel;         ///< a dialog over the table (help, push-out choice, game over)
+  PixelRect button_left;   ///< the dialog's first button
+  PixelRect button_right;  ///< the dialog's second button
+  double text_px = 12.0;   ///< the HUD's character size
+
+  /// The layout for a view (its size and scale) and the dialog shown. The push-out choice is
+  /// a strip near the top cushion that leaves the balls in sight; help is wide.
+  static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None) {
+    const bool compact = overlay == Overlay::PushOutChoice;
+    const bool wide = overlay == Overlay::Help;
+    HudLayout h;
+    const double s = view.scale();
+    const PixelRect band = view.bottomBand();
+    const double margin = 0.03 * s;
+    h.text_px = std::max(10.0, 0.048 * s);
+    h.power_bar = {band.left + margin, band.top + band.height * 0.36, 0.5 * s, 0.04 * s};
+    h.spin_radius = 0.07 * s;
+    h.spin_centre = {band.left + band.width - margin - h.spin_radius, band.top + band.height / 2.0};
+    const double msg_left = h.power_bar.left + h.power_bar.width + 2.0 * margin;
+    const double msg_right = h.spin_centre.x - h.spin_radius - 0.36 * s;  // spin labels
+    h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left, band.height - 0.02 * s};
+    const Vec2 c = view.toPixels({0.0, 0.0});
+    const double pw = (wide ? 2.0 : 1.3) * s;
+    const double ph = (compact ? 0.36 : wide ? 0.95 : 0.6) * s;
+    const double top =
+        compact ? view.toPixels({0.0, view.table().width / 2.0 - 0.04}).y : c.y - ph / 2.0;
+    h.panel = {c.x - pw / 2.0, top, pw, ph};
+    const double bw = 0.5 * s, bh = 0.085 * s, gap = 0.08 * s;
+    const double by = h.panel.top + ph - bh - 0.04 * s;
+    h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
+    h.button_right = {c.x + gap / 2.0, by, bw, bh};
+    return h;
+  }
+};
+
+}  // namespace nineball::render

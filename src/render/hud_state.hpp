@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "nineball/vec2.hpp"
+
+namespace nineball::render {
+
+/// One player's corner of the HUD.
+struct PlayerPanel {
+  std::string name;
+  int racks = 0;         ///< racks won
+  int fouls = 0;         ///< fouls in a row (three lose the rack)
+  bool to_move = false;  ///< it is this player's turn
+};
+
+/// How a message reads: plain, a foul, a win, a refusal.
+enum class Tone { Info, Foul, Win, Warning };
+
+/// A dialog over the table.
+enum class Overlay { None, Help, ConfirmQuit, PushOutChoice, GameOver };
+
+/// Everything the HUD shows, filled by the game each frame. No SFML.
+struct HudState {
+  PlayerPanel players[2];
+  int ball_on = 0;      ///< 0 when none is left
+  std::string rules;    ///< "WPA rules", "Paper rules"
+  std::string status;   ///< what the player to move does now
+  std::string message;  ///< what the last shot gave
+  Tone tone = Tone::Info;
+  double power = 0.0;    ///< 0..1 of the gauge
+  double speed = 0.0;    ///< m/s the cue ball will get
+  Vec2 tip;              ///< [side, height] as fractions of R
+  double max_tip = 0.5;  ///< the tip's useful range
+  bool push_out_declared = false;
+  Overlay overlay = Overlay::None;
+  std::string overlay_title;
+  std::vector<std::string> overlay_lines;
+  std::string button_left;   ///< empty: no button
+  std::string button_right;  ///< empty: no button
+};
+
+}  // namespace nineball::render

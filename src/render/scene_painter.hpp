@@ -1,0 +1,71 @@
+#pragma once
+
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/RenderTexture.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nineball/aim_guide.hpp"
+#include "nineball/ball.hpp"
+#include "nineball/table.hpp"
+#include "render/ball_painter.hpp"
+#include "render/cue_painter.hpp"
+#include "render/fonts.hpp"
+#include "render/hud_painter.hpp"
+#include "render/hud_state.hpp"
+#include "render/table_painter.hpp"
+#include "render/view_transform.hpp"
+
+namespace nineball::render {
+
+/// The cue stick's pose.
+struct CuePose {
+  double heading_rad = 0.0;
+  double pull = 0.0;  ///< m pulled back from the ball
+  double side = 0.0;  ///< the tip's side offset, fraction of R (right of the aim is positive)
+};
+
+/// The cue ball being moved by hand, wherever the pointer is.
+struct CueGhost {
+  Vec2 pos;
+  bool legal = true;
+  std::string problem;  ///< why not, shown beside it
+};
+
+/// One picture of the game: what the window shows at one instant.
+struct Frame {
+  std::vector<BallState> balls;  ///< where to draw each ball (pocketed ones are skipped)
+  double ball_radius = 0.028575;
+  std::optional<AimGuide> guide;
+  std::optional<CuePose> cue;
+  std::optional<CueGhost> ghost;
+  HudState hud;
+};
+
+/// Draws frames of one table at one window size.
+class ScenePainter {
+ public:
+  ScenePainter(const TableGeometry& table, const Fonts& fonts);
+
+  /// Call when the window's size changes.
+  void resize(double width_px, double height_px);
+  const ViewTransform& view() const { return view_; }
+
+  void draw(sf::RenderTarget& target, const Frame& frame);
+
+ private:
+  TableGeometry table_;
+  const Fonts& fonts_;
+  ViewTransform view_;
+  TablePainter table_painter_;
+  // The background and the table drawn once per size: the software renderer is bound by
+  // filled pixels, so each frame starts from one opaque copy instead of layers of shapes.
+  sf::RenderTexture table_picture_;
+  bool have_picture_ = false;
+  BallPainter ball_painter_;
+  CuePainter cue_painter_;
+  HudPainter hud_painter_;
+};
+
+}  // namespace nineball::render

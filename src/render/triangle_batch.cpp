@@ -1,0 +1,84 @@
+#include "render/triangle_batch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nineball::render {
+
+int circleSegments(double radius) {
+  return std::clamp(static_cast<int>(std::ceil(radius * 1.2)), 12, 96);
+}
+
+void TriangleBatch::triangle(Vec2 a, Vec2 b, Vec2 c, sf::Color colour) {
+  vertices_.emplace_back(toSf(a), colour);
+  vertices_.emplace_back(toSf(b), colour);
+  vertices_.emplace_back(toSf(c), colour);
+}
+
+void TriangleBatch::circle(Vec2 centre, double radius, sf::Color colour, int segments) {
+  const int n = segments > 0 ? segments : circleSegments(radius);
+  Vec2 prev = centre + Vec2{radius, 0.0};
+  for (int i = 1; i <= n; ++i) {
+    const Vec2 next = centre + fromAngle(2.0 * kPi * i / n) * radius;
+    triangle(centre, prev, next, colour);
+    prev = next;
+  }
+}
+
+void TriangleBatch::ring(Vec2 centre, double inner, double outer, sf::Color colour, int segments) {
+  const int n = segments > 0 ? segments : circleSegments(outer);
+  for (int i = 0; i < n; ++i) {
+    const Vec2 u0 = fromAngle(2.0 * kPi * i / n), u1 = fromAngle(2.0 * kPi * (i + 1) / n);
+    quad(centre + u0 * inner, centre + u0 * outer, centre + u1 * outer, centre + u1 * inner,
+         colour);
+  }
+}
+
+void TriangleBatch::convex(const std::vector<Vec2>& points, sf::Color colour) {
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    triangle(points[0], points[i], points[i + 1], colour);
+  }
+}
+
+void TriangleBatch::fan(Vec2 centre, const std::vector<Vec2>& points, sf::Color colour) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    triangle(centre, points[i], points[(i + 1) % points.size()], colour);
+  }
+}
+
+void TriangleBatch::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, sf::Color colour) {
+  triangle(a, b, c, colour);
+  triangle(a, c, d, colour);
+}
+
+void TriangleBatch::line(Vec2 a, Vec2 b, double width, sf::Color colour) {
+  const Vec2 n = perp(normalized(b - a)) * (width / 2.0);
+  quad(a + n, b + n, b - n, a - n, colour);
+}
+
+void TriangleBatch::roundedRect(double left, double top, double width, double height, double radius,
+                                sf::Color colour) {
+  radius = std::min({radius, width / 2.0, height / 2.0});
+  std::vector<Vec2> outline;
+  const Vec2 corners[4] = {{left + width - radius, top + radius},
+                           {left + width - radius, top + height - radius},
+                           {left + radius, top + height - radius},
+                           {left + radius, top + radius}};
+  constexpr int kCornerSegments = 6;
+  for (int c = 0; c < 4; ++c) {
+    for (int i = 0; i <= kCornerSegments; ++i) {
+      // Pixel y points down: corners go right-top, right-bottom, left-bottom, left-top.
+      const double a = -kPi / 2.0 + kPi / 2.0 * (c + static_cast<double>(i) / kCornerSegments);
+      outline.push_back(corners[c] + fromAngle(a) * radius);
+    }
+  }
+  convex(outline, colour);
+}
+
+void TriangleBatch::draw(sf::RenderTarget& target) const {
+  if (!vertices_.empty()) {
+    target.draw(vertices_.data(), vertices_.size(), sf::Triangles);
+  }
+}
+
+}  // namespace nineball::render
