@@ -2,11 +2,13 @@
 #include <exception>
 #include <iostream>
 
+#include "app/ai_bench_command.hpp"
 #include "app/bench_command.hpp"
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/game_command.hpp"
 #include "app/match_command.hpp"
+#include "app/plan_command.hpp"
 #include "app/sim_command.hpp"
 #include "app/stress_command.hpp"
 #include "nineball/log.hpp"
@@ -29,6 +31,10 @@ int run(int argc, char** argv) {
   CLI::App* sim = addSimCommand(app, sim_options);
   MatchOptions match_options;
   CLI::App* match = addMatchCommand(app, match_options);
+  PlanOptions plan_options;
+  CLI::App* plan = addPlanCommand(app, plan_options);
+  AiBenchOptions ai_bench_options;
+  CLI::App* ai_bench = addAiBenchCommand(app, ai_bench_options);
   BenchOptions bench_options;
   CLI::App* bench = addBenchCommand(app, bench_options);
   StressCommandOptions stress_options;
@@ -63,6 +69,8 @@ int run(int argc, char** argv) {
   }
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
+  if (plan->parsed()) return runPlan(plan_options, std::cin, std::cout, std::cerr);
+  if (ai_bench->parsed()) return runAiBench(ai_bench_options, std::cout, std::cerr);
   if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);
   if (stress->parsed()) return runStressCommand(stress_options, std::cout);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);

@@ -1,14 +1,32 @@
 #include "app/match_command.hpp"
 
+#include <array>
 #include <istream>
+#include <memory>
 #include <ostream>
 
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 #include "nineball/log.hpp"
+#include "nineball/planner.hpp"
 
 namespace nineball::app {
+namespace {
+
+// However the players play, a rack stops after this many turns.
+constexpr std::size_t kMaxTurns = 500;
+
+int index(rules::Player p) {
+  return p == rules::Player::A ? 0 : 1;
+}
+
+// Each computer player draws its cueing errors from its own stream, fixed by the script's seed.
+std::uint64_t plannerSeed(std::uint64_t script_seed, rules::Player p) {
+  return script_seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index(p)) + 1;
+}
+
+}  // namespace
 
 CLI::App* addMatchCommand(CLI::App& app, MatchOptions& options) {
   CLI::App* cmd = app.add_subcommand(
@@ -32,21 +50,47 @@ int runMatch(const MatchOptions& options, std::istream& in, std::ostream& out, s
     return kExitBadInput;
   }
   const io::MatchScript& script = std::get<io::MatchScript>(parsed);
+  std::array<std::unique_ptr<ai::Planner>, 2> planners;
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    if (const auto& level = script.players[index(p)]) {
+      planners[index(p)] = std::make_unique<ai::Planner>(*level, plannerSeed(script.setup.seed, p));
+    }
+  }
   Match match(script.setup);
   std::vector<TurnRecord> records;
-  for (std::size_t i = 0; i < script.turns.size(); ++i) {
-    try {
-      records.push_back(match.play(script.turns[i]));
-    } catch (const IllegalAction& e) {
-      err << prefix << "turns[" << i << "]: " << e.what() << '\n';
-      return kExitBadInput;
+  std::vector<std::optional<io::ComputerTurn>> computer;
+  std::size_t next_script_turn = 0;
+  while (records.size() < kMaxTurns) {
+    ai::Planner* planner = planners[index(match.rack().shooter())].get();
+    if (planner && !match.rack().over()) {
+      const TurnInput turn = planner->turnFor(match);
+      try {
+        records.push_back(match.play(turn));
+      } catch (const IllegalAction& e) {
+        err << prefix << "the computer's turn " << records.size() << " was refused: " << e.what()
+            << '\n';
+        return kExitInternal;
+      }
+      computer.push_back(io::ComputerTurn{planner->level(), turn});
+    } else if (next_script_turn < script.turns.size()) {
+      const std::size_t i = next_script_turn++;
+      try {
+        records.push_back(match.play(script.turns[i]));
+      } catch (const IllegalAction& e) {
+        err << prefix << "turns[" << i << "]: " << e.what() << '\n';
+        return kExitBadInput;
+      }
+      computer.emplace_back();
+    } else {
+      break;
     }
     const TurnRecord& r = records.back();
-    logger("app")->info("turn {}: {} {}{}", i, rules::playerName(r.shooter),
+    logger("app")->info("turn {}: {} {}{}", records.size() - 1, rules::playerName(r.shooter),
                         r.verdict.legal() ? "legal" : "foul ",
                         r.verdict.legal() ? "" : rules::foulName(r.verdict.foul));
   }
-  out << io::matchResultToJson(records, match.rack(), match.balls()).dump(2) << '\n' << std::flush;
+  out << io::matchResultToJson(records, match.rack(), match.balls(), computer).dump(2) << '\n'
+      << std::flush;
   return out ? kExitOk : kExitInternal;
 }
 

@@ -5,6 +5,7 @@
 
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
+#include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_parts.hpp"
 #include "nineball/sim.hpp"
@@ -45,10 +46,43 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass) {
   return turn;
 }
 
+PlayerKind parsePlayer(const json& v, const std::string& path) {
+  const std::string name = text(v, path);
+  if (name == "human") return std::nullopt;
+  const std::string prefix = "ai:";
+  if (name.compare(0, prefix.size(), prefix) == 0) {
+    if (auto level = ai::levelFromName(name.substr(prefix.size()))) return level;
+  }
+  refuse(path, "unknown player " + quote(name) +
+                   " (expected \"human\", \"ai:easy\", \"ai:medium\" or \"ai:hard\")");
+}
+
+std::array<PlayerKind, 2> parsePlayers(const json& v) {
+  const std::string path = "players";
+  expectObject(v, path);
+  allowOnly(v, path, {"A", "B"}, "unknown player");
+  std::array<PlayerKind, 2> players{};
+  if (const json* p = optional(v, "A")) players[0] = parsePlayer(*p, member(path, "A"));
+  if (const json* p = optional(v, "B")) players[1] = parsePlayer(*p, member(path, "B"));
+  return players;
+}
+
+void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
+  turn["player"] = playerKindName(c.level);
+  if (c.input.kind == TurnInput::Kind::Decision) return;
+  const Shot& shot = c.input.shot;
+  turn["shot"] = {{"heading_deg", headingDegrees(shot.heading_rad)},
+                  {"speed", shot.speed},
+                  {"tip", {shot.tip.x, shot.tip.y}}};
+  if (c.input.cue) turn["cue"] = {c.input.cue->x, c.input.cue->y};
+}
+
 MatchScript parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
-  allowOnly(doc, "", {"rules", "seed", "table", "physics", "step", "balls", "turns"});
+  allowOnly(doc, "", {"rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
   MatchScript script;
+  if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
+  const bool computer_plays = script.players[0] || script.players[1];
   MatchSetup& setup = script.setup;
   if (const json* p = optional(doc, "rules")) {
     const std::string name = text(*p, "rules");
@@ -76,7 +110,9 @@ MatchScript parseDocument(const json& doc) {
       if (b.id == kCueBall && b.mass) cue_mass = *b.mass;
     }
   }
-  const json& turns = required(doc, "", "turns");
+  static const json kNoTurns = json::array();
+  const json& turns =
+      computer_plays && !optional(doc, "turns") ? kNoTurns : required(doc, "", "turns");
   if (!turns.is_array()) refuse("turns", "expected an array of turns, found " + describe(turns));
   for (std::size_t i = 0; i < turns.size(); ++i) {
     script.turns.push_back(parseTurn(turns[i], element("turns", i), cue_mass));
@@ -90,6 +126,10 @@ ordered_json winnerJson(const std::optional<rules::Player>& w) {
 
 }  // namespace
 
+std::string playerKindName(const PlayerKind& kind) {
+  return kind ? std::string("ai:") + ai::levelName(*kind) : std::string("human");
+}
+
 MatchScriptResult parseMatchScript(std::string_view text) {
   try {
     return parseDocument(readJson(text));
@@ -100,13 +140,16 @@ MatchScriptResult parseMatchScript(std::string_view text) {
 
 nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
                                          const rules::Rack& rack,
-                                         const std::vector<BallState>& balls) {
+                                         const std::vector<BallState>& balls,
+                                         const std::vector<std::optional<ComputerTurn>>& computer) {
   ordered_json doc;
   ordered_json list = ordered_json::array();
-  for (const TurnRecord& t : turns) {
+  for (std::size_t i = 0; i < turns.size(); ++i) {
+    const TurnRecord& t = turns[i];
     const rules::Verdict& v = t.verdict;
     ordered_json turn;
     turn["shooter"] = rules::playerName(t.shooter);
+    if (i < computer.size() && computer[i]) describeComputerTurn(*computer[i], turn);
     if (t.kind == TurnInput::Kind::Decision) {
       turn["decision"] = v.next == t.shooter ? "shoot" : "pass";
     } else if (t.kind == TurnInput::Kind::PushOut) {

@@ -1,30 +1,50 @@
 #pragma once
 
+#include <array>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string_view>
 #include <variant>
 #include <vector>
 
 #include "io/parse_error.hpp"
 #include "nineball/match.hpp"
+#include "nineball/planner.hpp"
 
 namespace nineball::io {
 
-/// A match script: how the rack starts and the turns to play.
+/// Who plays one side: a person (turns from the script) or the computer at a level.
+using PlayerKind = std::optional<ai::Level>;
+
+/// "human", "ai:easy", "ai:medium", "ai:hard".
+std::string playerKindName(const PlayerKind& kind);
+
+/// A match script: how the rack starts, who plays, and the turns of the human players.
 struct MatchScript {
   MatchSetup setup;
+  std::array<PlayerKind, 2> players{};  ///< A, B; both human unless "players" says otherwise
   std::vector<TurnInput> turns;
+};
+
+/// A turn the computer played, as the result shows it.
+struct ComputerTurn {
+  ai::Level level = ai::Level::Hard;
+  TurnInput input;  ///< the shot as executed (noise included), or the decision
 };
 
 using MatchScriptResult = std::variant<MatchScript, ParseError>;
 
-/// Parses `{"rules", "seed", "table", "physics", "step", "balls", "turns"}`; refusals name
-/// the field ("turns[2].speed: ...").
+/// Parses `{"rules", "seed", "table", "physics", "step", "balls", "players", "turns"}`;
+/// refusals name the field ("turns[2].speed: ...", "players.A: ..."). "turns" may be left out
+/// when a player is the computer.
 MatchScriptResult parseMatchScript(std::string_view text);
 
-/// The result document: {"turns": [...], "winner": null|"A"|"B", "balls": [...]}.
-nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
-                                         const rules::Rack& rack,
-                                         const std::vector<BallState>& balls);
+/// The result document: {"turns": [...], "winner": null|"A"|"B", "balls": [...]}. A turn the
+/// computer played (`computer[i]` set) also carries "player": "ai:<level>" and, for a shot,
+/// "shot": {"heading_deg", "speed", "tip"} and "cue" when it placed the cue ball.
+nlohmann::ordered_json matchResultToJson(
+    const std::vector<TurnRecord>& turns, const rules::Rack& rack,
+    const std::vector<BallState>& balls,
+    const std::vector<std::optional<ComputerTurn>>& computer = {});
 
 }  // namespace nineball::io

@@ -1,0 +1,127 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nineball/ball.hpp"
+#include "nineball/match.hpp"
+#include "nineball/params.hpp"
+#include "nineball/rules.hpp"
+#include "nineball/shot.hpp"
+#include "nineball/table.hpp"
+
+// The computer opponent: a shot planner that tries candidate shots in the headless physics
+// and judges each outcome with the rules. No drawing, no wall-clock input in its choices.
+namespace nineball::ai {
+
+/// How strong the computer opponent is: how much it searches and how well it cues.
+enum class Level { Easy, Medium, Hard };
+
+/// "easy", "medium", "hard".
+const char* levelName(Level level);
+std::optional<Level> levelFromName(const std::string& name);
+
+/// What one level searches and how precisely it executes the chosen shot.
+struct LevelSettings {
+  std::vector<double> pot_speeds;     ///< m/s tried on every pot line (slower ones are dropped)
+  std::vector<Vec2> tips;             ///< [side, height] tried on every pot line
+  std::vector<double> safety_speeds;  ///< m/s tried on every safety line
+  int safety_angles = 0;              ///< object-ball directions tried for safeties
+  int pocket_aims = 1;                ///< points across each pocket mouth aimed at
+  int max_pot_lines = 0;              ///< pot lines kept, the easiest first
+  bool combinations = false;          ///< ball on into another ball into a pocket
+  bool banks = false;                 ///< the ball on off one cushion into a pocket
+  bool kicks = false;                 ///< the cue ball off two cushions to the ball on
+  int sweep_headings = 0;             ///< directions tried when no aimed shot is worth much
+  int placements = 1;                 ///< ball in hand: cue positions tried
+  int break_spots = 1;                ///< cue positions on the head string tried for the break
+  std::vector<double> break_speeds;   ///< m/s tried for the break
+  int robust_top = 0;                 ///< best candidates re-simulated with cueing errors
+  int robust_steps = 0;               ///< heading errors tried each way, in half deviations
+  double robust_aim_deg = 0.0;        ///< standard deviation of the heading error of that check
+  double robust_speed = 0.0;          ///< standard deviation of its relative speed error
+  double aim_noise_deg = 0.0;         ///< standard deviation of the executed heading
+  double speed_noise = 0.0;           ///< standard deviation of the executed speed, relative
+
+  /// The settings of a level (the table in README.md, "Computer opponent").
+  static LevelSettings of(Level level);
+};
+
+/// The position to plan for: the table, the balls and the rules' state of the rack.
+struct PlanInput {
+  TableDef table;
+  PhysicsParams physics;
+  StepParams step;
+  /// Every ball; the cue ball is id 0. Pocketed balls are ignored, and so is the cue ball's
+  /// position when it is in hand.
+  std::vector<BallState> balls;
+  /// Whose turn, the ball on, the break, push-out and foul counts. A rack still in play.
+  rules::Rack rack{rules::RuleSet::Wpa, {}, false};
+  bool cue_in_hand = false;         ///< the shooter places the cue ball first
+  bool behind_head_string = false;  ///< ... and only behind the head string (the break)
+};
+
+/// The position a match is in, for the player to move.
+PlanInput planInputFrom(const Match& match);
+
+/// What a planned shot means to do.
+enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety };
+
+/// "break", "pot", "combination", "bank", "kick", "safety".
+const char* shotKindName(ShotKind kind);
+
+/// The planner's answer for one position.
+struct Plan {
+  /// The shot as intended (no execution noise): kind Shot, `cue` set when placing the ball.
+  TurnInput turn;
+  ShotKind kind = ShotKind::Safety;
+  int target = 0;                  ///< the ball meant to drop (pot, combination, bank)
+  std::optional<PocketId> pocket;  ///< where it is meant to drop
+  /// Expected worth of the outcome to the shooter, 0 (loses the rack) to 1 (wins it), averaged
+  /// over the robustness check when there was one.
+  double value = 0.0;
+  int simulations = 0;  ///< shots simulated to find it
+};
+
+/// A computer player. Choices depend only on the position, the level and the seed (never on
+/// threads or time), so a match played with the same seeds is the same bit for bit.
+class Planner {
+ public:
+  /// `threads` workers simulate candidates side by side (each with its own worlds).
+  explicit Planner(Level level, std::uint64_t seed = 1, int threads = 2);
+
+  /// The best shot found for the position, as intended. The rack must not be waiting for a
+  /// decision after a push-out (see shootAfterPushOut).
+  Plan plan(const PlanInput& in);
+  /// After the opponent's push-out (`in.rack` awaiting the decision): true to shoot, false to
+  /// pass the shot back. Shoots when its best shot is worth at least what the opponent would
+  /// get from the same position.
+  bool shootAfterPushOut(const PlanInput& in);
+  /// The plan as this level cues it: heading and speed with the level's noise, drawn from the
+  /// planner's own seeded generator.
+  TurnInput execute(const Plan& plan);
+  /// A whole turn of a match for the player to move: the decision after a push-out, or a
+  /// planned and executed shot. Never a push-out.
+  TurnInput turnFor(const Match& match);
+
+  Level level() const { return level_; }
+  const LevelSettings& settings() const { return settings_; }
+  /// Shots simulated since construction, and the wall time spent planning (for benchmarks).
+  long simulations() const { return simulations_; }
+  double thinkSeconds() const { return think_seconds_; }
+  /// Wall time of the last plan or decision.
+  double lastThinkSeconds() const { return last_think_seconds_; }
+
+ private:
+  Level level_;
+  LevelSettings settings_;
+  std::uint64_t rng_state_;
+  int threads_;
+  long simulations_ = 0;
+  double think_seconds_ = 0.0;
+  double last_think_seconds_ = 0.0;
+};
+
+}  // namespace nineball::ai

@@ -1,0 +1,156 @@
+#include "app/ai_bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <ostream>
+#include <vector>
+
+#include "app/ai_bench_positions.hpp"
+#include "app/exit_codes.hpp"
+#include "nineball/log.hpp"
+#include "nineball/match.hpp"
+#include "nineball/planner.hpp"
+
+namespace nineball::app {
+namespace {
+
+// A rack that lasts longer than this many turns of one player is not a run-out anyway.
+constexpr int kMaxTurnsPerRack = 60;
+
+struct Tally {
+  int potted = 0;
+  int potted_as_planned = 0;  // the same shots cued without error
+  int attempted = 0;
+  int fouls = 0;
+  int runouts = 0;
+  int break_pots = 0;
+  int balls_before_miss = 0;
+  std::vector<double> think;  // s per planned shot
+  long simulations = 0;       // shots the planners simulated
+  double thinking = 0.0;      // s the planners spent
+};
+
+void addPlanner(const ai::Planner& planner, Tally& t) {
+  t.simulations += planner.simulations();
+  t.thinking += planner.thinkSeconds();
+}
+
+bool contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+void playPositions(const AiBenchOptions& o, ai::Level level, Tally& t) {
+  for (int i = 0; i < o.positions; ++i) {
+    const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
+    MatchSetup setup;
+    setup.balls = randomPosition(seed, setup.table, setup.physics);
+    Match match(setup);
+    const int on = match.rack().ballOn();
+    ai::Planner planner(level, seed, o.threads);
+    const ai::Plan plan = planner.plan(ai::planInputFrom(match));
+    t.think.push_back(planner.lastThinkSeconds());
+    if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank) ++t.attempted;
+    Match as_planned(setup);
+    const TurnRecord exact = as_planned.play(plan.turn);
+    if (exact.verdict.legal() && contains(exact.verdict.pocketed, on)) ++t.potted_as_planned;
+    const TurnRecord r = match.play(planner.execute(plan));
+    if (!r.verdict.legal()) ++t.fouls;
+    if (r.verdict.legal() && contains(r.verdict.pocketed, on)) ++t.potted;
+    addPlanner(planner, t);
+  }
+}
+
+void playRacks(const AiBenchOptions& o, ai::Level level, Tally& t, std::ostream& err) {
+  for (int i = 0; i < o.racks; ++i) {
+    MatchSetup setup;
+    setup.seed = o.seed + static_cast<std::uint64_t>(i);
+    Match match(setup);
+    ai::Planner planner(level, setup.seed, o.threads);
+    int turns = 0;
+    int pocketed = 0;
+    while (!match.rack().over() && match.rack().shooter() == rules::Player::A &&
+           turns < kMaxTurnsPerRack) {
+      const TurnInput turn = planner.turnFor(match);
+      t.think.push_back(planner.lastThinkSeconds());
+      const TurnRecord r = match.play(turn);
+      if (turns == 0 && r.verdict.legal() && !r.verdict.pocketed.empty()) ++t.break_pots;
+      if (turns > 0) pocketed += static_cast<int>(r.verdict.pocketed.size());
+      ++turns;
+    }
+    t.balls_before_miss += pocketed;
+    addPlanner(planner, t);
+    const bool ran_out = match.rack().winner() == rules::Player::A;
+    if (ran_out) ++t.runouts;
+    logger("app")->info("rack {}: {} after {} shots", setup.seed, ran_out ? "run out" : "missed",
+                        turns);
+    if ((i + 1) % 10 == 0) err << "ai-bench: " << (i + 1) << " racks\n" << std::flush;
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "ai-bench", "Measure the computer opponent: pot rate, run-outs, search speed, think time");
+  cmd->add_option("--level", options.level, "Level to measure")
+      ->check(CLI::IsMember({"easy", "medium", "hard"}))
+      ->capture_default_str();
+  cmd->add_option("--positions", options.positions, "Seeded positions to pot the ball on from")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--racks", options.racks, "Racks to break and try to run out")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--seed", options.seed, "First seed of positions and racks")
+      ->capture_default_str();
+  cmd->add_option("--threads", options.threads, "Workers simulating candidates")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  return cmd;
+}
+
+int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err) {
+  const auto level = ai::levelFromName(options.level);
+  if (!level) {
+    err << "nineball ai-bench: --level: unknown level \"" << options.level << "\"\n";
+    return kExitBadInput;
+  }
+  const auto started = std::chrono::steady_clock::now();
+  Tally positions, racks;
+  playPositions(options, *level, positions);
+  playRacks(options, *level, racks, err);
+  std::vector<double> think = positions.think;
+  think.insert(think.end(), racks.think.begin(), racks.think.end());
+  const long sims = positions.simulations + racks.simulations;
+  const double thinking = positions.thinking + racks.thinking;
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out << std::fixed << std::setprecision(2);
+  out << "Computer opponent, level " << options.level << ", " << options.threads
+      << " threads, seeds from " << options.seed << "\n";
+  out << "positions: potted the ball on in " << positions.potted << " of " << options.positions
+      << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
+      << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";
+  out << "racks: ran out " << racks.runouts << " of " << options.racks << " from the break ("
+      << "a ball down on the break in " << racks.break_pots << ", " << racks.balls_before_miss
+      << " balls potted after the break in all)\n";
+  out << "search: " << sims << " shots simulated in " << thinking
+      << " s of thinking: " << std::setprecision(0) << (thinking > 0.0 ? sims / thinking : 0.0)
+      << " shots per second\n"
+      << std::setprecision(2);
+  out << "think time per shot: median " << median(think) << " s, max "
+      << (think.empty() ? 0.0 : *std::max_element(think.begin(), think.end())) << " s over "
+      << think.size() << " shots\n";
+  out << "wall time: " << wall << " s (thinking " << thinking << " s)\n" << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+}  // namespace nineball::app

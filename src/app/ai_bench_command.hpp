@@ -1,0 +1,27 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+namespace nineball::app {
+
+/// Options of `nineball ai-bench`.
+struct AiBenchOptions {
+  std::string level = "hard";  ///< the level measured
+  int positions = 100;         ///< seeded practice positions to pot the ball on from
+  int racks = 100;             ///< racks broken to try to run out
+  std::uint64_t seed = 1;      ///< first seed of the positions and the racks
+  int threads = 2;             ///< workers simulating candidates
+};
+
+/// Registers `ai-bench` on the app.
+CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options);
+
+/// Measures the computer opponent: how often it pots the ball on from seeded positions, how
+/// many racks it runs out from its own break, how many shots its search simulates per second
+/// and how long it thinks per shot. Prints a short report on `out`.
+int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace nineball::app

@@ -1,0 +1,59 @@
+#include "app/ai_bench_positions.hpp"
+
+#include <algorithm>
+
+namespace nineball::app {
+namespace {
+
+// Clearance (m) between balls and from the cushions, so that no ball starts frozen.
+constexpr double kGap = 0.005;
+constexpr int kMinObjectBalls = 3;
+constexpr int kMaxObjectBalls = 5;
+
+std::uint64_t next(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+double uniform(std::uint64_t& state, double lo, double hi) {
+  return lo + (hi - lo) * (static_cast<double>(next(state) >> 11) * 0x1.0p-53);
+}
+
+}  // namespace
+
+std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
+                                      const PhysicsParams& physics) {
+  std::uint64_t state = seed * 0x2545F4914F6CDD1Dull + 0x1234567ull;
+  const TableGeometry geo = buildTable(table, physics.ball_radius);
+  const double r = physics.ball_radius;
+  std::vector<int> numbers = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  for (std::size_t i = numbers.size() - 1; i > 0; --i) {
+    std::swap(numbers[i], numbers[next(state) % (i + 1)]);
+  }
+  const int count =
+      kMinObjectBalls + static_cast<int>(next(state) % (kMaxObjectBalls - kMinObjectBalls + 1));
+  std::vector<int> ids = {kCueBall};
+  ids.insert(ids.end(), numbers.begin(), numbers.begin() + count);
+  std::vector<BallState> balls;
+  for (int id : ids) {
+    for (;;) {
+      const Vec2 p{uniform(state, -table.length / 2.0, table.length / 2.0),
+                   uniform(state, -table.width / 2.0, table.width / 2.0)};
+      if (!geo.ballFits(p, r + kGap)) continue;
+      const bool clear = std::all_of(balls.begin(), balls.end(), [&](const BallState& b) {
+        return length(b.pos - p) >= 2.0 * r + kGap;
+      });
+      if (!clear) continue;
+      BallState b;
+      b.id = id;
+      b.pos = p;
+      balls.push_back(b);
+      break;
+    }
+  }
+  return balls;
+}
+
+}  // namespace nineball::app

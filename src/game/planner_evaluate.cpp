@@ -1,0 +1,98 @@
+#include "game/planner_evaluate.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "game/planner_geometry.hpp"
+#include "game/shot_summary.hpp"
+#include "nineball/world.hpp"
+
+namespace nineball::ai {
+namespace {
+
+// A planned shot that still rolls after this long (s) is cut short: its outcome is as good as
+// known, and a pathological one must not stall the search.
+constexpr double kMaxShotTime = 40.0;
+
+constexpr double kContinueBase = 0.55;
+constexpr double kContinueSpread = 0.4;
+constexpr double kLeaveBase = 0.45;
+constexpr double kLeaveSpread = 0.4;
+
+}  // namespace
+
+Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg)
+    : in_(in), table_(table), step_(in.step), sigma_rad_(degToRad(judging_aim_deg)) {
+  step_.max_time = std::min(step_.max_time, kMaxShotTime);
+}
+
+std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
+  std::vector<BallState> balls;
+  balls.reserve(in_.balls.size() + 1);
+  BallState cue_ball;
+  cue_ball.id = kCueBall;
+  for (const BallState& b : in_.balls) {
+    if (b.id == kCueBall) {
+      cue_ball.mass = b.mass;
+      continue;
+    }
+    if (!b.pocket) balls.push_back(b);
+  }
+  cue_ball.pos = cue;
+  balls.insert(balls.begin(), cue_ball);
+  return balls;
+}
+
+double Evaluator::value(const Shot& shot, std::optional<Vec2> cue) const {
+  World world(in_.table, in_.physics, step_);
+  if (cue) {
+    for (const BallState& b : ballsWithCueAt(*cue)) world.addBall(b);
+  } else {
+    for (const BallState& b : in_.balls) {
+      if (!b.pocket) world.addBall(b);
+    }
+  }
+  world.strike(kCueBall, shot);
+  world.runUntilRest();
+  const rules::ShotSummary summary = game::summarize(world.events());
+  rules::Rack rack = in_.rack;
+  rules::Verdict verdict;
+  try {
+    verdict = rack.shoot(summary, false);
+  } catch (const std::logic_error&) {
+    return 0.0;  // the rules take no shot now: nothing to gain
+  }
+  std::vector<BallState> after = world.balls();
+  for (int spotted : verdict.to_spot) {
+    for (BallState& b : after) {
+      if (b.id != spotted) continue;
+      b.pocket.reset();
+      b.pos = table_.footSpot();
+    }
+  }
+  return score(after, rack, verdict, summary.cue_pocketed);
+}
+
+double Evaluator::score(const std::vector<BallState>& after, const rules::Rack& rack,
+                        const rules::Verdict& verdict, bool cue_pocketed) const {
+  const rules::Player me = in_.rack.shooter();
+  if (verdict.winner) return *verdict.winner == me ? 1.0 : 0.0;
+  const double r = in_.physics.ball_radius;
+  auto chanceFrom = [&](Vec2 cue) {
+    return bestPotChance(table_, r, after, cue, rack.ballOn(), sigma_rad_);
+  };
+  const BallState* cue = findOnTable(after, kCueBall);
+  double chance = kInHandChance;
+  if (!verdict.ball_in_hand) {
+    if (cue && !cue_pocketed) {
+      chance = chanceFrom(cue->pos);
+    } else if (verdict.cue_to_head_spot) {
+      chance = chanceFrom({table_.headStringX(), 0.0});
+    }
+  }
+  if (verdict.next == me) return kContinueBase + kContinueSpread * chance;
+  if (verdict.legal()) return kLeaveBase - kLeaveSpread * chance;
+  return kFoulValueTop * (1.0 - chance);
+}
+
+}  // namespace nineball::ai

@@ -1,0 +1,102 @@
+#include "io/plan_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/json_fields.hpp"
+#include "io/json_reader.hpp"
+#include "io/scene_json.hpp"
+
+namespace nineball::io {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+PlanScene parseDocument(json doc) {
+  if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
+  allowOnly(
+      doc, "",
+      {"table", "physics", "balls", "shot", "until", "step", "rules", "ball_in_hand", "level"});
+  PlanScene plan;
+  rules::RuleSet rule_set = rules::RuleSet::Wpa;
+  if (const json* p = optional(doc, "rules")) {
+    const std::string name = text(*p, "rules");
+    const auto found = rules::ruleSetFromName(name);
+    if (!found)
+      refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
+    rule_set = *found;
+  }
+  bool in_hand = false;
+  if (const json* p = optional(doc, "ball_in_hand")) {
+    if (!p->is_boolean()) refuse("ball_in_hand", "expected true or false, found " + describe(*p));
+    in_hand = p->get<bool>();
+  }
+  if (const json* p = optional(doc, "level")) {
+    const std::string name = text(*p, "level");
+    const auto found = ai::levelFromName(name);
+    if (!found) {
+      refuse("level",
+             "unknown level " + quote(name) + " (expected \"easy\", \"medium\" or \"hard\")");
+    }
+    plan.level = *found;
+  }
+  for (const char* key : {"rules", "ball_in_hand", "level"}) doc.erase(key);
+  SceneResult parsed = sceneFromJson(doc);
+  if (const auto* refused = std::get_if<ParseError>(&parsed)) throw *refused;
+  const Scene& scene = std::get<Scene>(parsed);
+
+  std::vector<int> object_balls;
+  bool has_cue = false;
+  for (const BallState& b : scene.balls) {
+    if (b.id == kCueBall) {
+      has_cue = true;
+    } else {
+      object_balls.push_back(b.id);
+    }
+  }
+  if (object_balls.empty()) refuse("balls", "no object ball to play (ids other than 0)");
+  if (!has_cue && !in_hand) {
+    refuse("balls", "needs a cue ball (id 0) unless \"ball_in_hand\" is true");
+  }
+  ai::PlanInput& in = plan.input;
+  in.table = scene.table;
+  in.physics = scene.physics;
+  in.step = scene.step;
+  in.balls = scene.balls;
+  in.rack = rules::Rack(rule_set, object_balls, false);
+  in.cue_in_hand = in_hand;
+  return plan;
+}
+
+}  // namespace
+
+double headingDegrees(double rad) {
+  double deg = std::remainder(radToDeg(rad), 360.0);
+  if (deg <= -180.0) deg += 360.0;
+  return deg;
+}
+
+PlanSceneResult parsePlanScene(std::string_view text) {
+  const bool blank = std::all_of(text.begin(), text.end(), [](char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+  });
+  if (blank) return ParseError{"invalid JSON: empty input"};
+  try {
+    return parseDocument(readJson(text));
+  } catch (const ParseError& e) {
+    return e;
+  }
+}
+
+ordered_json planToJson(const ai::Plan& plan) {
+  ordered_json doc;
+  const Shot& shot = plan.turn.shot;
+  doc["heading_deg"] = headingDegrees(shot.heading_rad);
+  doc["speed"] = shot.speed;
+  doc["tip"] = {shot.tip.x, shot.tip.y};
+  if (plan.turn.cue) doc["cue"] = {plan.turn.cue->x, plan.turn.cue->y};
+  return doc;
+}
+
+}  // namespace nineball::io

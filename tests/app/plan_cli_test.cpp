@@ -1,0 +1,87 @@
+// The `nineball plan` contract, run through the real binary.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/cli_runner.hpp"
+
+using nineball::testing::CliOutcome;
+using nineball::testing::runOnDocument;
+
+namespace {
+
+// The 1 a little off the top-right corner, the cue ball on the line behind it.
+const char* kStraightIn = R"({
+  "level": "medium",
+  "balls": [{"id": 0, "x": 0.4, "y": 0.1}, {"id": 1, "x": 1.0, "y": 0.45},
+            {"id": 5, "x": -0.8, "y": -0.3}]
+})";
+
+bool pockets(const nlohmann::json& sim_result, int ball) {
+  for (const auto& e : sim_result["events"]) {
+    if (e["type"] == "pocket" && e["ball"] == ball) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(PlanCli, PrintsAShotThatSimPotsTheBallOnWith) {
+  const CliOutcome r = runOnDocument("plan", kStraightIn);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto shot = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(shot.contains("heading_deg"));
+  ASSERT_TRUE(shot.contains("speed"));
+  ASSERT_TRUE(shot.contains("tip"));
+  EXPECT_FALSE(shot.contains("cue"));
+  // The printed object is a scene's "shot": play it with `nineball sim`.
+  auto scene = nlohmann::json::parse(kStraightIn);
+  scene.erase("level");
+  scene["shot"] = shot;
+  const CliOutcome sim = runOnDocument("sim", scene.dump());
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const auto result = nlohmann::json::parse(sim.out);
+  EXPECT_TRUE(pockets(result, 1));
+  EXPECT_FALSE(pockets(result, 0));
+}
+
+TEST(PlanCli, PlacesTheCueBallWithBallInHand) {
+  const CliOutcome r = runOnDocument("plan", R"({
+    "level": "easy", "rules": "wpa", "ball_in_hand": true,
+    "balls": [{"id": 3, "x": 0.3, "y": -0.2}, {"id": 9, "x": -0.5, "y": 0.3}]})");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto shot = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(shot.contains("cue"));
+  const double x = shot["cue"][0], y = shot["cue"][1];
+  EXPECT_LT(std::abs(x), 1.27 - 0.028);
+  EXPECT_LT(std::abs(y), 0.635 - 0.028);
+  for (auto [bx, by] : {std::pair{0.3, -0.2}, std::pair{-0.5, 0.3}}) {
+    EXPECT_GE(std::hypot(x - bx, y - by), 2 * 0.028575);
+  }
+}
+
+TEST(PlanCli, RefusesBadScenesWithStatus2AndNothingOnStdout) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{\"balls\": [", "invalid JSON"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "colour": 1})",
+       "colour: unknown field"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "level": "pro"})",
+       "level: unknown level"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "rules": "8"})",
+       "rules: unknown rules"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}], "ball_in_hand": 1})", "ball_in_hand"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}]})", "balls: no object ball"},
+      {R"({"balls": [{"id": 1, "x": 0, "y": 0}]})", "balls: needs a cue ball"},
+      {R"({"balls": [{"id": 0, "x": "a", "y": 0}, {"id": 1, "x": 0.5, "y": 0}]})",
+       "balls[0].x: expected a number"},
+  };
+  for (const auto& [text, reason] : cases) {
+    const CliOutcome r = runOnDocument("plan", text);
+    EXPECT_EQ(r.status, 2) << text;
+    EXPECT_TRUE(r.out.empty()) << text;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("nineball plan: ", 0), 0u) << r.err;
+  }
+}
