@@ -5,6 +5,7 @@
 #include <functional>
 #include <sstream>
 
+#include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/world.hpp"
 
@@ -18,17 +19,6 @@ constexpr double kMaxOverlap = 1e-4;
 constexpr double kMaxSink = 1e-4;
 constexpr double kEnergyRounding = 1e-6;
 constexpr std::size_t kFailuresKept = 10;
-
-std::uint64_t nextRandom(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
-double uniform(std::uint64_t& state, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(nextRandom(state) >> 11) * 0x1.0p-53;
-}
 
 struct Scenario {
   std::string kind;
@@ -166,7 +156,7 @@ std::vector<BallState> randomLayout(std::uint64_t& rng, const TableGeometry& t, 
   const double hx = t.def.length / 2.0 - r, hy = t.def.width / 2.0 - r;
   for (int tries = 0; static_cast<int>(balls.size()) < n && tries < 10000; ++tries) {
     Vec2 p{uniform(rng, -hx, hx), uniform(rng, -hy, hy)};
-    if (nextRandom(rng) % 5 == 0) p.y = nextRandom(rng) % 2 ? hy : -hy;  // frozen to a rail
+    if (splitmix64(rng) % 5 == 0) p.y = splitmix64(rng) % 2 ? hy : -hy;  // frozen to a rail
     if (!t.ballFits(p, r)) continue;
     bool clear = true;
     for (const BallState& b : balls) clear &= length(b.pos - p) >= 2.0 * r;
@@ -185,7 +175,7 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
     Scenario s;
     s.kind = "random layout and shot";
     s.name = "random #" + std::to_string(i);
-    s.balls = randomLayout(rng, table, r, 2 + static_cast<int>(nextRandom(rng) % 15));
+    s.balls = randomLayout(rng, table, r, 2 + static_cast<int>(splitmix64(rng) % 15));
     Shot shot = Shot::withSpeed(uniform(rng, -180.0, 180.0), uniform(rng, 0.001, 13.0));
     const double tip_r = 0.5 * std::sqrt(uniform(rng, 0.0, 1.0)), tip_a = uniform(rng, 0.0, 6.283);
     shot.tip = fromAngle(tip_a) * tip_r;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "nineball/random.hpp"
+
 namespace nineball::app {
 namespace {
 
@@ -9,17 +11,6 @@ namespace {
 constexpr double kGap = 0.005;
 constexpr int kMinObjectBalls = 3;
 constexpr int kMaxObjectBalls = 5;
-
-std::uint64_t next(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-double uniform(std::uint64_t& state, double lo, double hi) {
-  return lo + (hi - lo) * (static_cast<double>(next(state) >> 11) * 0x1.0p-53);
-}
 
 }  // namespace
 
@@ -30,10 +21,10 @@ std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
   const double r = physics.ball_radius;
   std::vector<int> numbers = {1, 2, 3, 4, 5, 6, 7, 8, 9};
   for (std::size_t i = numbers.size() - 1; i > 0; --i) {
-    std::swap(numbers[i], numbers[next(state) % (i + 1)]);
+    std::swap(numbers[i], numbers[splitmix64(state) % (i + 1)]);
   }
-  const int count =
-      kMinObjectBalls + static_cast<int>(next(state) % (kMaxObjectBalls - kMinObjectBalls + 1));
+  const int count = kMinObjectBalls +
+                    static_cast<int>(splitmix64(state) % (kMaxObjectBalls - kMinObjectBalls + 1));
   std::vector<int> ids = {kCueBall};
   ids.insert(ids.end(), numbers.begin(), numbers.begin() + count);
   std::vector<BallState> balls;

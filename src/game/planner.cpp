@@ -11,8 +11,8 @@
 #include "game/planner_evaluate.hpp"
 #include "game/planner_geometry.hpp"
 #include "game/planner_robust.hpp"
-#include "game/splitmix.hpp"
 #include "nineball/log.hpp"
+#include "nineball/random.hpp"
 
 namespace nineball::ai {
 namespace {

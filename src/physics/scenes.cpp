@@ -3,18 +3,9 @@
 #include <array>
 #include <cmath>
 
+#include "nineball/random.hpp"
+
 namespace nineball {
-namespace {
-
-// splitmix64: a small generator whose output is the same on every platform and library.
-std::uint64_t nextRandom(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
-}  // namespace
 
 std::vector<BallState> rackNineBall(const TableDef& table, double ball_radius, std::uint64_t seed,
                                     double gap) {
@@ -34,7 +25,7 @@ std::vector<BallState> rackNineBall(const TableDef& table, double ball_radius, s
   std::array<int, 7> others{2, 3, 4, 5, 6, 7, 8};
   std::uint64_t state = seed;
   for (std::size_t i = others.size() - 1; i > 0; --i) {
-    const std::size_t j = nextRandom(state) % (i + 1);
+    const std::size_t j = splitmix64(state) % (i + 1);
     std::swap(others[i], others[j]);
   }
   std::vector<BallState> balls;
