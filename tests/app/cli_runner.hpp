@@ -54,11 +54,12 @@ struct CliOutcome {
   std::string err;
 };
 
-/// Runs `nineball ARGS` with stdin from /dev/null and collects both streams.
-inline CliOutcome runNineball(const std::string& args) {
+/// Runs `nineball ARGS` with stdin from `stdin_path` and collects both streams.
+inline CliOutcome runNineball(const std::string& args,
+                              const std::string& stdin_path = "/dev/null") {
   TempFile err;
-  const std::string command =
-      shellQuoted(NINEBALL_BINARY) + " " + args + " </dev/null 2>" + shellQuoted(err.path());
+  const std::string command = shellQuoted(NINEBALL_BINARY) + " " + args + " <" +
+                              shellQuoted(stdin_path) + " 2>" + shellQuoted(err.path());
   CliOutcome r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;

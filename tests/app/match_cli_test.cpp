@@ -1,13 +1,10 @@
 // The `nineball match` contract, run through the real binary.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
-#include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "app/cli_runner.hpp"
 
 namespace {
 
@@ -17,21 +14,8 @@ struct CliRun {
 };
 
 CliRun runMatch(const std::string& script) {
-  char path[] = "/tmp/nineball-match-XXXXXX";
-  const int fd = mkstemp(path);
-  EXPECT_GE(fd, 0);
-  close(fd);
-  std::ofstream(path) << script;
-  const std::string cmd = std::string(NINEBALL_BINARY) + " match " + path + " 2>/dev/null";
-  CliRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int raw = pclose(p);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::remove(path);
-  return r;
+  const auto r = nineball::testing::runOnDocument("match", script);
+  return {r.status, r.out};
 }
 
 }  // namespace

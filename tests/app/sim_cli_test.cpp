@@ -1,73 +1,23 @@
 // Runs the real nineball binary, as a user or a script would.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/cli_runner.hpp"
+
 namespace {
 
-/// A file under $TMPDIR (or /tmp) made with mkstemp, removed again at scope exit.
-class TempFile {
- public:
-  explicit TempFile(const std::string& content = "") {
-    const char* dir = std::getenv("TMPDIR");
-    std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/nineball_cli_XXXXXX";
-    const int fd = mkstemp(pattern.data());
-    if (fd < 0) throw std::runtime_error("mkstemp failed for " + pattern);
-    ::close(fd);
-    path_ = pattern;
-    std::ofstream(path_, std::ios::binary) << content;
-  }
-  ~TempFile() { std::remove(path_.c_str()); }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-
-  const std::string& path() const { return path_; }
-  std::string read() const {
-    std::ifstream in(path_, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
- private:
-  std::string path_;
-};
+using nineball::testing::TempFile;
+using Outcome = nineball::testing::CliOutcome;
 
 std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+  return nineball::testing::shellQuoted(s);
 }
 
-struct Outcome {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-/// Runs `nineball ARGS`, stdin from `stdin_path` (or /dev/null), and collects both streams.
 Outcome run(const std::string& args, const std::string& stdin_path = "/dev/null") {
-  TempFile err;
-  const std::string command =
-      quoted(NINEBALL_BINARY) + " " + args + " <" + quoted(stdin_path) + " 2>" + quoted(err.path());
-  Outcome r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = err.read();
-  return r;
+  return nineball::testing::runNineball(args, stdin_path);
 }
 
 const char* kGoodScene = R"({

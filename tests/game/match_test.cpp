@@ -53,20 +53,33 @@ void expectTurn(const TurnRecord& r, Player shooter, Foul foul, Player next, boo
   EXPECT_EQ(r.verdict.ball_in_hand, in_hand);
 }
 
+// The bottom-right pocket's drop centre: shots here aim straight into it.
+Vec2 bottomRightPocket() {
+  return nineball::buildTable(nineball::TableDef{}, kR).pockets[3].drop_centre;
+}
+
+// The cue ball at `cue`, ball `object` 0.3 m further on the line to the bottom-right pocket,
+// ball `other` out of the way; and the shot along that line at `speed`.
+struct InLine {
+  std::vector<BallState> balls;
+  TurnInput shot;
+};
+InLine inLineWithPocket(Vec2 cue, int object, int other, double speed) {
+  const Vec2 pocket = bottomRightPocket();
+  const Vec2 dir = nineball::normalized(pocket - cue);
+  return {{ball(0, cue), ball(object, cue + dir * 0.3), ball(other, {-0.8, 0.3})},
+          shot(headingTo(cue, pocket), speed)};
+}
+
 }  // namespace
 
 TEST(MatchThroughPhysics, ScratchGivesBallInHand) {
   // A perfectly inelastic hit: the cue ball follows the 1 into the corner pocket.
-  MatchSetup setup = layout({});
+  const InLine line = inLineWithPocket({0.4, 0.0}, 1, 2, 2.0);
+  MatchSetup setup = layout(line.balls);
   setup.physics.ball_restitution = 0.0;
-  Match probe(setup);
-  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;  // bottom-right
-  const Vec2 cue{0.4, 0.0};
-  const Vec2 dir = nineball::normalized(pocket - cue);
-  setup.balls =
-      std::vector<BallState>{ball(0, cue), ball(1, cue + dir * 0.3), ball(2, {-0.8, 0.3})};
   Match match(setup);
-  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  const TurnRecord r = match.play(line.shot);
   expectTurn(r, Player::A, Foul::Scratch, Player::B, true);
   EXPECT_EQ(r.verdict.pocketed, std::vector<int>{1});
   EXPECT_EQ(r.ball_on, 2);
@@ -96,8 +109,7 @@ TEST(MatchThroughPhysics, NoRailAfterContact) {
 }
 
 TEST(MatchThroughPhysics, CombinationOnTheNineWins) {
-  Match probe(layout({}));
-  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
+  const Vec2 pocket = bottomRightPocket();
   const Vec2 cue{0.2, 0.1};
   const Vec2 dir = nineball::normalized(pocket - cue);
   const Vec2 one = cue + dir * 0.4;
@@ -156,16 +168,11 @@ TEST(MatchThroughPhysics, ThreeFoulsInARow) {
 }
 
 TEST(MatchThroughPhysics, PaperScratchReturnsTheCueBallToTheHeadSpot) {
-  MatchSetup setup = layout({}, RuleSet::Paper);
+  const InLine line = inLineWithPocket({0.4, 0.0}, 1, 2, 2.0);
+  MatchSetup setup = layout(line.balls, RuleSet::Paper);
   setup.physics.ball_restitution = 0.0;
-  Match probe(setup);
-  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
-  const Vec2 cue{0.4, 0.0};
-  const Vec2 dir = nineball::normalized(pocket - cue);
-  setup.balls =
-      std::vector<BallState>{ball(0, cue), ball(1, cue + dir * 0.3), ball(2, {-0.8, 0.3})};
   Match match(setup);
-  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  const TurnRecord r = match.play(line.shot);
   EXPECT_EQ(r.verdict.foul, Foul::Scratch);
   EXPECT_FALSE(r.verdict.ball_in_hand);
   const BallState cue_after = match.balls()[0];
@@ -176,15 +183,9 @@ TEST(MatchThroughPhysics, PaperScratchReturnsTheCueBallToTheHeadSpot) {
 
 TEST(MatchThroughPhysics, NineOnAFoulIsSpottedOnTheFootSpot) {
   // Wrong ball first sends the 9 into the pocket: it comes back to the foot spot.
-  MatchSetup setup = layout({});
-  Match probe(setup);
-  const Vec2 pocket = probe.world().table().pockets[3].drop_centre;
-  const Vec2 cue{0.3, 0.0};
-  const Vec2 dir = nineball::normalized(pocket - cue);
-  setup.balls =
-      std::vector<BallState>{ball(0, cue), ball(9, cue + dir * 0.3), ball(1, {-0.8, 0.3})};
-  Match match(setup);
-  const TurnRecord r = match.play(shot(headingTo(cue, pocket), 2.0));
+  const InLine line = inLineWithPocket({0.3, 0.0}, 9, 1, 2.0);
+  Match match(layout(line.balls));
+  const TurnRecord r = match.play(line.shot);
   EXPECT_EQ(r.verdict.foul, Foul::WrongBallFirst);
   EXPECT_EQ(r.verdict.to_spot, std::vector<int>{9});
   EXPECT_FALSE(r.verdict.winner);
