@@ -6,6 +6,7 @@
 
 #include "app/exit_codes.hpp"
 #include "app/game/game_window.hpp"
+#include "app/game/opponent.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 
@@ -41,8 +42,15 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option("--rules", o.rules, "Game window: rules of nine-ball")
                      ->check(CLI::IsMember({"wpa", "paper"}))
                      ->capture_default_str());
-  opts.push_back(app.add_option("--seed", o.seed, "Game window: rack order of balls 2-8")
-                     ->check(kSeedCheck)
+  opts.push_back(
+      app.add_option("--seed", o.seed,
+                     "Game window: rack order of balls 2-8, and the computer's cueing errors")
+          ->check(kSeedCheck)
+          ->capture_default_str());
+  opts.push_back(app.add_option("--opponent", o.opponent,
+                                "Game window: who plays Player 2, a second person (human) or the "
+                                "computer at a level (O switches in the window)")
+                     ->check(CLI::IsMember(opponentNames()))
                      ->capture_default_str());
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));
   opts.push_back(app.add_flag("--fullscreen", o.fullscreen, "Game window: start in full screen"));

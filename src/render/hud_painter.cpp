@@ -89,6 +89,8 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
   }
   text(target, hud.rules, {centre.x + r * 1.6, centre.y - layout.text_px * 0.65},
        layout.text_px * 0.85, kDim);
+  text(target, hud.mode, {centre.x + r * 1.6, centre.y + layout.text_px * 0.35},
+       layout.text_px * 0.85, kDim);
 }
 
 void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,

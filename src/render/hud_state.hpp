@@ -26,6 +26,7 @@ struct HudState {
   PlayerPanel players[2];
   int ball_on = 0;      ///< 0 when none is left
   std::string rules;    ///< "WPA rules", "Paper rules"
+  std::string mode;     ///< who plays: "2 players", "vs computer (medium)", and the key
   std::string status;   ///< what the player to move does now
   std::string message;  ///< what the last shot gave
   Tone tone = Tone::Info;

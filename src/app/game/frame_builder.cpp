@@ -19,12 +19,20 @@ const std::vector<std::string> kHelpLines = {
     "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 
-void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay) {
+void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay,
+                const ComputerPlayer& computer) {
+  const bool computer_decides = computer.controls(session);
   hud.overlay = overlay;
   switch (overlay) {
     case Overlay::Help:
       hud.overlay_title = "How to play";
       hud.overlay_lines = kHelpLines;
+      hud.overlay_lines.insert(
+          hud.overlay_lines.end() - 1,
+          "O: 2 players, or vs computer easy / medium / hard (now: " +
+              (computer.opponent() ? std::string("computer ") + ai::levelName(*computer.opponent())
+                                   : std::string("2 players")) +
+              ")");
       hud.button_right = "Close (H)";
       break;
     case Overlay::ConfirmQuit:
@@ -36,6 +44,10 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
     case Overlay::PushOutChoice: {
       const std::string name = session.seatName(session.seatToMove());
       hud.overlay_title = "Push-out: " + name + " chooses";
+      if (computer_decides) {
+        hud.overlay_lines = {"Thinking: play from here, or pass the shot back?"};
+        break;
+      }
       hud.overlay_lines = {"Play from here, or pass the shot back."};
       hud.button_left = "Play (S)";
       hud.button_right = "Pass (P)";
@@ -68,12 +80,24 @@ Overlay activeOverlay(const GameSession& session, const UiState& ui) {
   return Overlay::None;
 }
 
-render::Frame buildFrame(const GameSession& session, const UiState& ui) {
+render::Frame buildFrame(const GameSession& session, const UiState& ui,
+                         const ComputerPlayer& computer) {
   render::Frame f;
   f.balls = session.ballsToDraw();
   f.ball_radius = session.match().world().physics().ball_radius;
   const bool aiming = session.phase() == Phase::Aiming;
-  if (aiming && ui.drag != Drag::Cue) {
+  const bool computer_turn = computer.controls(session);
+  if (computer_turn) {
+    if (aiming && computer.showsCue()) {
+      f.guide = session.aimGuide();
+      f.cue = render::CuePose{session.heading(), computer.pull(), session.tip().x};
+    }
+    if (const auto carried = computer.carriedCue()) {
+      for (BallState& b : f.balls) {
+        if (b.id == kCueBall) b.pos = *carried;
+      }
+    }
+  } else if (aiming && ui.drag != Drag::Cue) {
     f.guide = session.aimGuide();
     f.cue = render::CuePose{session.heading(), ui.pull, session.tip().x};
   }
@@ -96,7 +120,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui) {
   }
   hud.ball_on = rack.over() ? 0 : rack.ballOn();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
-  hud.status = session.status();
+  hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
+  hud.status = computer_turn ? computer.status(session) : session.status();
   hud.message = session.message();
   hud.tone = session.tone();
   hud.power = session.power();
@@ -104,7 +129,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui) {
   hud.tip = session.tip();
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
-  fillDialog(hud, session, activeOverlay(session, ui));
+  fillDialog(hud, session, activeOverlay(session, ui), computer);
   return f;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/game/computer_player.hpp"
 #include "app/game/game_session.hpp"
 #include "app/game/ui_state.hpp"
 #include "render/scene_painter.hpp"
@@ -7,8 +8,9 @@
 namespace nineball::app {
 
 /// The picture of the game now: the balls where they are, the cue and the guide while
-/// aiming, the HUD with its dialog.
-render::Frame buildFrame(const GameSession& session, const UiState& ui);
+/// aiming (the computer's as it aims), the HUD with its dialog.
+render::Frame buildFrame(const GameSession& session, const UiState& ui,
+                         const ComputerPlayer& computer);
 
 /// The dialog on screen, if any (the same rule the input uses to route keys and clicks).
 render::Overlay activeOverlay(const GameSession& session, const UiState& ui);

@@ -111,6 +111,11 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     return;
   }
   if (overlay == Overlay::Help) return;
+  if (key.code == Key::O) {
+    switchOpponent();
+    return;
+  }
+  if (computer_.controls(session_)) return;
   if (overlay == Overlay::PushOutChoice) {
     if (key.code == Key::S) session_.decide(true);
     if (key.code == Key::P) session_.decide(false);
@@ -154,9 +159,20 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   }
 }
 
+void GameInput::switchOpponent() {
+  if (ui_.drag != Drag::None) return;
+  const Opponent next = nextOpponent(computer_.opponent());
+  computer_.setOpponent(session_, next);
+  if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word
+  session_.say(next ? "Player 2 is now the computer, " + std::string(ai::levelName(*next)) +
+                          " level (O changes it)."
+                    : "Two players: Player 2 plays at this computer too (O changes it).");
+}
+
 void GameInput::update(double seconds) {
   for (auto& [key, held] : held_) held += seconds;
-  if (dialogOpen() || session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
+  if (dialogOpen() || computer_.controls(session_)) return;
+  if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   auto heldFor = [&](Key k) {
     const auto it = held_.find(k);
     return it == held_.end() ? -1.0 : it->second;
@@ -232,13 +248,15 @@ void GameInput::clickButton(bool left) {
 
 void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   const Overlay overlay = activeOverlay(session_, ui_);
+  const bool computer_turn = computer_.controls(session_);
+  if (computer_turn && overlay == Overlay::PushOutChoice) return;
   if (overlay != Overlay::None) {
     const render::HudLayout layout = render::HudLayout::of(view, overlay);
     if (inside(layout.button_left, px)) clickButton(true);
     if (inside(layout.button_right, px)) clickButton(false);
     return;
   }
-  if (session_.phase() != Phase::Aiming) return;
+  if (session_.phase() != Phase::Aiming || computer_turn) return;
   const render::HudLayout layout = render::HudLayout::of(view);
   if (length(px - layout.spin_centre) <= layout.spin_radius * 1.1) {
     ui_.drag = Drag::Spin;
@@ -281,7 +299,7 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
     case Drag::None:
       break;
   }
-  if (session_.phase() != Phase::Aiming || dialogOpen()) return;
+  if (session_.phase() != Phase::Aiming || dialogOpen() || computer_.controls(session_)) return;
   const Vec2 cue = session_.cuePosition();
   if (length(m - cue) > 1e-6) session_.setHeading(std::atan2(m.y - cue.y, m.x - cue.x));
 }
@@ -289,6 +307,11 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
 void GameInput::mouseReleased() {
   const Drag drag = ui_.drag;
   ui_.drag = Drag::None;
+  if (computer_.controls(session_)) {
+    ui_.pull = 0.0;
+    ui_.ghost.reset();
+    return;
+  }
   if (drag == Drag::Cue) {
     if (ui_.ghost) session_.placeCue(ui_.ghost->pos);
     ui_.ghost.reset();

@@ -3,6 +3,7 @@
 #include <SFML/Window/Event.hpp>
 #include <map>
 
+#include "app/game/computer_player.hpp"
 #include "app/game/game_session.hpp"
 #include "app/game/ui_state.hpp"
 #include "render/view_transform.hpp"
@@ -17,10 +18,12 @@ struct WindowRequests {
 };
 
 /// Turns mouse and keyboard into play: the pointer aims, a drag back sets the power and the
-/// release strikes; the paper's keys (arrows, Space, T/B, H) and the rest of the scheme.
+/// release strikes; the paper's keys (arrows, Space, T/B, H) and the rest of the scheme. While
+/// the computer has the turn only the window's keys work (Esc, H, F1, F12, O).
 class GameInput {
  public:
-  GameInput(GameSession& session, UiState& ui) : session_(session), ui_(ui) {}
+  GameInput(GameSession& session, UiState& ui, ComputerPlayer& computer)
+      : session_(session), ui_(ui), computer_(computer) {}
 
   /// Handles one window event; `view` maps the pointer to the table.
   void handle(const sf::Event& event, const render::ViewTransform& view);
@@ -38,9 +41,11 @@ class GameInput {
   void clickButton(bool left);
   void moveCueBy(Vec2 d);
   bool dialogOpen() const;
+  void switchOpponent();
 
   GameSession& session_;
   UiState& ui_;
+  ComputerPlayer& computer_;
   WindowRequests requests_;
   std::map<sf::Keyboard::Key, double> held_;  // key -> seconds held
   bool shift_ = false;

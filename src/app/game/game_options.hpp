@@ -8,14 +8,15 @@ namespace nineball::app {
 
 /// Options of the game window (`nineball` with no subcommand).
 struct GameOptions {
-  std::string rules = "wpa";   ///< wpa | paper
-  std::uint64_t seed = 1;      ///< rack order of balls 2-8
-  bool mute = false;           ///< no sound at all
-  bool fullscreen = false;     ///< start in full screen
-  std::string screenshot;      ///< draw, save this PNG and exit
-  std::string script;          ///< a match script played before the first frame
-  std::optional<long> frames;  ///< run this many frames, then capture (or exit)
-  unsigned width = 1280;       ///< window size in pixels
+  std::string rules = "wpa";       ///< wpa | paper
+  std::uint64_t seed = 1;          ///< rack order of balls 2-8, and the computer's cueing errors
+  std::string opponent = "human";  ///< Player 2: human | ai:easy | ai:medium | ai:hard
+  bool mute = false;               ///< no sound at all
+  bool fullscreen = false;         ///< start in full screen
+  std::string screenshot;          ///< draw, save this PNG and exit
+  std::string script;              ///< a match script played before the first frame
+  std::optional<long> frames;      ///< run this many frames, then capture (or exit)
+  unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;
   bool size_given = false;  ///< --size was given (else the desktop may shrink it)
 };

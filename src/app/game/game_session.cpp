@@ -157,7 +157,17 @@ bool GameSession::shoot() {
   turn.shot.heading_rad = heading_;
   turn.shot.speed = speed_;
   turn.shot.tip = tip_;
-  if (match_->cueInHand()) turn.cue = cue_spot_;
+  return shoot(turn);
+}
+
+bool GameSession::shoot(const TurnInput& given) {
+  if (phase_ != Phase::Aiming || given.kind == TurnInput::Kind::Decision) return false;
+  TurnInput turn = given;
+  if (match_->cueInHand()) {
+    if (!turn.cue) turn.cue = cue_spot_;
+  } else {
+    turn.cue.reset();
+  }
   ball_on_at_shot_ = match_->rack().ballOn();
   breaking_ = match_->rack().isBreak();
   try {
@@ -166,9 +176,14 @@ bool GameSession::shoot() {
     say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
     return false;
   }
+  heading_ = turn.shot.heading_rad;
+  setSpeed(turn.shot.speed);
+  tip_ = turn.shot.tip;
+  push_out_ = turn.kind == TurnInput::Kind::PushOut;
+  if (turn.cue) cue_spot_ = turn.cue;
   logger("game")->info("{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}]{}",
-                       seatName(seatToMove()), radToDeg(heading_), speed_, tip_.x, tip_.y,
-                       push_out_ ? ", push-out" : "");
+                       seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed,
+                       turn.shot.tip.x, turn.shot.tip.y, push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
   clock_.reset();
   events_seen_ = 0;

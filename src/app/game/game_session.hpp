@@ -40,6 +40,8 @@ class GameSession {
 
   /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
   const std::string& seatName(int seat) const { return names_[seat]; }
+  /// Renames a seat ("Computer" when the computer plays it); later messages use the name.
+  void setSeatName(int seat, const std::string& name) { names_[seat] = name; }
   int seatOf(rules::Player p) const;
   int seatToMove() const { return seatOf(match_->rack().shooter()); }
   int racksWon(int seat) const { return racks_won_[seat]; }
@@ -76,6 +78,10 @@ class GameSession {
 
   /// Strikes with the current aim, power and spin; false (and a message) when refused.
   bool shoot();
+  /// Strikes with exactly this shot or push-out (the computer's), placing the cue ball at
+  /// `turn.cue` when in hand (at the current spot if none is given); the aim, gauge and spin
+  /// show it. False (and a message) when refused.
+  bool shoot(const TurnInput& turn);
   /// After the opponent's push-out: shoot from there (true) or pass the shot back.
   void decide(bool shoot_now);
   /// Racks again after a game over; the other player breaks.

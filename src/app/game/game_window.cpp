@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/game/computer_player.hpp"
 #include "app/game/display_probe.hpp"
 #include "app/game/frame_builder.hpp"
 #include "app/game/frame_timer.hpp"
@@ -104,6 +105,8 @@ void logFrameRate(const FrameTimer& moving, long frames) {
 
 int runGame(const GameOptions& options_in, const GameStart& start, std::ostream& err) {
   GameSession session(start.setup);
+  ComputerPlayer computer(start.setup.seed);
+  computer.setOpponent(session, opponentFromName(options_in.opponent).value_or(std::nullopt));
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
       session.playTurn(start.turns[i]);
@@ -137,7 +140,9 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
   painter.resize(window.getSize().x, window.getSize().y);
   const auto sounds = options.mute ? nullptr : audio::ImpactSounds::open();
   UiState ui;
-  GameInput input(session, ui);
+  GameInput input(session, ui, computer);
+  // A picture taken after N fixed frames must not depend on how fast the planner was.
+  computer.setWaitForPlans(capture);
   const long frame_limit = options.frames.value_or(capture ? 1 : -1);
   if (options.frames && start.turns.empty()) session.shoot();  // the opening break, as a demo
   logger("game")->info("window {}x{}, {}", window.getSize().x, window.getSize().y,
@@ -165,10 +170,12 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     const double dt =
         capture ? kFixedFrame : std::min<double>(frame_clock.restart().asSeconds(), kMaxFrame);
     input.update(dt);
+    // The computer waits while the help or the quit question is open, as a player would.
+    if (!ui.help && !ui.confirm_quit) computer.update(session, dt);
     const bool rolling = session.phase() == Phase::Rolling;
     const auto impacts = session.advance(dt);
     if (sounds && !impacts.empty()) sounds->play(impacts);
-    painter.draw(window, buildFrame(session, ui));
+    painter.draw(window, buildFrame(session, ui, computer));
     ++frame;
 
     if (capture && frame >= frame_limit) {
