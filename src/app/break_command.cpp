@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ostream>
 
+#include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
 #include "io/result_json.hpp"
 #include "nineball/scenes.hpp"
@@ -26,23 +27,12 @@ const CLI::Validator kSpeedRange(
     },
     "0..100");
 
-// CLI11 alone would wrap -1 round to 2^64 - 1 and clamp 2^64 down to it.
-const CLI::Validator kSeedCheck(
-    [](std::string& value) -> std::string {
-      std::uint64_t v = 0;
-      const char* end = value.data() + value.size();
-      const auto [stop, ec] = std::from_chars(value.data(), end, v);
-      if (ec == std::errc() && stop == end) return {};
-      return "must be an integer from 0 to 2^64 - 1, found " + value;
-    },
-    "0..2^64-1");
-
 }  // namespace
 
 CLI::App* addBreakCommand(CLI::App& app, BreakOptions& options) {
   CLI::App* cmd = app.add_subcommand("break", "Simulate the standard nine-ball break headless");
   cmd->add_option("--seed", options.seed, "Seed of the rack order of balls 2-8")
-      ->check(kSeedCheck)
+      ->check(seedCheck())
       ->capture_default_str();
   cmd->add_option("--speed", options.speed, "Cue ball speed in m/s")
       ->check(kSpeedRange)

@@ -1,28 +1,18 @@
 #include "app/game_command.hpp"
 
-#include <charconv>
 #include <istream>
 #include <ostream>
 
+#include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
 #include "app/game/game_window.hpp"
 #include "app/game/opponent.hpp"
+#include "app/match_script_file.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 
 namespace nineball::app {
 namespace {
-
-// CLI11 alone would wrap -1 round to 2^64 - 1.
-const CLI::Validator kSeedCheck(
-    [](std::string& value) -> std::string {
-      std::uint64_t v = 0;
-      const char* end = value.data() + value.size();
-      const auto [stop, ec] = std::from_chars(value.data(), end, v);
-      if (ec == std::errc() && stop == end) return {};
-      return "must be an integer from 0 to 2^64 - 1, found " + value;
-    },
-    "0..2^64-1");
 
 bool parseSize(const std::string& text, unsigned& w, unsigned& h) {
   const auto x = text.find('x');
@@ -45,7 +35,7 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(
       app.add_option("--seed", o.seed,
                      "Game window: rack order of balls 2-8, and the computer's cueing errors")
-          ->check(kSeedCheck)
+          ->check(seedCheck())
           ->capture_default_str());
   opts.push_back(app.add_option("--opponent", o.opponent,
                                 "Game window: who plays Player 2, a second person (human) or the "
@@ -82,21 +72,19 @@ int runGameCommand(const GameOptions& options, std::istream& in, std::ostream& e
   start.setup.seed = options.seed;
   if (!options.script.empty()) {
     start.script_name = shownPath(options.script);
-    const std::string prefix = "nineball: " + start.script_name + ": ";
-    std::string why;
-    const auto text = readInput(options.script, in, why);
-    if (!text) {
-      err << prefix << why << '\n';
-      return kExitBadInput;
+    auto script = loadMatchScript(options.script, in, err, "nineball: ");
+    if (!script) return kExitBadInput;
+    // The window plays the script's turns for both seats; computer players are its own option.
+    for (const auto& player : script->players) {
+      if (player) {
+        err << "nineball: " << start.script_name
+            << ": players: computer players are for nineball match; in the window use "
+               "--opponent\n";
+        return kExitBadInput;
+      }
     }
-    auto parsed = io::parseMatchScript(*text);
-    if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
-      err << prefix << refused->message << '\n';
-      return kExitBadInput;
-    }
-    auto& script = std::get<io::MatchScript>(parsed);
-    start.setup = script.setup;
-    start.turns = std::move(script.turns);
+    start.setup = script->setup;
+    start.turns = std::move(script->turns);
   }
   return runGame(options, start, err);
 }

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "app/exit_codes.hpp"
+#include "app/match_script_file.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 #include "nineball/log.hpp"
@@ -38,18 +39,9 @@ CLI::App* addMatchCommand(CLI::App& app, MatchOptions& options) {
 
 int runMatch(const MatchOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
   const std::string prefix = "nineball match: " + shownPath(options.script_path) + ": ";
-  std::string why;
-  const auto text = readInput(options.script_path, in, why);
-  if (!text) {
-    err << prefix << why << '\n';
-    return kExitBadInput;
-  }
-  auto parsed = io::parseMatchScript(*text);
-  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
-    err << prefix << refused->message << '\n';
-    return kExitBadInput;
-  }
-  const io::MatchScript& script = std::get<io::MatchScript>(parsed);
+  const auto loaded = loadMatchScript(options.script_path, in, err, "nineball match: ");
+  if (!loaded) return kExitBadInput;
+  const io::MatchScript& script = *loaded;
   std::array<std::unique_ptr<ai::Planner>, 2> planners;
   for (rules::Player p : {rules::Player::A, rules::Player::B}) {
     if (const auto& level = script.players[index(p)]) {
