@@ -19,6 +19,15 @@ struct BallState {
   std::optional<double> mass;      ///< kg; the physics' ball_mass when empty
   std::optional<PocketId> pocket;  ///< set once the ball has dropped
   Vec3 w;                          ///< rad/s, z up; rolling along +x at speed v has w = (0, v/R, 0)
+
+  /// Ball `id` at `pos`, moving at `vel` (at rest by default), no spin.
+  static BallState at(int id, Vec2 pos, Vec2 vel = {}) {
+    BallState b;
+    b.id = id;
+    b.pos = pos;
+    b.vel = vel;
+    return b;
+  }
 };
 
 }  // namespace nineball

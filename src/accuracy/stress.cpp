@@ -142,14 +142,6 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   return hash;
 }
 
-BallState ball(int id, Vec2 p, Vec2 v = {}) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  b.vel = v;
-  return b;
-}
-
 // Random non-overlapping balls inside the table, some frozen to a cushion.
 std::vector<BallState> randomLayout(std::uint64_t& rng, const TableGeometry& t, double r, int n) {
   std::vector<BallState> balls;
@@ -160,7 +152,7 @@ std::vector<BallState> randomLayout(std::uint64_t& rng, const TableGeometry& t, 
     if (!t.ballFits(p, r)) continue;
     bool clear = true;
     for (const BallState& b : balls) clear &= length(b.pos - p) >= 2.0 * r;
-    if (clear) balls.push_back(ball(static_cast<int>(balls.size()), p));
+    if (clear) balls.push_back(BallState::at(static_cast<int>(balls.size()), p));
   }
   return balls;
 }
@@ -197,16 +189,16 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
     s.kind = "frozen balls";
     s.name = "a row frozen to the top rail, hit along it";
     const double y = table.def.width / 2.0 - r;
-    s.balls.push_back(ball(0, {-0.9, y}));
-    for (int i = 1; i <= 6; ++i) s.balls.push_back(ball(i, {-0.5 + 2.0 * r * (i - 1), y}));
+    s.balls.push_back(BallState::at(0, {-0.9, y}));
+    for (int i = 1; i <= 6; ++i) s.balls.push_back(BallState::at(i, {-0.5 + 2.0 * r * (i - 1), y}));
     s.shot = Shot::withSpeed(0.0, 8.0);
     out.push_back(s);
     s.name = "a frozen cluster in a corner, hit hard";
-    s.balls = {ball(0, {0.0, 0.0})};
+    s.balls = {BallState::at(0, {0.0, 0.0})};
     const Vec2 corner{table.def.length / 2.0 - r, table.def.width / 2.0 - r - 0.1};
     for (int i = 0; i < 4; ++i) {
-      s.balls.push_back(ball(1 + i, corner - Vec2{2.0 * r * i, 0.0}));
-      s.balls.push_back(ball(5 + i, corner - Vec2{2.0 * r * i + r, std::sqrt(3.0) * r}));
+      s.balls.push_back(BallState::at(1 + i, corner - Vec2{2.0 * r * i, 0.0}));
+      s.balls.push_back(BallState::at(5 + i, corner - Vec2{2.0 * r * i + r, std::sqrt(3.0) * r}));
     }
     s.shot = Shot::withSpeed(radToDeg(std::atan2(corner.y, corner.x)), 13.0);
     out.push_back(s);
@@ -219,7 +211,7 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
     // Just inside the mouth, touching the jaw point but short of the drop circle.
     Vec2 p = side.jaw_a + Vec2{r * 0.8, -r * 0.6};
     for (int k = 0; k < 200 && !table.ballFits(p, r); ++k) p.y -= 0.0005;
-    s.balls = {ball(0, {-0.4, 0.2}), ball(1, p)};
+    s.balls = {BallState::at(0, {-0.4, 0.2}), BallState::at(1, p)};
     s.shot = Shot::withSpeed(radToDeg(std::atan2(p.y - 0.2, p.x + 0.4)), 1.0);
     out.push_back(s);
   }
@@ -227,8 +219,9 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
     Scenario s;
     s.kind = "creeping balls";
     s.name = "balls at 1 mm/s";
-    s.balls = {ball(0, {0.0, 0.0}, {0.001, 0.0}), ball(1, {2.0 * r + 1e-5, 0.0}, {-0.001, 0.0}),
-               ball(2, {0.3, table.def.width / 2.0 - r - 1e-5}, {0.0, 0.001})};
+    s.balls = {BallState::at(0, {0.0, 0.0}, {0.001, 0.0}),
+               BallState::at(1, {2.0 * r + 1e-5, 0.0}, {-0.001, 0.0}),
+               BallState::at(2, {0.3, table.def.width / 2.0 - r - 1e-5}, {0.0, 0.001})};
     out.push_back(s);
   }
   {

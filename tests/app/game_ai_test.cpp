@@ -31,13 +31,6 @@ namespace {
 
 constexpr double kFrame = 1.0 / 30.0;
 
-BallState ball(int id, Vec2 p) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  return b;
-}
-
 // Runs the shot to its end; false if it never ends.
 bool roll(GameSession& s) {
   for (int frame = 0; frame < 30 * 120; ++frame) {
@@ -110,8 +103,8 @@ TEST(ComputerPlayer, OnlyPlayerTwosSeatAndOnlyWhenChosen) {
 
 TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   // Player 1 misses: ball in hand for the computer, which carries the cue ball to its spot.
-  GameSession s(layout(
-      {ball(0, {-0.6, 0.0}), ball(1, {0.3, 0.4}), ball(3, {0.0, 0.0}), ball(9, {0.8, -0.3})}));
+  GameSession s(layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
+                        BallState::at(3, {0.0, 0.0}), BallState::at(9, {0.8, -0.3})}));
   ComputerPlayer c(7);
   c.setOpponent(s, Level::Easy);
   std::atomic<bool> release{false};
@@ -165,7 +158,8 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
 }
 
 TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
-  GameSession s(layout({ball(0, {-0.6, 0.0}), ball(1, {0.3, 0.4}), ball(3, {0.0, 0.0})}));
+  GameSession s(layout(
+      {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
   c.setOpponent(s, Level::Easy);
   s.setHeading(0.0);
@@ -207,7 +201,8 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
 }
 
 TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
-  GameSession s(layout({ball(0, {-0.6, 0.0}), ball(1, {0.3, 0.4}), ball(3, {0.0, 0.0})}));
+  GameSession s(layout(
+      {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
   c.setOpponent(s, Level::Easy);
   std::atomic<bool> release{false};
@@ -236,7 +231,8 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
 }
 
 TEST(ComputerPlayer, APlannerThatFailsGivesAPlainShotAtTheBallOn) {
-  GameSession s(layout({ball(0, {-0.6, 0.0}), ball(1, {0.3, 0.4}), ball(3, {0.0, 0.0})}));
+  GameSession s(layout(
+      {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
   c.setOpponent(s, Level::Easy);
   c.setWaitForPlans(true);

@@ -19,13 +19,6 @@ namespace {
 
 constexpr double kR = 0.028575;
 
-BallState ball(int id, Vec2 p) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  return b;
-}
-
 // Runs the shot to its end at 60 frames per second; false if it never ends.
 bool roll(GameSession& s) {
   for (int frame = 0; frame < 60 * 120; ++frame) {
@@ -88,7 +81,8 @@ TEST(GameSession, TheTipStaysInItsUsefulRange) {
 
 TEST(GameSession, AWrongBallFirstIsAFoulWithBallInHandForTheOther) {
   MatchSetup setup;
-  setup.balls = {ball(0, {-0.6, 0.0}), ball(1, {0.3, 0.4}), ball(3, {0.0, 0.0})};
+  setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
+                 BallState::at(3, {0.0, 0.0})};
   GameSession s(setup);
   s.setHeading(0.0);
   s.setSpeed(1.5);
@@ -111,7 +105,7 @@ TEST(GameSession, AScratchPutsTheCueBallInHandOnAFreeSpot) {
   MatchSetup setup;
   setup.physics.ball_restitution = 0.0;
   const Vec2 cue{0.6, 0.0}, one{0.9, 0.3};
-  setup.balls = {ball(0, cue), ball(1, one), ball(2, {-0.8, -0.3})};
+  setup.balls = {BallState::at(0, cue), BallState::at(1, one), BallState::at(2, {-0.8, -0.3})};
   GameSession s(setup);
   s.setHeading(headingTo(cue, one));
   s.setSpeed(4.0);
@@ -152,7 +146,7 @@ TEST(GameSession, PushOutThenPass) {
 TEST(GameSession, TheNineWinsTheRackAndARematchLetsTheOtherBreak) {
   MatchSetup setup;
   const Vec2 cue{0.2, 0.1}, nine{0.5, -0.1};
-  setup.balls = {ball(0, cue), ball(9, nine)};
+  setup.balls = {BallState::at(0, cue), BallState::at(9, nine)};
   GameSession s(setup);
   s.setHeading(nineball::degToRad(-33.69));
   s.setSpeed(3.0);

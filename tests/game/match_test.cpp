@@ -21,13 +21,6 @@ namespace {
 
 constexpr double kR = 0.028575;
 
-BallState ball(int id, Vec2 p) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  return b;
-}
-
 TurnInput shot(double heading_deg, double speed, std::optional<Vec2> cue = std::nullopt) {
   TurnInput t;
   t.shot = Shot::withSpeed(heading_deg, speed);
@@ -67,7 +60,8 @@ struct InLine {
 InLine inLineWithPocket(Vec2 cue, int object, int other, double speed) {
   const Vec2 pocket = bottomRightPocket();
   const Vec2 dir = nineball::normalized(pocket - cue);
-  return {{ball(0, cue), ball(object, cue + dir * 0.3), ball(other, {-0.8, 0.3})},
+  return {{BallState::at(0, cue), BallState::at(object, cue + dir * 0.3),
+           BallState::at(other, {-0.8, 0.3})},
           shot(headingTo(cue, pocket), speed)};
 }
 
@@ -95,14 +89,16 @@ TEST(MatchThroughPhysics, ScratchGivesBallInHand) {
 }
 
 TEST(MatchThroughPhysics, WrongBallFirst) {
-  Match match(layout({ball(0, {-0.5, 0.0}), ball(2, {0.0, 0.0}), ball(1, {0.3, 0.4})}));
+  Match match(layout(
+      {BallState::at(0, {-0.5, 0.0}), BallState::at(2, {0.0, 0.0}), BallState::at(1, {0.3, 0.4})}));
   const TurnRecord r = match.play(shot(0.0, 1.5));
   expectTurn(r, Player::A, Foul::WrongBallFirst, Player::B, true);
 }
 
 TEST(MatchThroughPhysics, NoRailAfterContact) {
   // A soft full hit in the middle of the table: nothing reaches a cushion.
-  Match match(layout({ball(0, {-0.3, 0.0}), ball(1, {0.0, 0.0}), ball(9, {-1.0, 0.4})}));
+  Match match(layout({BallState::at(0, {-0.3, 0.0}), BallState::at(1, {0.0, 0.0}),
+                      BallState::at(9, {-1.0, 0.4})}));
   const TurnRecord r = match.play(shot(0.0, 0.3));
   expectTurn(r, Player::A, Foul::NoRail, Player::B, true);
   EXPECT_TRUE(r.verdict.pocketed.empty());
@@ -114,7 +110,8 @@ TEST(MatchThroughPhysics, CombinationOnTheNineWins) {
   const Vec2 dir = nineball::normalized(pocket - cue);
   const Vec2 one = cue + dir * 0.4;
   const Vec2 nine = one + dir * (2.0 * kR + 0.01);
-  Match match(layout({ball(0, cue), ball(1, one), ball(9, nine), ball(5, {-0.8, -0.3})}));
+  Match match(layout({BallState::at(0, cue), BallState::at(1, one), BallState::at(9, nine),
+                      BallState::at(5, {-0.8, -0.3})}));
   const TurnRecord r = match.play(shot(headingTo(cue, pocket), 3.0));
   EXPECT_TRUE(r.verdict.legal());
   ASSERT_TRUE(r.verdict.winner);
@@ -152,7 +149,8 @@ TEST(MatchThroughPhysics, BreakPushOutAndPass) {
 
 TEST(MatchThroughPhysics, ThreeFoulsInARow) {
   // Every turn sends the cue ball across the table, away from the object balls: no contact.
-  Match match(layout({ball(0, {-0.8, 0.0}), ball(1, {0.6, 0.0}), ball(9, {0.9, 0.3})}));
+  Match match(layout(
+      {BallState::at(0, {-0.8, 0.0}), BallState::at(1, {0.6, 0.0}), BallState::at(9, {0.9, 0.3})}));
   const Foul expected[] = {Foul::NoContact, Foul::NoContact, Foul::NoContact, Foul::NoContact,
                            Foul::ThreeFouls};
   Player shooter = Player::A;
