@@ -66,6 +66,14 @@ MatchSetup layout(std::vector<BallState> balls) {
   return setup;
 }
 
+// The computer plans as usual, but only once `release` is set: a slow planner on demand.
+void holdThinkingUntil(ComputerPlayer& c, std::atomic<bool>& release) {
+  c.setThinker([&release](nineball::ai::Planner& p, const nineball::ai::PlanInput& in, bool d) {
+    while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return nineball::app::planMove(p, in, d);
+  });
+}
+
 }  // namespace
 
 TEST(Opponent, NamesAndTheCycleOfTheOKey) {
@@ -108,10 +116,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   ComputerPlayer c(7);
   c.setOpponent(s, Level::Easy);
   std::atomic<bool> release{false};
-  c.setThinker([&release](nineball::ai::Planner& p, const nineball::ai::PlanInput& in, bool d) {
-    while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    return nineball::app::planMove(p, in, d);
-  });
+  holdThinkingUntil(c, release);
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
@@ -206,10 +211,7 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   ComputerPlayer c(1);
   c.setOpponent(s, Level::Easy);
   std::atomic<bool> release{false};
-  c.setThinker([&release](nineball::ai::Planner& p, const nineball::ai::PlanInput& in, bool d) {
-    while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    return nineball::app::planMove(p, in, d);
-  });
+  holdThinkingUntil(c, release);
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
