@@ -18,6 +18,12 @@ enum class ContactModel {
   Box2D,     ///< Box2D's own simultaneous contact solver
 };
 
+/// Which solver runs a scene.
+enum class Engine {
+  Box2D,      ///< Box2D moves the bodies, resolves the cushions and fires the pocket sensors
+  Reference,  ///< the exact event-based solver of the same model: no Box2D, no time step
+};
+
 /// Physical parameters, SI units. Every field can be overridden in a scene.
 struct PhysicsParams {
   double ball_mass = 0.170;           ///< kg (WPA 156-170 g)
@@ -54,6 +60,7 @@ struct StepParams {
   int position_iterations = 3;
   double scale = 100.0;  ///< Box2D units per metre (k)
   ContactModel contacts = ContactModel::Pairwise;
+  Engine engine = Engine::Box2D;
   double max_time = 600.0;  ///< s, a run to rest gives up after this long
   /// The plain fixed-rate reference: every ball, resting or not, stepped at every step, no
   /// skipping of idle work. Steps still split where a ball would outrun Box2D's travel limit.
@@ -73,6 +80,8 @@ struct StepParams {
 
 const char* clothModelName(ClothModel m);
 const char* contactModelName(ContactModel m);
+const char* engineName(Engine e);
+std::optional<Engine> engineFromName(const std::string& name);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
 std::optional<ContactModel> contactModelFromName(const std::string& name);
 

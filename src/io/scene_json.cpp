@@ -235,8 +235,8 @@ StepParams parseStep(const json& v) {
   const std::string path = "step";
   expectObject(v, path);
   allowOnly(v, path,
-            {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "max_time",
-             "baseline"});
+            {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "engine",
+             "max_time", "baseline"});
   StepParams s;
   if (const json* p = optional(v, "hz")) s.hz = number(*p, "step.hz", Bounds::positive(1e5));
   if (const json* p = optional(v, "velocity_iterations")) {
@@ -258,6 +258,15 @@ StepParams parseStep(const json& v) {
              "unknown contact model " + quote(name) + " (expected \"pairwise\" or \"box2d\")");
     }
     s.contacts = *model;
+  }
+  if (const json* p = optional(v, "engine")) {
+    const std::string name = text(*p, "step.engine");
+    auto engine = engineFromName(name);
+    if (!engine) {
+      refuse("step.engine",
+             "unknown engine " + quote(name) + " (expected \"box2d\" or \"reference\")");
+    }
+    s.engine = *engine;
   }
   if (const json* p = optional(v, "baseline")) {
     if (!p->is_boolean()) refuse("step.baseline", "expected true or false, found " + describe(*p));
