@@ -8,7 +8,8 @@
 #include "nineball/sim.hpp"
 #include "nineball/world.hpp"
 #include "physics/ball_collision.hpp"
-#include "physics/cloth.hpp"
+#include "physics/contact_times.hpp"
+#include "physics/motion.hpp"
 
 namespace {
 
@@ -66,20 +67,19 @@ void BM_RollingAmongRestingBalls(benchmark::State& state) {
 }
 BENCHMARK(BM_RollingAmongRestingBalls)->Arg(0)->Arg(9)->Arg(99)->Unit(benchmark::kMillisecond);
 
-void BM_ContactFraction(benchmark::State& state) {
-  const Vec2 rel{0.1, 0.02}, move{-0.2, 0.0};
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(physics::contactFraction(rel, move, 0.05715, 0.0, true));
-  }
+void BM_BallContactTime(benchmark::State& state) {
+  // A sliding ball curving into a resting one: the quartic root of their separation.
+  const physics::Path a{{0.0, 0.0}, {2.0, 0.1}, {-1.5, 0.8}}, b{{0.3, 0.05}, {}, {}};
+  for (auto _ : state) benchmark::DoNotOptimize(physics::ballContact(a, b, 0.05715, 1.0));
 }
-BENCHMARK(BM_ContactFraction);
+BENCHMARK(BM_BallContactTime);
 
-void BM_SlideAndRoll(benchmark::State& state) {
+void BM_SlidingState(benchmark::State& state) {
   const PhysicsParams p;
-  const physics::Motion m{{2.0, 0.3}, {1.0, -4.0, 20.0}};
-  for (auto _ : state) benchmark::DoNotOptimize(physics::slideAndRoll(m, 1.0 / 60.0, p));
+  const physics::Arc arc = physics::beginArc(0.0, {{}, {2.0, 0.3}, {1.0, -4.0, 20.0}}, p);
+  for (auto _ : state) benchmark::DoNotOptimize(physics::stateAt(arc, 1.0 / 60.0, p));
 }
-BENCHMARK(BM_SlideAndRoll);
+BENCHMARK(BM_SlidingState);
 
 }  // namespace
 

@@ -25,12 +25,4 @@ struct CollisionOutcome {
 /// parts are kept.
 CollisionOutcome collide(Vec2 u1, Vec2 u2, double m1, double m2, double e, Vec2 n);
 
-/// Two balls move linearly over a step: ball 2 relative to ball 1 starts at `rel` and moves by
-/// `rel_move` over the whole step. Returns the first fraction s in [from, 1] of the step at
-/// which their centres are `contact_distance` apart and closing, or nothing.
-/// A pair already closer than `contact_distance` at `from` counts as touching at `from` when
-/// `closing` says it approaches.
-std::optional<double> contactFraction(Vec2 rel, Vec2 rel_move, double contact_distance, double from,
-                                      bool closing);
-
 }  // namespace nineball::physics

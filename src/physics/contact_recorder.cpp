@@ -44,17 +44,7 @@ void ContactRecorder::BeginContact(b2Contact* contact) {
   Pair p{};
   if (!asBallPair(contact, p)) return;
   const std::size_t i = fixtureIndex(p.ball);
-  switch (p.other_kind) {
-    case FixtureKind::Cushion:
-      cushion_hits.push_back(i);
-      break;
-    case FixtureKind::Pocket:
-      ++over_pocket_[i];
-      break;
-    case FixtureKind::Ball:
-      ball_hits.emplace_back(i, fixtureIndex(p.other));
-      break;
-  }
+  if (p.other_kind == FixtureKind::Pocket) ++over_pocket_[i];
 }
 
 void ContactRecorder::EndContact(b2Contact* contact) {
@@ -66,16 +56,26 @@ void ContactRecorder::EndContact(b2Contact* contact) {
 
 void ContactRecorder::PreSolve(b2Contact* contact, const b2Manifold* /*old_manifold*/) {
   Pair p{};
-  if (asBallPair(contact, p) && p.other_kind == FixtureKind::Ball) {
+  if (!asBallPair(contact, p)) return;
+  if (p.other_kind == FixtureKind::Ball) {
+    contact->SetEnabled(ball_contacts);
     contact->SetRestitution(ball_restitution_);
     contact->SetRestitutionThreshold(threshold_);
+  } else if (p.other_kind == FixtureKind::Cushion) {
+    contact->SetEnabled(fixtureIndex(p.ball) == bouncing);
   }
 }
 
 void ContactRecorder::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) {
   Pair p{};
-  if (!asBallPair(contact, p) || p.other_kind != FixtureKind::Cushion) return;
+  if (!asBallPair(contact, p)) return;
   if (impulse->count < 1 || impulse->normalImpulses[0] <= 0.0f) return;
+  if (p.other_kind == FixtureKind::Ball) {
+    ball_hits.emplace_back(fixtureIndex(contact->GetFixtureA()),
+                           fixtureIndex(contact->GetFixtureB()));
+    return;
+  }
+  if (p.other_kind != FixtureKind::Cushion) return;
   b2WorldManifold wm;
   contact->GetWorldManifold(&wm);
   // Box2D's normal points from fixture A to fixture B.

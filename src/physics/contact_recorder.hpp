@@ -24,6 +24,13 @@ class ContactRecorder : public b2ContactListener {
     ball_restitution_ = e;
     threshold_ = threshold;
   }
+  /// Box2D resolves only what the world asks it to: the cushion contacts of one ball (a bounce
+  /// the world predicted), or every ball-ball contact (the Box2D contact model). Every other
+  /// contact is switched off for the step, since the world moves the balls itself.
+  static constexpr std::size_t kNoBall = static_cast<std::size_t>(-1);
+  std::size_t bouncing = kNoBall;
+  bool ball_contacts = false;
+
   /// Balls per index currently overlapping a pocket sensor.
   void resize(std::size_t balls) { over_pocket_.resize(balls, 0); }
 
@@ -41,8 +48,7 @@ class ContactRecorder : public b2ContactListener {
   };
   std::vector<CushionPush> cushion_pushes;  ///< this step, in solver order
 
-  std::vector<std::size_t> cushion_hits;                       ///< ball indices, this step
-  std::vector<std::pair<std::size_t, std::size_t>> ball_hits;  ///< Box2D contact model only
+  std::vector<std::pair<std::size_t, std::size_t>> ball_hits;  ///< pairs Box2D pushed apart
   bool overPocket(std::size_t ball) const { return over_pocket_[ball] > 0; }
 
  private:

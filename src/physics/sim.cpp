@@ -6,6 +6,7 @@
 #include <string>
 
 #include "nineball/world.hpp"
+#include "reference/reference_engine.hpp"
 
 namespace nineball {
 namespace {
@@ -108,6 +109,7 @@ std::optional<std::string> validateScene(const Scene& scene) {
 }
 
 SimResult simulate(const Scene& scene) {
+  if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
   World world(scene.table, scene.physics, scene.step);
   for (const BallState& b : scene.balls) world.addBall(b);
   if (scene.shot) world.strike(kCueBall, *scene.shot);
@@ -123,8 +125,7 @@ SimResult simulate(const Scene& scene) {
   const auto stop = std::chrono::steady_clock::now();
   result.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
   result.steps = world.steps();
-  // A run that came to rest early has the same state at the requested time.
-  result.time = scene.until && world.atRest() ? *scene.until : world.time();
+  result.time = world.time();
   result.balls = world.balls();
   result.events = world.events();
   if (started_at_rest) {

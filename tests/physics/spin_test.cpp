@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "physics/cloth.hpp"
+#include "physics/motion.hpp"
 #include "physics_fixtures.hpp"
 
 using namespace nineball;
@@ -37,7 +37,7 @@ std::unique_ptr<World> newWorld(const TableDef& t, const PhysicsParams& p, const
 }
 
 double slipOf(const BallState& b, double r) {
-  return length(physics::slip({b.vel, b.w}, r));
+  return length(physics::slip(b.vel, b.w, r));
 }
 
 const Event* firstBallHit(const World& w) {

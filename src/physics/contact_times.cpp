@@ -1,0 +1,98 @@
+#include "physics/contact_times.hpp"
+
+#include <cmath>
+
+#include "physics/ball_collision.hpp"
+#include "physics/polynomial.hpp"
+
+namespace nineball::physics {
+namespace {
+
+// |p(s) - q(s)|^2 - distance^2 for relative position d, velocity e and acceleration g.
+Quartic separation(Vec2 d, Vec2 e, Vec2 g, double distance) {
+  return {{dot(d, d) - distance * distance, 2.0 * dot(d, e), dot(e, e) + dot(d, g), dot(e, g),
+           0.25 * dot(g, g)}};
+}
+
+// Two circles `distance` apart at their closest: first touch while closing.
+std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horizon) {
+  const double gap = length(d) - distance;
+  if (gap <= kTouchTolerance) {
+    const double closing = -dot(normalized(d), e);
+    if (closing > kMinClosingSpeed) return 0.0;
+    return std::nullopt;
+  }
+  if (gap > length(e) * horizon + 0.5 * length(g) * horizon * horizon) return std::nullopt;
+  return firstCrossing(separation(d, e, g, distance), 0.0, horizon);
+}
+
+}  // namespace
+
+Cushions Cushions::of(const TableGeometry& table) {
+  Cushions c;
+  const auto& loop = table.cushion_loop;
+  const std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = loop[i], b = loop[(i + 1) % n];
+    const double len = length(b - a);
+    if (len <= 0.0) continue;
+    const Vec2 along = (b - a) / len;
+    // The loop runs clockwise: the table is on the right of each segment.
+    c.segments.push_back({a, b, along, {along.y, -along.x}, len});
+    // A left turn at b (walking clockwise) points b into the table.
+    const Vec2 next = loop[(i + 2) % n];
+    if (cross(b - a, next - b) > 0.0) c.corners.push_back(b);
+  }
+  return c;
+}
+
+double reach(const Path& path, double horizon) {
+  return length(path.v) * horizon + 0.5 * length(path.a) * horizon * horizon;
+}
+
+std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon) {
+  return meet(b.p - a.p, b.v - a.v, b.a - a.a, distance, horizon);
+}
+
+std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,
+                                         double horizon) {
+  std::optional<CushionHit> best;
+  const double limit = reach(path, horizon) + radius + kTouchTolerance;
+  auto consider = [&](double s, Vec2 normal) {
+    if (!best || s < best->s) best = CushionHit{s, normal};
+  };
+  for (const Cushions::Segment& seg : cushions.segments) {
+    const double height = dot(path.p - seg.a, seg.inward);
+    const double foot = dot(path.p - seg.a, seg.along);
+    if (height > limit || foot < -limit || foot > seg.length + limit) continue;
+    const double gap = height - radius;
+    const double vn = dot(path.v, seg.inward);
+    if (gap < -kTouchTolerance) continue;  // behind this segment's line: another one holds it
+    std::optional<double> s;
+    if (gap <= kTouchTolerance) {
+      if (vn < -kMinClosingSpeed) s = 0.0;
+    } else {
+      s = firstCrossing(Quartic{{gap, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0, horizon);
+    }
+    if (!s) continue;
+    const double at = dot(path.at(*s) - seg.a, seg.along);
+    if (at >= 0.0 && at <= seg.length) consider(*s, seg.inward);
+  }
+  for (Vec2 corner : cushions.corners) {
+    const Vec2 d = path.p - corner;
+    if (length(d) > limit) continue;
+    if (auto s = meet(d, path.v, path.a, radius, horizon)) {
+      consider(*s, normalized(path.at(*s) - corner));
+    }
+  }
+  return best;
+}
+
+std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon) {
+  const Vec2 d = path.p - centre;
+  if (dot(d, d) <= radius * radius) return 0.0;
+  if (length(d) - radius > reach(path, horizon)) return std::nullopt;
+  return firstCrossing(separation(d, path.v, path.a, radius), 0.0, horizon);
+}
+
+}  // namespace nineball::physics

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "nineball/table.hpp"
+#include "physics/motion.hpp"
+
+namespace nineball::physics {
+
+/// The cushion loop as the contact search needs it: each segment with its inward normal, and
+/// the corners that stick out into the table (jaw points), which a ball can meet head on.
+struct Cushions {
+  struct Segment {
+    Vec2 a, b;
+    Vec2 along;   ///< unit, a to b
+    Vec2 inward;  ///< unit normal into the table
+    double length;
+  };
+  std::vector<Segment> segments;
+  std::vector<Vec2> corners;
+
+  static Cushions of(const TableGeometry& table);
+};
+
+/// Where a path meets a cushion: the clock value and the unit normal from the cushion to the
+/// ball's centre.
+struct CushionHit {
+  double s = 0.0;
+  Vec2 normal;
+};
+
+/// The first clock value in [0, horizon] at which two balls on paths a and b are `distance`
+/// apart and closing. Balls already touching count only if they close faster than
+/// kMinClosingSpeed (slower: they rest against each other).
+std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon);
+
+/// The first clock value in [0, horizon] at which a ball of `radius` on the path touches a
+/// cushion segment or corner while moving into it.
+std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,
+                                         double horizon);
+
+/// The first clock value in [0, horizon] at which the path's point enters the circle.
+std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon);
+
+/// How far a path can get from its start within the horizon.
+double reach(const Path& path, double horizon);
+
+}  // namespace nineball::physics

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "nineball/params.hpp"
+#include "physics/motion.hpp"
+
+namespace nineball::physics {
+
+/// Below this normal speed (m/s) a contact is resting, not a bounce: Box2D applies no
+/// restitution under it either (its restitution threshold is set to the same value).
+constexpr double kRestingSpeed = 1e-4;
+
+/// The paper's cushion (section 7): the normal part of the velocity reversed and scaled by
+/// cushion_restitution, the tangential part kept. `normal` is the unit normal from the
+/// cushion to the ball. Returns the normal impulse the cushion gave (kg m/s) in `impulse`.
+Kinematics bounceOffCushion(Kinematics k, Vec2 normal, double mass, const PhysicsParams& p,
+                            double& impulse);
+
+/// Friction at the cushion nose (spin cloth only): it acts on the slip of the contact point,
+/// Coulomb with cushion_friction times the normal impulse, capped where the point stops
+/// slipping; side spin changes the angle off the rail, and the rail changes the side spin.
+Kinematics cushionFriction(Kinematics k, Vec2 normal, double normal_impulse, double mass,
+                           const PhysicsParams& p);
+
+/// A ball that rests against an obstacle (normal speed under kRestingSpeed) while its own
+/// slip drives it into it: the obstacle takes the part of the spin that presses, so that the
+/// ball slides along it instead of bouncing against it ever more often (a Zeno sequence).
+/// `towards` is the unit vector from the ball to the obstacle. Never adds energy.
+Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p);
+
+}  // namespace nineball::physics

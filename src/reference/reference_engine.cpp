@@ -1,0 +1,215 @@
+#include "reference/reference_engine.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "nineball/log.hpp"
+#include "physics/ball_collision.hpp"
+#include "physics/models/cushion.hpp"
+#include "physics/motion.hpp"
+#include "physics/next_event.hpp"
+
+namespace nineball::reference {
+namespace {
+
+using physics::Arc;
+using physics::Kinematics;
+using physics::NextEvent;
+
+struct Ball {
+  BallState state;  // id, mass, and where a pocketed ball dropped
+  Arc arc;
+  bool on_table = true;
+};
+
+class Run {
+ public:
+  explicit Run(const Scene& scene)
+      : p_(scene.physics),
+        table_(buildTable(scene.table, p_.ball_radius)),
+        search_(table_, p_) {
+    for (const BallState& b : scene.balls) {
+      Ball ball;
+      ball.state = b;
+      ball.state.mass = b.mass.value_or(p_.ball_mass);
+      ball.on_table = !b.pocket;
+      ball.arc = physics::beginArc(0.0, {b.pos, b.vel, b.w}, p_);
+      balls_.push_back(ball);
+    }
+  }
+
+  void strike(const Shot& shot) {
+    for (Ball& b : balls_) {
+      if (b.state.id != kCueBall || !b.on_table) continue;
+      if (length(shot.tip) > p_.miscue_limit) {
+        Event e;
+        e.type = EventType::Miscue;
+        e.a = kCueBall;
+        events_.push_back(e);
+        return;
+      }
+      const Vec2 v = shot.velocity();
+      const Vec3 w = p_.spin() ? physics::strikeSpin(fromAngle(shot.heading_rad), shot.speed,
+                                                     shot.tip, p_.ball_radius)
+                               : Vec3{};
+      b.arc = physics::beginArc(0.0, {b.arc.start.p, v, w}, p_);
+    }
+  }
+
+  bool settled() const {
+    for (const Ball& b : balls_) {
+      if (b.on_table && b.arc.translating()) return false;
+    }
+    return true;
+  }
+
+  // Runs until `end`, or until every ball has stopped when `to_rest`.
+  void run(double end, bool to_rest) {
+    const std::size_t cap = 100000 + 1000 * balls_.size();
+    std::size_t count = 0;
+    bool was_settled = settled();
+    while (t_ < end && !(to_rest && settled())) {
+      std::vector<physics::Mover> movers;
+      for (const Ball& b : balls_) movers.push_back({b.on_table ? &b.arc : nullptr, true});
+      const NextEvent e = search_.next(movers, t_, end);
+      t_ = e.t;
+      if (e.kind == NextEvent::Kind::None) break;
+      resolve(e);
+      if (++count > cap) {
+        logger("physics")->warn("t={:.6f}: more than {} events; stopped", t_, cap);
+        break;
+      }
+      if (!was_settled && settled()) {
+        Event rest;
+        rest.type = EventType::AllAtRest;
+        rest.t = t_;
+        events_.push_back(rest);
+      }
+      was_settled = settled();
+    }
+  }
+
+  SimResult result() const {
+    SimResult r;
+    r.time = t_;
+    for (const Ball& b : balls_) {
+      BallState s = b.state;
+      if (b.on_table) {
+        const Kinematics k = physics::stateAt(b.arc, t_, p_);
+        s.pos = k.p;
+        s.vel = k.v;
+        s.w = k.w;
+      } else {
+        s.vel = {};
+        s.w = {};
+      }
+      r.balls.push_back(s);
+    }
+    r.events = events_;
+    return r;
+  }
+
+  double time() const { return t_; }
+
+ private:
+  Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, t_, p_); }
+
+  void restart(Ball& b, const Kinematics& k) { b.arc = physics::beginArc(t_, k, p_); }
+
+  void resolve(const NextEvent& e) {
+    Ball& a = balls_[e.i];
+    switch (e.kind) {
+      case NextEvent::Kind::None:
+        return;
+      case NextEvent::Kind::PhaseEnd:
+        a.arc = physics::nextArc(a.arc, p_);
+        return;
+      case NextEvent::Kind::Ball: {
+        Ball& b = balls_[e.j];
+        Kinematics ka = now(a), kb = now(b);
+        const Vec2 n = normalized(kb.p - ka.p);
+        const auto out = physics::collide(ka.v, kb.v, *a.state.mass, *b.state.mass,
+                                          p_.ball_restitution, n);
+        ka.v = out.v1;
+        kb.v = out.v2;
+        if (dot(kb.v - ka.v, n) < physics::kRestingSpeed) {
+          ka = physics::stopPressing(ka, n, p_);
+          kb = physics::stopPressing(kb, -n, p_);
+        }
+        restart(a, ka);
+        restart(b, kb);
+        Event ev;
+        ev.type = EventType::BallBall;
+        ev.t = t_;
+        ev.a = a.state.id;
+        ev.b = b.state.id;
+        ev.va = ka.v;
+        ev.vb = kb.v;
+        events_.push_back(ev);
+        return;
+      }
+      case NextEvent::Kind::Cushion: {
+        double impulse = 0.0;
+        Kinematics k = physics::bounceOffCushion(now(a), e.normal, *a.state.mass, p_, impulse);
+        k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
+        k = physics::stopPressing(k, -e.normal, p_);
+        restart(a, k);
+        Event ev;
+        ev.type = EventType::Cushion;
+        ev.t = t_;
+        ev.a = a.state.id;
+        ev.va = k.v;
+        events_.push_back(ev);
+        return;
+      }
+      case NextEvent::Kind::Pocket: {
+        a.state.pos = now(a).p;
+        a.state.pocket = e.pocket;
+        a.on_table = false;
+        Event ev;
+        ev.type = EventType::Pocket;
+        ev.t = t_;
+        ev.a = a.state.id;
+        ev.pocket = e.pocket;
+        events_.push_back(ev);
+        return;
+      }
+    }
+  }
+
+  PhysicsParams p_;
+  TableGeometry table_;
+  physics::EventSearch search_;
+  std::vector<Ball> balls_;
+  std::vector<Event> events_;
+  double t_ = 0.0;
+};
+
+}  // namespace
+
+SimResult simulate(const Scene& scene) {
+  Run run(scene);
+  if (scene.shot) run.strike(*scene.shot);
+  const bool started_at_rest = run.settled();
+  const auto start = std::chrono::steady_clock::now();
+  if (scene.until) {
+    run.run(*scene.until, false);
+  } else {
+    run.run(scene.step.max_time, true);
+    if (!run.settled()) {
+      logger("physics")->warn("balls still moving after {} s of simulated time; stopped",
+                              scene.step.max_time);
+    }
+  }
+  const auto stop = std::chrono::steady_clock::now();
+  SimResult r = run.result();
+  r.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  if (started_at_rest) {
+    Event rest;
+    rest.type = EventType::AllAtRest;
+    r.events.push_back(rest);
+  }
+  return r;
+}
+
+}  // namespace nineball::reference
