@@ -102,6 +102,9 @@ struct BreakComparison {
   bool withinTolerance() const;
 };
 BreakComparison compareBreakEvents(const SimResult& got, const SimResult& want);
+/// Runs breakScene() to rest with the Box2D engine at `box2d_step` and with the reference
+/// engine, and compares their first events.
+BreakComparison compareBreak(const StepParams& box2d_step);
 
 /// Every whole shot, and the break.
 struct WholeShotReport {

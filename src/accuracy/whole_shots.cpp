@@ -411,13 +411,20 @@ WholeShotReport compareWholeShots(const StepParams& box2d_step) {
     report.reference_ms += r.reference_ms;
     report.shots.push_back(r);
   }
+  report.break_shot = compareBreak(box2d);
+  return report;
+}
+
+BreakComparison compareBreak(const StepParams& box2d_step) {
+  StepParams box2d = box2d_step;
+  box2d.engine = Engine::Box2D;
   const Scene brk = breakScene();
   const SimResult got = runWith(brk, box2d);
   const SimResult want = runWith(brk, referenceStep());
-  report.break_shot = compareBreakEvents(got, want);
-  report.break_shot.box2d_ms = got.wall_ms;
-  report.break_shot.reference_ms = want.wall_ms;
-  return report;
+  BreakComparison c = compareBreakEvents(got, want);
+  c.box2d_ms = got.wall_ms;
+  c.reference_ms = want.wall_ms;
+  return c;
 }
 
 }  // namespace nineball

@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "nineball/scenes.hpp"
 #include "nineball/whole_shots.hpp"
 
 using namespace nineball;
@@ -112,7 +113,7 @@ TEST(WholeShots, DefaultSettingsMatchTheReference) {
 }
 
 TEST(WholeShots, BreakFirstEventsMatchTheReference) {
-  const BreakComparison& b = defaultReport().break_shot;
+  const BreakComparison b = compareBreak(StepParams{});
   EXPECT_TRUE(b.events_match) << b.mismatch;
   EXPECT_EQ(b.events_compared, kBreakEventsCompared) << b.mismatch;
   EXPECT_LE(b.time_error_ms, kBreakEventTimeToleranceMs);
@@ -163,7 +164,7 @@ TEST(WholeShots, ComparisonCatchesAChangedCushion) {
 }
 
 TEST(WholeShots, ComparisonOfARunWithItselfIsExact) {
-  const Scene s = wholeShotScenes().front();
+  const Scene s = breakScene();
   const SimResult r = simulate(s);
   const ShotComparison c = compareRuns(s, r, r);
   EXPECT_TRUE(c.events_match);
