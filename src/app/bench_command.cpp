@@ -10,6 +10,7 @@
 #include "app/exit_codes.hpp"
 #include "app/svg_plot.hpp"
 #include "nineball/accuracy.hpp"
+#include "nineball/whole_shots.hpp"
 
 namespace nineball::app {
 namespace {
@@ -65,6 +66,9 @@ Row measure(const StepParams& step, int repeats) {
   Row row;
   row.step = step;
   row.errors = runAccuracyCases(step);
+  // Whole shots, strike to rest, against the reference engine: the worst final position.
+  row.errors.push_back({"whole-shot", "mm", compareWholeShots(step).worst_position_mm,
+                        kWholeShotPositionToleranceMm});
   std::vector<double> times;
   for (int i = 0; i < repeats; ++i) {
     row.timing = timeBreak(step);
@@ -126,6 +130,33 @@ void compareInterleaved(std::ostream& out, int repeats) {
                 "ratio per step %.2f, per break %.2f\n",
                 repeats, ws, wm, s.sim_time, wo, om, p.sim_time, ws / wo, wm / om);
   out << line;
+}
+
+StepParams referenceStep() {
+  StepParams s;
+  s.engine = Engine::Reference;
+  return s;
+}
+
+// The reference engine's own break to rest, interleaved with the default's. Returns its median.
+double referenceTiming(std::ostream& out, int repeats) {
+  std::vector<double> reference, box2d;
+  BreakTiming r{}, d{};
+  for (int i = 0; i < repeats; ++i) {
+    r = timeBreak(referenceStep());
+    d = timeBreak(StepParams{});
+    reference.push_back(r.wall_ms);
+    box2d.push_back(d.wall_ms);
+  }
+  const double mr = median(reference), md = median(box2d);
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "reference engine (exact, event-based; error 0 by definition), break to rest, "
+                "medians of %d interleaved runs: %.2f ms (%.2f s simulated); default %.2f ms; "
+                "ratio default / reference %.2f\n",
+                repeats, mr, r.sim_time, md, md / mr);
+  out << line;
+  return mr;
 }
 
 void rackGaps(std::ostream& out) {
@@ -196,6 +227,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     plot.push_back({r.timing.wall_ms, score, label(r.step), r.on_front, isDefault(r.step)});
   }
   compareInterleaved(out, std::max(options.repeats, 5));
+  const double reference_ms = referenceTiming(out, std::max(options.repeats, 5));
   rackGaps(out);
 
   if (!options.csv_path.empty() && !writeFileAtomically(options.csv_path, csv.str())) {
@@ -206,7 +238,8 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       !writeFileAtomically(options.svg_path,
                            errorTimePlot(plot,
                                          "nineball: error against run time per solver "
-                                         "setting (break to rest)"))) {
+                                         "setting (break to rest)",
+                                         ReferenceMark{reference_ms, "reference engine"}))) {
     err << "nineball bench: cannot write " << options.svg_path << '\n';
     return kExitBadInput;
   }

@@ -18,9 +18,10 @@ struct BenchOptions {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
 
 /// Sweeps the solver settings (step rate, velocity iterations, scale k, contact model, the
-/// baseline): for each, the worst error of every canonical case against its formula and the
-/// median wall time of a break to rest; marks the Pareto front; compares the default with
-/// the plain fixed-rate baseline, spin with no spin, and rack gaps.
+/// baseline): for each, the worst error of every canonical case against its formula and of
+/// the whole-shot suite against the reference engine, and the median wall time of a break to
+/// rest; marks the Pareto front; compares the default with the plain fixed-rate baseline, spin
+/// with no spin, the reference engine's own break time, and rack gaps.
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace nineball::app

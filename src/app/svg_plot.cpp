@@ -43,13 +43,18 @@ struct LogAxis {
 
 }  // namespace
 
-std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::string& title) {
+std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::string& title,
+                          const std::optional<ReferenceMark>& reference) {
   double tmin = 1e300, tmax = 0.0, emin = 1e300, emax = 0.0;
   for (const PlotPoint& p : points) {
     tmin = std::min(tmin, p.time_ms);
     tmax = std::max(tmax, p.time_ms);
     emin = std::min(emin, std::max(p.error, kErrorFloor));
     emax = std::max(emax, std::max(p.error, kErrorFloor));
+  }
+  if (reference) {
+    tmin = std::min(tmin, reference->time_ms);
+    tmax = std::max(tmax, reference->time_ms);
   }
   emax = std::max(emax, 1.0);
   const double plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
@@ -100,6 +105,19 @@ std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::strin
     svg << "<circle cx=\"" << num(px(p.time_ms)) << "\" cy=\"" << num(py(p.error)) << "\" r=\""
         << (p.chosen ? 7 : 4) << "\" fill=\"" << colour << "\"><title>" << escape(p.label)
         << "</title></circle>\n";
+  }
+  if (reference) {
+    // Error 0 has no place on a log axis: a line at its run time, the marker at the bottom.
+    const double xp = px(reference->time_ms), bottom = kTop + plot_h;
+    svg << "<line x1=\"" << num(xp) << "\" y1=\"" << kTop << "\" x2=\"" << num(xp) << "\" y2=\""
+        << bottom << "\" stroke=\"#2457a6\" stroke-width=\"1.5\" stroke-dasharray=\"2,3\"/>\n"
+        << "<path d=\"M" << num(xp) << ',' << num(bottom - 12)
+        << " l7,12 l-14,0 z\" fill=\"#2457a6\">"
+        << "<title>" << escape(reference->label) << "</title></path>\n"
+        << "<text x=\"" << num(xp + 5) << "\" y=\"" << num(kTop + 14) << "\" fill=\"#2457a6\">"
+        << escape(reference->label) << "</text>\n"
+        << "<text x=\"" << num(xp + 5) << "\" y=\"" << num(kTop + 28)
+        << "\" fill=\"#2457a6\">(error 0 by definition)</text>\n";
   }
   // The front's settings, listed beside the plot.
   double ly = kTop + 10;

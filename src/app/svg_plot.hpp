@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,17 @@ struct PlotPoint {
   bool chosen;    ///< the default setting
 };
 
+/// A run time with no error by definition (the reference engine, the yardstick of the errors):
+/// drawn as a labelled vertical line, its marker on the bottom of the error axis, which a log
+/// axis cannot take to zero. Not part of the Pareto front.
+struct ReferenceMark {
+  double time_ms;
+  std::string label;
+};
+
 /// An SVG scatter of error against run time, both axes logarithmic, the Pareto front joined
-/// and marked, the target (error 1) drawn as a line.
-std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::string& title);
+/// and marked, the target (error 1) drawn as a line, and the reference's run time if given.
+std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::string& title,
+                          const std::optional<ReferenceMark>& reference = std::nullopt);
 
 }  // namespace nineball::app
