@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "nineball/params.hpp"
+#include "nineball/table.hpp"
 
 namespace nineball {
 
@@ -30,6 +31,9 @@ struct StressReport {
 
   long failureCount() const;
 };
+
+/// How deep a ball of radius r at c sinks into the cushion loop (m; 0 or less when clear).
+double cushionSink(const TableGeometry& table, Vec2 c, double r);
 
 /// Runs every scenario twice, checking after every step: no NaN or infinity; every ball inside
 /// the cushions or pocketed; no two balls overlapping by more than 0.1 mm; kinetic energy

@@ -48,18 +48,6 @@ bool finite(const BallState& b) {
          std::isfinite(b.w.z);
 }
 
-double sinkIntoCushion(const TableGeometry& t, Vec2 c, double r) {
-  double sink = 0.0;
-  const auto& loop = t.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
-    const Vec2 ab = b - a;
-    const double u = std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
-    sink = std::max(sink, r - length(c - (a + ab * u)));
-  }
-  return sink;
-}
-
 class Checker {
  public:
   Checker(StressReport& report, std::string scenario)
@@ -121,7 +109,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
       }
       check.check("inside the cushions", w.table().insideLoop(b.pos),
                   "ball " + std::to_string(b.id));
-      check.check("not sunk into a cushion", sinkIntoCushion(w.table(), b.pos, r) <= kMaxSink,
+      check.check("not sunk into a cushion", cushionSink(w.table(), b.pos, r) <= kMaxSink,
                   "ball " + std::to_string(b.id));
       for (std::size_t j = i + 1; j < balls.size(); ++j) {
         if (balls[j].pocket) continue;
@@ -241,6 +229,19 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
 }
 
 }  // namespace
+
+double cushionSink(const TableGeometry& t, Vec2 c, double r) {
+  double sink = 0.0;
+  const auto& loop = t.cushion_loop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+    const Vec2 ab = b - a;
+    const double u = std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
+    sink = std::max(sink, r - length(c - (a + ab * u)));
+  }
+  return sink;
+}
+
 
 long StressReport::failureCount() const {
   long n = 0;

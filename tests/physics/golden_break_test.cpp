@@ -67,8 +67,18 @@ TEST(GoldenBreak, SameSceneSameBits) {
 
 TEST(GoldenBreak, PinnedHash) {
   const nineball::SimResult r = nineball::simulate(nineball::breakScene(1, 10.0));
-  constexpr std::uint64_t kPinned = 0x1d89e5e36d2292a9ULL;
+  constexpr std::uint64_t kPinned = 0xec17ead1547d435dULL;
   EXPECT_EQ(hashResult(r), kPinned) << "break hash is now 0x" << std::hex << hashResult(r);
+}
+
+TEST(GoldenBreak, ReferenceEnginePinnedHash) {
+  nineball::Scene scene = nineball::breakScene(1, 10.0);
+  scene.step.engine = nineball::Engine::Reference;
+  const nineball::SimResult r = nineball::simulate(scene);
+  EXPECT_EQ(hashResult(r), hashResult(nineball::simulate(scene)));
+  constexpr std::uint64_t kPinned = 0x9da1d7700b327b48ULL;
+  EXPECT_EQ(hashResult(r), kPinned) << "reference break hash is now 0x" << std::hex
+                                    << hashResult(r);
 }
 
 TEST(BreakShape, CueBallDoesNotFlyBackOffTheRack) {

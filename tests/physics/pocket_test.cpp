@@ -40,8 +40,9 @@ TEST(Pocket, EachPocketTakesABallSentIntoIt) {
     const BallState dropped = stateOf(*world, kCueBall);
     ASSERT_TRUE(dropped.pocket.has_value()) << name;
     EXPECT_EQ(*dropped.pocket, pocket.id);
-    // Dropped where its centre entered the drop circle, and it stays there.
-    EXPECT_LT(length(dropped.pos - pocket.drop_centre), pocket.drop_radius) << name;
+    // Dropped the instant its centre entered the drop circle, and it stays there.
+    EXPECT_NEAR(length(dropped.pos - pocket.drop_centre), pocket.drop_radius, kSinglePrecision)
+        << name;
     EXPECT_EQ(dropped.vel, Vec2{});
     for (int i = 0; i < 10; ++i) world->step();
     const BallState later = stateOf(*world, kCueBall);
