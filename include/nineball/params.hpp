@@ -32,7 +32,6 @@ struct PhysicsParams {
   double cushion_restitution = 0.85;  ///< ball-cushion e (0.6-0.9)
   double rolling_friction = 0.01;     ///< mu of the cloth model (rolling resistance)
   double sliding_friction = 0.2;      ///< mu of a sliding ball (spin model)
-  double ball_friction = 0.06;        ///< ball-ball friction (balls do not grip: unused)
   double cushion_friction = 0.2;      ///< mu between ball and cushion nose (spin model)
   double spin_decay = 10.0;           ///< rad/s^2, decay of spin about the vertical
   double gravity = 9.81;              ///< m/s^2

@@ -63,10 +63,19 @@ TableDef parseTable(const json& v) {
   return t;
 }
 
+// The cloth models that read a parameter, so that one no model reads is refused, not ignored.
+enum ClothUse : unsigned {
+  kSpinCloth = 1u << static_cast<unsigned>(ClothModel::Spin),
+  kFrictionCloth = 1u << static_cast<unsigned>(ClothModel::Friction),
+  kDampingCloth = 1u << static_cast<unsigned>(ClothModel::Damping),
+  kEveryCloth = kSpinCloth | kFrictionCloth | kDampingCloth,
+};
+
 struct ParamField {
   const char* name;
   double PhysicsParams::*field;
   Bounds bounds;
+  unsigned used_by;
 };
 
 // Every parameter reaches Box2D as a float: the upper limits, far beyond any real table, keep
@@ -74,20 +83,31 @@ struct ParamField {
 constexpr double kMaxMass = 100.0;  // kg
 
 const ParamField kParamFields[] = {
-    {"ball_mass", &PhysicsParams::ball_mass, Bounds::positive(kMaxMass)},
-    {"ball_radius", &PhysicsParams::ball_radius, Bounds::positive(1.0)},
-    {"ball_restitution", &PhysicsParams::ball_restitution, Bounds::closed(0.0, 1.0)},
-    {"cushion_restitution", &PhysicsParams::cushion_restitution, Bounds::closed(0.0, 1.0)},
-    {"rolling_friction", &PhysicsParams::rolling_friction, Bounds::nonNegative(10.0)},
-    {"sliding_friction", &PhysicsParams::sliding_friction, Bounds::nonNegative(10.0)},
-    {"ball_friction", &PhysicsParams::ball_friction, Bounds::nonNegative(10.0)},
-    {"spin_decay", &PhysicsParams::spin_decay, Bounds::nonNegative(1e4)},
-    {"cushion_friction", &PhysicsParams::cushion_friction, Bounds::nonNegative(10.0)},
-    {"miscue_limit", &PhysicsParams::miscue_limit, Bounds::closed(0.0, 1.0)},
-    {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0)},
-    {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0)},
-    {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed)},
+    {"ball_mass", &PhysicsParams::ball_mass, Bounds::positive(kMaxMass), kEveryCloth},
+    {"ball_radius", &PhysicsParams::ball_radius, Bounds::positive(1.0), kEveryCloth},
+    {"ball_restitution", &PhysicsParams::ball_restitution, Bounds::closed(0.0, 1.0), kEveryCloth},
+    {"cushion_restitution", &PhysicsParams::cushion_restitution, Bounds::closed(0.0, 1.0),
+     kEveryCloth},
+    {"rolling_friction", &PhysicsParams::rolling_friction, Bounds::nonNegative(10.0),
+     kSpinCloth | kFrictionCloth},
+    {"sliding_friction", &PhysicsParams::sliding_friction, Bounds::nonNegative(10.0), kSpinCloth},
+    {"spin_decay", &PhysicsParams::spin_decay, Bounds::nonNegative(1e4), kSpinCloth},
+    {"cushion_friction", &PhysicsParams::cushion_friction, Bounds::nonNegative(10.0), kSpinCloth},
+    {"miscue_limit", &PhysicsParams::miscue_limit, Bounds::closed(0.0, 1.0), kEveryCloth},
+    {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0), kSpinCloth | kFrictionCloth},
+    {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0), kDampingCloth},
+    {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed), kDampingCloth},
 };
+
+// What reads a parameter, for the message that refuses one the chosen cloth does not read.
+std::string clothsUsing(unsigned used_by) {
+  std::string out;
+  for (ClothModel m : {ClothModel::Spin, ClothModel::Friction, ClothModel::Damping}) {
+    if (!(used_by & (1u << static_cast<unsigned>(m)))) continue;
+    out += std::string(out.empty() ? "" : " or ") + quote(clothModelName(m));
+  }
+  return out;
+}
 
 PhysicsParams parsePhysics(const json& v) {
   const std::string path = "physics";
@@ -117,6 +137,11 @@ PhysicsParams parsePhysics(const json& v) {
       p.cloth = *model;
       continue;
     }
+    if (key == "ball_friction") {
+      refuse(field_path,
+             "not used by any model yet: balls do not grip each other (ball-ball friction is "
+             "not modelled)");
+    }
     const auto* f = std::find_if(std::begin(kParamFields), std::end(kParamFields),
                                  [&](const ParamField& pf) { return key == pf.name; });
     if (f == std::end(kParamFields)) {
@@ -125,6 +150,13 @@ PhysicsParams parsePhysics(const json& v) {
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
     p.*(f->field) = number(item.value(), field_path, f->bounds);
+  }
+  // Checked once the cloth is known, wherever "cloth" and "preset" appear in the object.
+  for (const ParamField& pf : kParamFields) {
+    if (!optional(v, pf.name) || (pf.used_by & (1u << static_cast<unsigned>(p.cloth)))) continue;
+    refuse(member(path, pf.name), std::string("not used by the ") + quote(clothModelName(p.cloth)) +
+                                      " cloth (only by the " + clothsUsing(pf.used_by) +
+                                      " cloth)");
   }
   return p;
 }
@@ -282,6 +314,29 @@ StepParams parseStep(const json& v) {
 
 namespace {
 
+// Fields that only some settings read: given where nothing reads them, they are refused, so
+// that no value is silently ignored.
+void refuseWhatNothingReads(const json& doc, const Scene& scene) {
+  if (!scene.physics.spin()) {
+    const json& balls = doc.at("balls");
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (scene.balls[i].w == Vec3{}) continue;
+      refuse("balls[" + std::to_string(i) + "].w",
+             "the " + quote(clothModelName(scene.physics.cloth)) +
+                 " cloth carries no spin (only the \"spin\" cloth does)");
+    }
+  }
+  if (scene.step.engine != Engine::Reference) return;
+  const json& step = doc.at("step");
+  for (const char* key :
+       {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "baseline"}) {
+    if (optional(step, key)) {
+      refuse(member("step", key), "not used by the reference engine, which has no time step "
+                                  "and no Box2D (only by the \"box2d\" engine)");
+    }
+  }
+}
+
 Scene parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
   allowOnly(doc, "", {"table", "physics", "balls", "shot", "until", "step"});
@@ -292,6 +347,7 @@ Scene parseDocument(const json& doc) {
   if (const json* p = optional(doc, "shot")) scene.shot = parseShot(*p, scene.balls, scene.physics);
   if (const json* p = optional(doc, "until")) scene.until = parseUntil(*p);
   if (const json* p = optional(doc, "step")) scene.step = parseStep(*p);
+  refuseWhatNothingReads(doc, scene);
   if (auto problem = validateScene(scene)) throw ParseError{*problem};
   return scene;
 }

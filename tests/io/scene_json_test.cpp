@@ -253,19 +253,42 @@ TEST(SceneJson, ReadsEveryPhysicsParameter) {
   const Scene s = accepted(scene(R"("physics": {
       "ball_mass": 0.16, "ball_radius": 0.028, "ball_restitution": 0.9,
       "cushion_restitution": 0.7, "rolling_friction": 0.02, "sliding_friction": 0.3,
-      "ball_friction": 0.05, "spin_decay": 8, "gravity": 9.8, "linear_damping": 0.5,
-      "rest_speed": 0.002})"));
+      "cushion_friction": 0.1, "spin_decay": 8, "gravity": 9.8, "miscue_limit": 0.6})"));
   EXPECT_EQ(s.physics.ball_mass, 0.16);
   EXPECT_EQ(s.physics.ball_radius, 0.028);
   EXPECT_EQ(s.physics.ball_restitution, 0.9);
   EXPECT_EQ(s.physics.cushion_restitution, 0.7);
   EXPECT_EQ(s.physics.rolling_friction, 0.02);
   EXPECT_EQ(s.physics.sliding_friction, 0.3);
-  EXPECT_EQ(s.physics.ball_friction, 0.05);
+  EXPECT_EQ(s.physics.cushion_friction, 0.1);
   EXPECT_EQ(s.physics.spin_decay, 8.0);
   EXPECT_EQ(s.physics.gravity, 9.8);
-  EXPECT_EQ(s.physics.linear_damping, 0.5);
-  EXPECT_EQ(s.physics.rest_speed, 0.002);
+  EXPECT_EQ(s.physics.miscue_limit, 0.6);
+  const Scene d = accepted(
+      scene(R"("physics": {"cloth": "damping", "linear_damping": 0.5, "rest_speed": 0.002})"));
+  EXPECT_EQ(d.physics.linear_damping, 0.5);
+  EXPECT_EQ(d.physics.rest_speed, 0.002);
+}
+
+TEST(SceneJson, RefusesAParameterNoModelReads) {
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": 0.05})"), "physics.ball_friction",
+                        "not used by any model yet"));
+  // The cloth may come after the parameter: the check waits for it.
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"spin_decay": 5, "preset": "paper"})"),
+                        "physics.spin_decay", "not used by the \"friction\" cloth"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"linear_damping": 0.5})"), "physics.linear_damping",
+                        "only by the \"damping\" cloth"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cloth": "damping", "gravity": 9.8})"),
+                        "physics.gravity", "\"spin\" or \"friction\""));
+  EXPECT_TRUE(refusedAt(R"({"physics": {"preset": "paper"},
+                           "balls": [{"id": 0, "x": 0, "y": 0, "w": [0, 10, 0]}]})",
+                        "balls[0].w", "carries no spin"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"engine": "reference", "hz": 120})"), "step.hz",
+                        "not used by the reference engine"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"scale": 50, "engine": "reference"})"), "step.scale",
+                        "no time step"));
+  const Scene r = accepted(scene(R"("step": {"engine": "reference", "max_time": 5})"));
+  EXPECT_EQ(r.step.engine, Engine::Reference);
 }
 
 TEST(SceneJson, ReadsANamedTable) {
