@@ -115,8 +115,14 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
         if (balls[j].pocket) continue;
         const double gap = length(balls[j].pos - b.pos) - 2.0 * r;
         if (gap > 0.01) continue;
-        check.check("no overlap", gap >= -kMaxOverlap,
-                    "balls " + std::to_string(b.id) + "," + std::to_string(balls[j].id));
+        if (gap >= -kMaxOverlap) {
+          check.check("no overlap", true);
+          continue;
+        }
+        std::ostringstream what;
+        what << "balls " << b.id << "," << balls[j].id << " by " << -gap * 1e3 << " mm at t "
+             << w.time() << " s";
+        check.check("no overlap", false, what.str());
       }
     }
     events_seen = events.size();

@@ -59,7 +59,8 @@ std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::strin
   emax = std::max(emax, 1.0);
   const double plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
   const LogAxis x{std::floor(std::log10(tmin)), std::ceil(std::log10(tmax)), plot_w};
-  const LogAxis y{std::floor(std::log10(emin)), std::ceil(std::log10(emax)), plot_h};
+  // A point near the bottom decade line gets a decade below it, not a seat on the axis.
+  const LogAxis y{std::floor(std::log10(emin) - 0.3), std::ceil(std::log10(emax)), plot_h};
   auto px = [&](double t) { return kLeft + x.at(t); };
   auto py = [&](double e) { return kTop + plot_h - y.at(std::max(e, kErrorFloor)); };
 

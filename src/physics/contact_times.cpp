@@ -20,7 +20,13 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
   if (gap <= kTouchTolerance) {
     const double closing = -dot(normalized(d), e);
     if (closing > kMinClosingSpeed) return 0.0;
-    return std::nullopt;
+    // Parting, but spin or the cloth may bring them back: |d(s)|^2 - |d(0)|^2 = s c(s), so
+    // they are back at today's distance at the first root of c. Slower parting is a resting
+    // contact: chasing it would be an endless run of ever smaller bounces.
+    if (-closing <= kMinClosingSpeed) return std::nullopt;
+    return firstCrossing(Quartic{{2.0 * dot(d, e), dot(e, e) + dot(d, g), dot(e, g),
+                                  0.25 * dot(g, g), 0.0}},
+                         0.0, horizon);
   }
   if (gap > length(e) * horizon + 0.5 * length(g) * horizon * horizon) return std::nullopt;
   return firstCrossing(separation(d, e, g, distance), 0.0, horizon);
@@ -70,7 +76,14 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     if (gap < -kTouchTolerance) continue;  // behind this segment's line: another one holds it
     std::optional<double> s;
     if (gap <= kTouchTolerance) {
-      if (vn < -kMinClosingSpeed) s = 0.0;
+      if (vn < -kMinClosingSpeed) {
+        s = 0.0;
+      } else if (vn > kMinClosingSpeed) {
+        // Leaving the cushion, perhaps to be pulled back by spin: back on it when the height
+        // gained, s (vn + a_n s / 2), is zero again.
+        s = firstCrossing(Quartic{{vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0, 0.0}}, 0.0,
+                          horizon);
+      }
     } else {
       s = firstCrossing(Quartic{{gap, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0, horizon);
     }
