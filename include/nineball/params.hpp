@@ -57,7 +57,7 @@ struct StepParams {
   double hz = 60.0;  ///< base step rate; steps split further for fast balls and contacts
   int velocity_iterations = 8;
   int position_iterations = 3;
-  double scale = 100.0;  ///< Box2D units per metre (k)
+  double scale = 50.0;  ///< Box2D units per metre (k)
   ContactModel contacts = ContactModel::Pairwise;
   Engine engine = Engine::Box2D;
   double max_time = 600.0;  ///< s, a run to rest gives up after this long

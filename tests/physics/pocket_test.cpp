@@ -11,7 +11,7 @@ namespace {
 // How far outside (or inside) the drop circle a ball is made to stop in the lip tests: far
 // more than the stopping-distance error (0.5 % of 0.3 m would be 1.5 mm; measured far less).
 constexpr double kLipMargin = 0.002;
-// Box2D keeps positions as floats (in units of metres x 100): a micrometre is far above
+// Box2D keeps positions as floats (in units of metres x k): a micrometre is far above
 // their rounding and far below any real drift.
 constexpr double kSinglePrecision = 1e-6;
 
