@@ -248,7 +248,6 @@ double cushionSink(const TableGeometry& t, Vec2 c, double r) {
   return sink;
 }
 
-
 long StressReport::failureCount() const {
   long n = 0;
   for (const auto& [what, count] : failures) n += count;

@@ -155,8 +155,7 @@ PhysicsParams parsePhysics(const json& v) {
   for (const ParamField& pf : kParamFields) {
     if (!optional(v, pf.name) || (pf.used_by & (1u << static_cast<unsigned>(p.cloth)))) continue;
     refuse(member(path, pf.name), std::string("not used by the ") + quote(clothModelName(p.cloth)) +
-                                      " cloth (only by the " + clothsUsing(pf.used_by) +
-                                      " cloth)");
+                                      " cloth (only by the " + clothsUsing(pf.used_by) + " cloth)");
   }
   return p;
 }
@@ -331,8 +330,9 @@ void refuseWhatNothingReads(const json& doc, const Scene& scene) {
   for (const char* key :
        {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "baseline"}) {
     if (optional(step, key)) {
-      refuse(member("step", key), "not used by the reference engine, which has no time step "
-                                  "and no Box2D (only by the \"box2d\" engine)");
+      refuse(member("step", key),
+             "not used by the reference engine, which has no time step "
+             "and no Box2D (only by the \"box2d\" engine)");
     }
   }
 }

@@ -24,9 +24,9 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
     // they are back at today's distance at the first root of c. Slower parting is a resting
     // contact: chasing it would be an endless run of ever smaller bounces.
     if (-closing <= kMinClosingSpeed) return std::nullopt;
-    return firstCrossing(Quartic{{2.0 * dot(d, e), dot(e, e) + dot(d, g), dot(e, g),
-                                  0.25 * dot(g, g), 0.0}},
-                         0.0, horizon);
+    return firstCrossing(
+        Quartic{{2.0 * dot(d, e), dot(e, e) + dot(d, g), dot(e, g), 0.25 * dot(g, g), 0.0}}, 0.0,
+        horizon);
   }
   if (gap > length(e) * horizon + 0.5 * length(g) * horizon * horizon) return std::nullopt;
   return firstCrossing(separation(d, e, g, distance), 0.0, horizon);

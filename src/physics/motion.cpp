@@ -42,10 +42,14 @@ Arc restOrSpin(Arc arc, const PhysicsParams& p) {
 
 const char* phaseName(Phase p) {
   switch (p) {
-    case Phase::Sliding: return "sliding";
-    case Phase::Rolling: return "rolling";
-    case Phase::Spinning: return "spinning";
-    case Phase::Rest: return "rest";
+    case Phase::Sliding:
+      return "sliding";
+    case Phase::Rolling:
+      return "rolling";
+    case Phase::Spinning:
+      return "spinning";
+    case Phase::Rest:
+      return "rest";
   }
   return "?";
 }
@@ -93,8 +97,7 @@ Arc beginArc(double t0, const Kinematics& k, const PhysicsParams& p) {
       arc.phase = Phase::Rolling;
       // v(t) = v0 exp(-c t) reaches rest_speed after ln(v0 / rest_speed) / c.
       const double c = p.linear_damping;
-      arc.duration =
-          c > 0.0 && p.rest_speed > 0.0 ? std::log(speed / p.rest_speed) / c : kNever;
+      arc.duration = c > 0.0 && p.rest_speed > 0.0 ? std::log(speed / p.rest_speed) / c : kNever;
       return arc;
     }
   }

@@ -33,7 +33,7 @@ struct Arc {
   double t0 = 0.0;
   Kinematics start;
   Phase phase = Phase::Rest;
-  Vec2 accel;               ///< m/s^2 while sliding or rolling (polynomial cloths)
+  Vec2 accel;                ///< m/s^2 while sliding or rolling (polynomial cloths)
   double duration = kNever;  ///< s until the phase ends by itself
 
   double end() const { return t0 + duration; }

@@ -11,6 +11,7 @@
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/contact_recorder.hpp"
+#include "physics/models/ball_contact.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
@@ -285,14 +286,7 @@ struct World::Impl {
       logger("physics")->debug("t={:.6f} Box2D saw no contact of {} and {}", time, a.id, b.id);
     }
     Kinematics sa = now(a), sb = now(b);
-    const Vec2 n = normalized(sb.p - sa.p);
-    const auto out = physics::collide(sa.v, sb.v, a.mass, b.mass, phys.ball_restitution, n);
-    sa.v = out.v1;
-    sb.v = out.v2;
-    if (dot(sb.v - sa.v, n) < physics::kRestingSpeed) {
-      sa = physics::stopPressing(sa, n, phys);
-      sb = physics::stopPressing(sb, -n, phys);
-    }
+    physics::collideBalls(sa, sb, a.mass, b.mass, phys);
     restart(a, sa);
     restart(b, sb);
     pushBallEvent(a, b, sa.v, sb.v);

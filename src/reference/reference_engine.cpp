@@ -5,6 +5,7 @@
 
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
+#include "physics/models/ball_contact.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
@@ -25,9 +26,7 @@ struct Ball {
 class Run {
  public:
   explicit Run(const Scene& scene)
-      : p_(scene.physics),
-        table_(buildTable(scene.table, p_.ball_radius)),
-        search_(table_, p_) {
+      : p_(scene.physics), table_(buildTable(scene.table, p_.ball_radius)), search_(table_, p_) {
     for (const BallState& b : scene.balls) {
       Ball ball;
       ball.state = b;
@@ -127,15 +126,7 @@ class Run {
       case NextEvent::Kind::Ball: {
         Ball& b = balls_[e.j];
         Kinematics ka = now(a), kb = now(b);
-        const Vec2 n = normalized(kb.p - ka.p);
-        const auto out = physics::collide(ka.v, kb.v, *a.state.mass, *b.state.mass,
-                                          p_.ball_restitution, n);
-        ka.v = out.v1;
-        kb.v = out.v2;
-        if (dot(kb.v - ka.v, n) < physics::kRestingSpeed) {
-          ka = physics::stopPressing(ka, n, p_);
-          kb = physics::stopPressing(kb, -n, p_);
-        }
+        physics::collideBalls(ka, kb, *a.state.mass, *b.state.mass, p_);
         restart(a, ka);
         restart(b, kb);
         Event ev;

@@ -77,8 +77,8 @@ TEST(GoldenBreak, ReferenceEnginePinnedHash) {
   const nineball::SimResult r = nineball::simulate(scene);
   EXPECT_EQ(hashResult(r), hashResult(nineball::simulate(scene)));
   constexpr std::uint64_t kPinned = 0x9da1d7700b327b48ULL;
-  EXPECT_EQ(hashResult(r), kPinned) << "reference break hash is now 0x" << std::hex
-                                    << hashResult(r);
+  EXPECT_EQ(hashResult(r), kPinned)
+      << "reference break hash is now 0x" << std::hex << hashResult(r);
 }
 
 TEST(BreakShape, CueBallDoesNotFlyBackOffTheRack) {
