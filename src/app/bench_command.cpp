@@ -6,10 +6,10 @@
 #include <sstream>
 #include <vector>
 
-#include "app/atomic_file.hpp"
 #include "app/exit_codes.hpp"
 #include "app/svg_plot.hpp"
 #include "nineball/accuracy.hpp"
+#include "nineball/atomic_file.hpp"
 #include "nineball/whole_shots.hpp"
 
 namespace nineball::app {
@@ -189,6 +189,14 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options) {
 }
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  // A destination that cannot be written is refused before minutes of measuring, not after.
+  for (const std::string* path : {&options.csv_path, &options.svg_path}) {
+    std::string why;
+    if (!path->empty() && !canWriteFile(*path, why)) {
+      err << "nineball bench: " << why << '\n';
+      return kExitBadInput;
+    }
+  }
   std::vector<Row> rows;
   for (const StepParams& s : settings(options.quick)) rows.push_back(measure(s, options.repeats));
   std::vector<std::pair<double, double>> points;
@@ -230,8 +238,9 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   const double reference_ms = referenceTiming(out, std::max(options.repeats, 5));
   rackGaps(out);
 
-  if (!options.csv_path.empty() && !writeFileAtomically(options.csv_path, csv.str())) {
-    err << "nineball bench: cannot write " << options.csv_path << '\n';
+  std::string why;
+  if (!options.csv_path.empty() && !writeFileAtomically(options.csv_path, csv.str(), why)) {
+    err << "nineball bench: " << why << '\n';
     return kExitBadInput;
   }
   if (!options.svg_path.empty() &&
@@ -239,8 +248,9 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
                            errorTimePlot(plot,
                                          "nineball: error against run time per solver "
                                          "setting (break to rest)",
-                                         ReferenceMark{reference_ms, "reference engine"}))) {
-    err << "nineball bench: cannot write " << options.svg_path << '\n';
+                                         ReferenceMark{reference_ms, "reference engine"}),
+                           why)) {
+    err << "nineball bench: " << why << '\n';
     return kExitBadInput;
   }
   return out ? kExitOk : kExitInternal;

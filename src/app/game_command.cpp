@@ -45,7 +45,10 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));
   opts.push_back(app.add_flag("--fullscreen", o.fullscreen, "Game window: start in full screen"));
   opts.push_back(
-      app.add_option("--screenshot", o.screenshot, "Draw the scene into this PNG file and exit"));
+      app.add_option("--screenshot", o.screenshot, "Draw the scene into this PNG file and exit")
+          ->check([](const std::string& name) {
+            return name.empty() ? std::string("needs a file name") : std::string();
+          }));
   opts.push_back(app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
                                 "first frame; - reads standard input"));

@@ -2,9 +2,8 @@
 
 #include <SFML/Graphics/Image.hpp>
 #include <SFML/Graphics/Texture.hpp>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
+
+#include "nineball/atomic_file.hpp"
 
 namespace nineball::render {
 
@@ -16,19 +15,15 @@ bool saveWindowPng(const sf::RenderWindow& window, const std::string& path, std:
   }
   texture.update(window);
   const sf::Image image = texture.copyToImage();
-  // SFML picks the format from the extension, so the temporary file ends in .png too.
-  const std::string tmp = path + ".tmp.png";
-  if (!image.saveToFile(tmp)) {
-    std::remove(tmp.c_str());
-    why = "cannot write " + tmp;
-    return false;
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    why = "cannot rename " + tmp + " to " + path + ": " + std::strerror(errno);
-    std::remove(tmp.c_str());
-    return false;
-  }
-  return true;
+  // SFML picks the format from the extension, so the temporary file ends in .png too; it
+  // reports no short write, so the file is read back before it takes the name asked for.
+  return writeFileAtomicallyWith(
+      path, ".png", [&image](const std::string& tmp) { return image.saveToFile(tmp); },
+      [&image](const std::string& tmp) {
+        sf::Image back;
+        return back.loadFromFile(tmp) && back.getSize() == image.getSize();
+      },
+      why);
 }
 
 }  // namespace nineball::render

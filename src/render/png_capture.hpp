@@ -6,8 +6,7 @@
 namespace nineball::render {
 
 /// Saves what the window shows now (its back buffer, before display) as a PNG. The file is
-/// written whole or not at all: to FILE.tmp.png first, then renamed. False with `why` on
-/// failure.
+/// written whole or not at all (nineball/atomic_file.hpp). False with `why` on failure.
 bool saveWindowPng(const sf::RenderWindow& window, const std::string& path, std::string& why);
 
 }  // namespace nineball::render

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/exit_codes.hpp"
 #include "app/game/computer_player.hpp"
 #include "app/game/display_probe.hpp"
 #include "app/game/frame_builder.hpp"
@@ -16,6 +17,7 @@
 #include "app/game/game_input.hpp"
 #include "app/game/game_session.hpp"
 #include "audio/impact_sounds.hpp"
+#include "nineball/atomic_file.hpp"
 #include "nineball/log.hpp"
 #include "render/fonts.hpp"
 #include "render/png_capture.hpp"
@@ -131,6 +133,11 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
   SfmlErrToLog sfml_log;
   GameOptions options = options_in;
   const bool capture = !options.screenshot.empty();
+  // Refused before a window opens and frames are drawn for nothing.
+  if (capture && !canWriteFile(options.screenshot, why)) {
+    err << "nineball: --screenshot: " << why << '\n';
+    return kExitBadInput;
+  }
   const bool benchmark = !capture && options.frames.has_value();
   if (!capture) fitDesktop(options);
   bool fullscreen = options.fullscreen && !capture;
@@ -181,7 +188,7 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     if (capture && frame >= frame_limit) {
       if (!render::saveWindowPng(window, options.screenshot, why)) {
         err << "nineball: --screenshot: " << why << '\n';
-        return 1;
+        return kExitBadInput;
       }
       logger("game")->info("saved {} after {} frames", options.screenshot, frame);
       break;
