@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "nineball/params.hpp"
+#include "nineball/sim.hpp"
 #include "nineball/table.hpp"
 
 namespace nineball {
@@ -14,6 +15,7 @@ namespace nineball {
 struct StressOptions {
   std::uint64_t seed = 1;
   int random_layouts = 200;     ///< random tables and shots, up to 13 m/s and full spin
+  int random_settings = 300;    ///< scenes with every setting drawn from its allowed range
   int crowded_balls = 100;      ///< balls on the crowded table
   double long_run_s = 60.0;     ///< simulated seconds of the frictionless endless run
   double rest_within_s = 60.0;  ///< every scenario with a cloth must be at rest by then
@@ -32,8 +34,9 @@ struct StressReport {
   long failureCount() const;
 };
 
-/// How deep a ball of radius r at c sinks into the cushion loop (m; 0 or less when clear).
-double cushionSink(const TableGeometry& table, Vec2 c, double r);
+
+/// The first scenario whose name starts with `name`, as a scene (to run it on its own).
+std::optional<Scene> stressScene(const StressOptions& options, const std::string& name);
 
 /// Runs every scenario twice, checking after every step: no NaN or infinity; every ball inside
 /// the cushions or pocketed; no two balls overlapping by more than 0.1 mm; kinetic energy

@@ -65,6 +65,13 @@ struct TableGeometry {
   std::optional<PocketId> pocketAt(Vec2 p) const;
 };
 
+/// How deep a ball of radius r at c sinks into the cushion loop (m; 0 or less when clear).
+double cushionSink(const TableGeometry& table, Vec2 c, double r);
+
+/// Empty when a table can hold balls of radius r: every rail at least a ball's diameter long
+/// between its pockets, and jaws and cups that cross nothing. Else why not, naming the table.
+std::optional<std::string> checkTable(const TableDef& def, double r);
+
 /// Builds the cushion loop and pockets. `ball_radius` sets how deep the pocket cups are.
 TableGeometry buildTable(const TableDef& def, double ball_radius);
 

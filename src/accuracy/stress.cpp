@@ -5,6 +5,7 @@
 #include <functional>
 #include <sstream>
 
+#include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/world.hpp"
@@ -28,7 +29,8 @@ struct Scenario {
   StepParams step;
   std::vector<BallState> balls;
   std::optional<Shot> shot;
-  double run_s = 0.0;  // 0: until rest (must come within rest_within_s)
+  double run_s = 0.0;        // 0: until rest (must come within rest_within_s)
+  bool fixed_step = false;  // keeps its own step settings, not the command's
 };
 
 double energy(const std::vector<BallState>& balls, double r, double mass) {
@@ -57,7 +59,9 @@ class Checker {
     ++report_.checks;
     if (ok) return;
     ++report_.failures[what];
-    if (report_.first_failures.size() < kFailuresKept) {
+    // The first failure of each scenario, so that one bad scene cannot hide the others.
+    if (!told_ && report_.first_failures.size() < kFailuresKept) {
+      told_ = true;
       report_.first_failures.push_back(name_ + ": " + what + (detail.empty() ? "" : " " + detail));
     }
   }
@@ -65,6 +69,7 @@ class Checker {
  private:
   StressReport& report_;
   std::string name_;
+  bool told_ = false;
 };
 
 // One run; returns a fingerprint of everything it produced, for the twin-run comparison.
@@ -151,6 +156,147 @@ std::vector<BallState> randomLayout(std::uint64_t& rng, const TableGeometry& t, 
   return balls;
 }
 
+
+double logUniform(std::uint64_t& rng, double lo, double hi) {
+  return lo * std::pow(hi / lo, uniform(rng, 0.0, 1.0));
+}
+
+// One of 0, 1 or anything between: the ends are where restitution breaks solvers.
+double restitution(std::uint64_t& rng) {
+  const auto pick = splitmix64(rng) % 3;
+  return pick == 0 ? 0.0 : pick == 1 ? 1.0 : uniform(rng, 0.0, 1.0);
+}
+
+// A custom table anywhere in the allowed range: from the smallest that keeps a ball's
+// diameter of rail between every two pockets to ten metres, with mouths from narrower than
+// a ball (pockets nothing can enter) to six radii.
+TableDef drawTable(std::uint64_t& rng, double r) {
+  if (splitmix64(rng) % 4 == 0) {
+    const TableDef named[] = {TableDef::nineFoot(), TableDef::eightFoot(), TableDef::sevenFoot()};
+    return named[splitmix64(rng) % 3];
+  }
+  TableDef t;
+  t.corner_pocket = uniform(rng, 1.5 * r, 6.0 * r);
+  t.side_pocket = uniform(rng, 1.5 * r, 6.0 * r);
+  t.corner_jaw_deg = uniform(rng, 91.0, 179.0);
+  t.side_jaw_deg = uniform(rng, 91.0, 179.0);
+  const double rail = 2.0 * r * limits::kMinRailInDiameters;
+  const double c = t.corner_pocket / std::sqrt(2.0);
+  const double min_width = 2.0 * c + rail;
+  const double min_length = 2.0 * (c + t.side_pocket / 2.0 + rail);
+  const double big = splitmix64(rng) % 4 == 0 ? limits::kMaxTableLength : 3.0;
+  t.width = std::min(logUniform(rng, min_width, std::max(min_width, big / 2.0)), 5.0) * 1.000001;
+  t.length = std::max(t.width, min_length) * logUniform(rng, 1.000001, 3.0);
+  t.length = std::min(t.length, limits::kMaxTableLength);
+  t.width = std::min(t.width, t.length);
+  return t;
+}
+
+TableDef randomTable(std::uint64_t& rng, double r) {
+  // Drawn again until the table is one the input allows.
+  for (int tries = 0; tries < 100; ++tries) {
+    TableDef t = drawTable(rng, r);
+    if (!checkTable(t, r)) return t;
+  }
+  return TableDef::nineFoot();
+}
+
+PhysicsParams randomPhysics(std::uint64_t& rng) {
+  PhysicsParams p;
+  p.cloth = static_cast<ClothModel>(splitmix64(rng) % 3);
+  p.ball_radius = splitmix64(rng) % 2 ? PhysicsParams{}.ball_radius
+                                      : logUniform(rng, limits::kMinBallRadius,
+                                                   limits::kMaxBallRadius);
+  p.ball_mass = logUniform(rng, limits::kMinBallMass, limits::kMaxBallMass);
+  p.ball_restitution = restitution(rng);
+  p.cushion_restitution = restitution(rng);
+  const bool frictionless = splitmix64(rng) % 3 == 0;
+  p.rolling_friction = frictionless ? 0.0 : uniform(rng, 0.0, 0.05);
+  p.sliding_friction = frictionless ? 0.0 : uniform(rng, 0.0, 0.5);
+  p.cushion_friction = frictionless ? 0.0 : uniform(rng, 0.0, 0.5);
+  p.spin_decay = frictionless ? 0.0 : uniform(rng, 0.0, 20.0);
+  p.linear_damping = frictionless ? 0.0 : uniform(rng, 0.0, 1.0);
+  return p;
+}
+
+StepParams randomStep(std::uint64_t& rng, double r) {
+  StepParams s;
+  s.scale = logUniform(rng, std::max(limits::kMinScale, limits::kMinBallUnits / r),
+                       limits::kMaxScale);
+  s.hz = logUniform(rng, limits::kMinHz, limits::kMaxHz);
+  return s;
+}
+
+// Sets every ball moving at up to the top speed, with spin up to the top surface speed.
+void setMoving(std::uint64_t& rng, std::vector<BallState>& balls, const PhysicsParams& p,
+               bool varied_mass) {
+  const double w_max = limits::kMaxSurfaceSpeed / p.ball_radius / std::sqrt(3.0);
+  for (BallState& b : balls) {
+    b.vel = fromAngle(uniform(rng, -kPi, kPi)) * uniform(rng, 0.0, limits::kMaxSpeed);
+    if (p.spin()) {
+      b.w = {uniform(rng, -w_max, w_max), uniform(rng, -w_max, w_max),
+             uniform(rng, -w_max, w_max)};
+    }
+    if (varied_mass) b.mass = logUniform(rng, limits::kMinBallMass, limits::kMaxBallMass);
+  }
+}
+
+// Balls packed round one jaw of a pocket, as close to it and to each other as they fit.
+std::vector<BallState> crowdAtJaw(std::uint64_t& rng, const TableGeometry& t, double r, int n) {
+  const Pocket& pk = t.pockets[splitmix64(rng) % kPocketCount];
+  const Vec2 jaw = splitmix64(rng) % 2 ? pk.jaw_a : pk.jaw_b;
+  std::vector<BallState> balls;
+  for (int tries = 0; static_cast<int>(balls.size()) < n && tries < 20000; ++tries) {
+    const double reach = r * (1.0 + 0.5 * std::sqrt(static_cast<double>(tries)));
+    Vec2 p = jaw + fromAngle(uniform(rng, -kPi, kPi)) * uniform(rng, r, reach);
+    if (!t.ballFits(p, r)) continue;
+    bool clear = true;
+    for (const BallState& b : balls) clear &= length(b.pos - p) >= 2.0 * r;
+    if (clear) balls.push_back(BallState::at(static_cast<int>(balls.size()), p));
+  }
+  return balls;
+}
+
+// Everything the input allows, drawn at random: table, physics, step and balls.
+Scenario randomSettings(std::uint64_t& rng, int i, bool at_jaw) {
+  Scenario s;
+  s.kind = at_jaw ? "crowd against a jaw, any settings" : "random settings";
+  s.name = (at_jaw ? "jaw #" : "settings #") + std::to_string(i);
+  s.physics = randomPhysics(rng);
+  const double r = s.physics.ball_radius;
+  s.table = randomTable(rng, r);
+  s.step = randomStep(rng, r);
+  const TableGeometry t = buildTable(s.table, r);
+  const int n = 2 + static_cast<int>(splitmix64(rng) % (at_jaw ? 12 : 20));
+  s.balls = at_jaw ? crowdAtJaw(rng, t, r, n) : randomLayout(rng, t, r, n);
+  if (at_jaw) {
+    Shot shot = Shot::withSpeed(uniform(rng, -180.0, 180.0), limits::kMaxSpeed);
+    if (s.balls.size() > 1) {
+      const Vec2 to = s.balls[1].pos - s.balls[0].pos;
+      shot = Shot::withSpeed(radToDeg(std::atan2(to.y, to.x)), limits::kMaxSpeed);
+    }
+    s.shot = shot;
+  } else {
+    setMoving(rng, s.balls, s.physics, splitmix64(rng) % 2 == 0);
+  }
+  // A cloth that stops the balls well within the rest limit is run to rest; any other runs for
+  // a fixed time. A kiss can double a speed, hence the factor 2.
+  const PhysicsParams& p = s.physics;
+  const double v = 2.0 * limits::kMaxSpeed;
+  const double to_rest = p.cloth == ClothModel::Damping
+                             ? std::log(v / p.rest_speed) / std::max(p.linear_damping, 1e-9)
+                             : v / std::max(p.rolling_friction * p.gravity, 1e-9);
+  s.run_s = to_rest < 30.0 ? 0.0 : 2.0;
+  std::ostringstream about;
+  about << " (" << clothModelName(p.cloth) << " cloth, R " << p.ball_radius << ", e " << p.ball_restitution
+        << "/" << p.cushion_restitution << ", table " << s.table.length << "x" << s.table.width
+        << " mouths " << s.table.corner_pocket << "/" << s.table.side_pocket << ", k "
+        << s.step.scale << ", " << s.step.hz << " Hz)";
+  s.name += about.str();
+  s.fixed_step = true;
+  return s;
+}
+
 std::vector<Scenario> scenarios(const StressOptions& o) {
   std::vector<Scenario> out;
   std::uint64_t rng = o.seed;
@@ -167,6 +313,10 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
     shot.tip = fromAngle(tip_a) * tip_r;
     s.shot = shot;
     out.push_back(s);
+  }
+  std::uint64_t settings_rng = o.seed ^ 0x5E771465ULL;
+  for (int i = 0; i < o.random_settings; ++i) {
+    out.push_back(randomSettings(settings_rng, i, i % 3 == 2));
   }
   {
     Scenario s;
@@ -236,17 +386,6 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
 
 }  // namespace
 
-double cushionSink(const TableGeometry& t, Vec2 c, double r) {
-  double sink = 0.0;
-  const auto& loop = t.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
-    const Vec2 ab = b - a;
-    const double u = std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
-    sink = std::max(sink, r - length(c - (a + ab * u)));
-  }
-  return sink;
-}
 
 long StressReport::failureCount() const {
   long n = 0;
@@ -254,10 +393,25 @@ long StressReport::failureCount() const {
   return n;
 }
 
+std::optional<Scene> stressScene(const StressOptions& options, const std::string& name) {
+  for (const Scenario& s : scenarios(options)) {
+    if (s.name.rfind(name, 0) != 0) continue;
+    Scene scene;
+    scene.table = s.table;
+    scene.physics = s.physics;
+    scene.step = s.fixed_step ? s.step : options.step;
+    scene.balls = s.balls;
+    scene.shot = s.shot;
+    if (s.run_s > 0.0) scene.until = s.run_s;
+    return scene;
+  }
+  return std::nullopt;
+}
+
 StressReport runStress(const StressOptions& options) {
   StressReport report;
   for (Scenario s : scenarios(options)) {
-    s.step = options.step;
+    if (!s.fixed_step) s.step = options.step;
     ++report.scenarios[s.kind];
     const std::uint64_t first = runOnce(s, options, report, true);
     const std::uint64_t second = runOnce(s, options, report, false);

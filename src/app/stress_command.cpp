@@ -16,6 +16,11 @@ CLI::App* addStressCommand(CLI::App& app, StressCommandOptions& options) {
   cmd->add_option("--layouts", s.random_layouts, "Random layouts and shots")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
+  cmd->add_option("--settings", s.random_settings,
+                  "Scenes with table, physics, step rate and scale drawn from their allowed "
+                  "ranges (they keep their own step settings)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   cmd->add_option("--crowd", s.crowded_balls, "Balls on the crowded table")
       ->check(CLI::Range(2, 400))
       ->capture_default_str();

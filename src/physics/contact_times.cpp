@@ -1,5 +1,6 @@
 #include "physics/contact_times.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/ball_collision.hpp"
@@ -14,12 +15,19 @@ Quartic separation(Vec2 d, Vec2 e, Vec2 g, double distance) {
            0.25 * dot(g, g)}};
 }
 
-// Two circles `distance` apart at their closest: first touch while closing.
-std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horizon) {
+// Two circles `distance` apart at their closest: first touch while closing. With
+// `pressed_apart`, circles resting against each other are met again once the cloth has pressed
+// them an extra touch tolerance together, for the contact to set them back to touching.
+std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horizon,
+                           bool pressed_apart) {
   const double gap = length(d) - distance;
   if (gap <= kTouchTolerance) {
     const double closing = -dot(normalized(d), e);
     if (closing > kMinClosingSpeed) return 0.0;
+    if (pressed_apart && -closing <= kMinClosingSpeed) {
+      const double pressed = std::min(length(d), distance) - kTouchTolerance;
+      return firstCrossing(separation(d, e, g, pressed), 0.0, horizon);
+    }
     // Parting, but spin or the cloth may bring them back: |d(s)|^2 - |d(0)|^2 = s c(s), so
     // they are back at today's distance at the first root of c. Slower parting is a resting
     // contact: chasing it would be an endless run of ever smaller bounces.
@@ -57,7 +65,7 @@ double reach(const Path& path, double horizon) {
 }
 
 std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon) {
-  return meet(b.p - a.p, b.v - a.v, b.a - a.a, distance, horizon);
+  return meet(b.p - a.p, b.v - a.v, b.a - a.a, distance, horizon, true);
 }
 
 std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,
@@ -73,9 +81,10 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     if (height > limit || foot < -limit || foot > seg.length + limit) continue;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
-    if (gap < -kTouchTolerance) continue;  // behind this segment's line: another one holds it
+    // Past this segment's line beyond its ends: a neighbouring segment holds the ball.
+    if (gap < -kTouchTolerance) continue;
     std::optional<double> s;
-    if (gap <= kTouchTolerance) {
+    if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
       if (vn < -kMinClosingSpeed) {
         s = 0.0;
       } else if (vn > kMinClosingSpeed) {
@@ -94,7 +103,7 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
   for (Vec2 corner : cushions.corners) {
     const Vec2 d = path.p - corner;
     if (length(d) > limit) continue;
-    if (auto s = meet(d, path.v, path.a, radius, horizon)) {
+    if (auto s = meet(d, path.v, path.a, radius, horizon, false)) {
       consider(*s, normalized(path.at(*s) - corner));
     }
   }

@@ -50,6 +50,7 @@ std::optional<std::string> checkSettings(const Scene& scene) {
   }
   if (st.velocity_iterations < 1) return std::string("step.velocity_iterations: must be >= 1");
   if (st.position_iterations < 0) return std::string("step.position_iterations: must be >= 0");
+  if (auto problem = checkTable(scene.table, p.ball_radius)) return problem;
   // Box2D refuses cushion vertices closer than its linear slop (0.005 units).
   const TableGeometry table = buildTable(scene.table, p.ball_radius);
   const auto& loop = table.cushion_loop;

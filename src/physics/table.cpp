@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "nineball/limits.hpp"
 
 namespace nineball {
 namespace {
@@ -133,6 +136,56 @@ TableGeometry buildTable(const TableDef& def, double ball_radius) {
   return g;
 }
 
+namespace {
+
+// Proper crossing of segments ab and cd (touching at a shared end does not count).
+bool segmentsCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+         ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
+}
+
+std::string metres(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g m", v);
+  return text;
+}
+
+}  // namespace
+
+std::optional<std::string> checkTable(const TableDef& def, double r) {
+  const double rail = 2.0 * r * limits::kMinRailInDiameters;
+  const double corner_cut = def.corner_pocket / std::sqrt(2.0);
+  const double short_rail = def.width - 2.0 * corner_cut;
+  if (short_rail < rail) {
+    return "table: the end rails between the corner pockets are " + metres(short_rail) +
+           " long, less than a ball's diameter (" + metres(rail) +
+           "): widen the table or narrow the corner pockets";
+  }
+  const double long_rail = def.length / 2.0 - corner_cut - def.side_pocket / 2.0;
+  if (long_rail < rail) {
+    return "table: the side rails between a corner and a side pocket are " + metres(long_rail) +
+           " long, less than a ball's diameter (" + metres(rail) +
+           "): lengthen the table or narrow the pockets";
+  }
+  const TableGeometry g = buildTable(def, r);
+  const auto& loop = g.cushion_loop;
+  const std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (segmentsCross(loop[i], loop[(i + 1) % n], loop[j], loop[(j + 1) % n])) {
+        return std::string("table: the pocket jaws and cups cross each other or the rails (jaw "
+                           "faces are ") +
+               metres(std::max(kJawLength, 1.2 * r)) +
+               " long): widen the mouths or bring the jaw angles further from 180 degrees";
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 bool TableGeometry::insideLoop(Vec2 p) const {
   bool inside = false;
   const std::size_t n = cushion_loop.size();
@@ -156,6 +209,18 @@ bool TableGeometry::ballFits(Vec2 c, double r) const {
     }
   }
   return true;
+}
+
+double cushionSink(const TableGeometry& t, Vec2 c, double r) {
+  double sink = 0.0;
+  const auto& loop = t.cushion_loop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+    const Vec2 ab = b - a;
+    const double u = std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
+    sink = std::max(sink, r - length(c - (a + ab * u)));
+  }
+  return sink;
 }
 
 std::optional<PocketId> TableGeometry::pocketAt(Vec2 p) const {

@@ -213,8 +213,9 @@ struct World::Impl {
     recorder.ball_contacts = false;
   }
 
-  void cushionBounce(std::size_t i, Vec2 normal) {
+  void cushionBounce(std::size_t i, Vec2 predicted) {
     Ball& b = balls[i];
+    Vec2 normal;
     Kinematics s = now(b);
     recorder.bouncing = i;
     solveContactsNow();
@@ -226,12 +227,28 @@ struct World::Impl {
       pushed = pushed - Vec2{push.normal.x, push.normal.y} * (push.impulse / k);
     }
     recorder.cushion_pushes.clear();
-    if (impulse > 0.0) {
-      s.v = fromB2(b.body->GetLinearVelocity());
+    const Vec2 v_in = s.v;
+    const Vec2 v_box2d = fromB2(b.body->GetLinearVelocity());
+    // Box2D's answer stands when it pushed and gave back no energy. Its sequential solver can
+    // push a ball wedged between two faces out faster than it came (each face restores the full
+    // approach speed), and then the same law is applied by hand, one face at a time.
+    if (impulse > 0.0 && dot(v_box2d, v_box2d) <= dot(v_in, v_in)) {
+      s.v = v_box2d;
       normal = normalized(pushed);
+      // Box2D's face normal comes from float vertices and differs from the exact one by about
+      // 1e-6: what it leaves of the approach along the exact normal is rounding, and would be
+      // found as a new contact at once, forever.
+      const double vn = dot(s.v, predicted);
+      if (vn < 0.0) s.v -= predicted * vn;
     } else {
-      // Box2D found no contact to push on (a touch it rounds away): the same law by hand.
-      logger("physics")->debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
+      if (impulse <= 0.0) {
+        // Box2D found no contact to push on (a touch it rounds away).
+        logger("physics")->debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
+      } else {
+        logger("physics")->debug("t={:.6f} ball {}: Box2D's bounce gained energy; by hand", time,
+                                 b.id);
+      }
+      normal = predicted;
       s = physics::bounceOffCushion(s, normal, b.mass, phys, impulse);
     }
     s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
@@ -286,7 +303,12 @@ struct World::Impl {
       logger("physics")->debug("t={:.6f} Box2D saw no contact of {} and {}", time, a.id, b.id);
     }
     Kinematics sa = now(a), sb = now(b);
+    const Vec2 pa = sa.p, pb = sb.p;
     physics::collideBalls(sa, sb, a.mass, b.mass, phys);
+    physics::setApart(sa, sb, a.mass, b.mass, table, phys.ball_radius);
+    // Balls pressed together are set back to touching (see collideBalls).
+    if (sa.p != pa) a.body->SetTransform(toB2(sa.p), 0.0f);
+    if (sb.p != pb) b.body->SetTransform(toB2(sb.p), 0.0f);
     restart(a, sa);
     restart(b, sb);
     pushBallEvent(a, b, sa.v, sb.v);

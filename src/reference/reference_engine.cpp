@@ -127,6 +127,7 @@ class Run {
         Ball& b = balls_[e.j];
         Kinematics ka = now(a), kb = now(b);
         physics::collideBalls(ka, kb, *a.state.mass, *b.state.mass, p_);
+        physics::setApart(ka, kb, *a.state.mass, *b.state.mass, table_, p_.ball_radius);
         restart(a, ka);
         restart(b, kb);
         Event ev;

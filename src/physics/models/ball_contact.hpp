@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nineball/params.hpp"
+#include "nineball/table.hpp"
 #include "physics/motion.hpp"
 
 namespace nineball::physics {
@@ -11,5 +12,12 @@ namespace nineball::physics {
 /// endless run of ever smaller bounces. Positions and the rest of the spin are kept.
 void collideBalls(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
                   const PhysicsParams& p);
+
+/// Balls the cloth presses together (a perfectly inelastic pair, the one behind with more
+/// topspin) are met again each time they overlap by the touch tolerance, and set back to
+/// touching here: each moved along the normal in inverse proportion to its mass, except one
+/// that the move would sink into a cushion. Micrometres of position, no velocity: no energy.
+void setApart(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
+              const TableGeometry& table, double r);
 
 }  // namespace nineball::physics
