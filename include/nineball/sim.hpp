@@ -21,12 +21,27 @@ struct Scene {
   std::optional<double> until;  ///< seconds; empty means "until rest"
 };
 
+/// How a run ended. Rest and Until are complete; MaxTime and Budget are partial results.
+enum class SimEnd {
+  Rest,     ///< every ball at rest
+  Until,    ///< the asked-for time reached
+  MaxTime,  ///< step.max_time of simulated time reached with balls still moving
+  Budget,   ///< the work budget (limits.hpp) spent with balls still moving
+};
+
+/// "rest", "until", "max_time" or "budget".
+const char* simEndName(SimEnd end);
+
 struct SimResult {
   double time = 0.0;     ///< simulated seconds reached
   long steps = 0;        ///< fixed steps computed
   double wall_ms = 0.0;  ///< wall time of the stepping alone
   std::vector<BallState> balls;
   std::vector<Event> events;
+  SimEnd end = SimEnd::Rest;
+
+  /// True when the run stopped before its end (max_time or the work budget).
+  bool partial() const { return end == SimEnd::MaxTime || end == SimEnd::Budget; }
 };
 
 /// Runs a scene that has already been checked (see validateScene).

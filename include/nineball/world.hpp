@@ -36,6 +36,10 @@ class World {
   void runUntilRest();
 
   bool atRest() const;
+  /// True once the run has spent its work budget (limits::kMaxEvents events, kMaxPieces
+  /// pieces, or an endless run of contacts in one step): nothing moves any more, and what the
+  /// world holds is a partial result.
+  bool exhausted() const;
   double time() const;
   long steps() const;
 

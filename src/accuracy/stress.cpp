@@ -29,7 +29,7 @@ struct Scenario {
   StepParams step;
   std::vector<BallState> balls;
   std::optional<Shot> shot;
-  double run_s = 0.0;        // 0: until rest (must come within rest_within_s)
+  double run_s = 0.0;       // 0: until rest (must come within rest_within_s)
   bool fixed_step = false;  // keeps its own step settings, not the command's
 };
 
@@ -91,7 +91,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   const double limit = s.run_s > 0.0 ? s.run_s : o.rest_within_s;
   std::size_t events_seen = 0;
   std::vector<bool> was_pocketed(s.balls.size(), false);
-  while (w.time() < limit && (s.run_s > 0.0 || !w.atRest())) {
+  while (w.time() < limit && (s.run_s > 0.0 || !w.atRest()) && !w.exhausted()) {
     w.step();
     if (count) ++rep.steps;
     const std::vector<BallState> balls = w.balls();
@@ -135,6 +135,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
     check.check("energy never rises", e <= e_prev + kEnergyRounding * std::max(e_prev, 1e-9));
     e_prev = std::min(e, e_prev);
   }
+  check.check("within the work budget", !w.exhausted());
   if (s.run_s <= 0.0) check.check("at rest in time", w.atRest());
   if (count) rep.simulated_s += w.time();
   mix(static_cast<double>(w.events().size()));
@@ -155,7 +156,6 @@ std::vector<BallState> randomLayout(std::uint64_t& rng, const TableGeometry& t, 
   }
   return balls;
 }
-
 
 double logUniform(std::uint64_t& rng, double lo, double hi) {
   return lo * std::pow(hi / lo, uniform(rng, 0.0, 1.0));
@@ -204,9 +204,9 @@ TableDef randomTable(std::uint64_t& rng, double r) {
 PhysicsParams randomPhysics(std::uint64_t& rng) {
   PhysicsParams p;
   p.cloth = static_cast<ClothModel>(splitmix64(rng) % 3);
-  p.ball_radius = splitmix64(rng) % 2 ? PhysicsParams{}.ball_radius
-                                      : logUniform(rng, limits::kMinBallRadius,
-                                                   limits::kMaxBallRadius);
+  p.ball_radius = splitmix64(rng) % 2
+                      ? PhysicsParams{}.ball_radius
+                      : logUniform(rng, limits::kMinBallRadius, limits::kMaxBallRadius);
   p.ball_mass = logUniform(rng, limits::kMinBallMass, limits::kMaxBallMass);
   p.ball_restitution = restitution(rng);
   p.cushion_restitution = restitution(rng);
@@ -221,8 +221,8 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
 
 StepParams randomStep(std::uint64_t& rng, double r) {
   StepParams s;
-  s.scale = logUniform(rng, std::max(limits::kMinScale, limits::kMinBallUnits / r),
-                       limits::kMaxScale);
+  s.scale =
+      logUniform(rng, std::max(limits::kMinScale, limits::kMinBallUnits / r), limits::kMaxScale);
   s.hz = logUniform(rng, limits::kMinHz, limits::kMaxHz);
   return s;
 }
@@ -234,8 +234,7 @@ void setMoving(std::uint64_t& rng, std::vector<BallState>& balls, const PhysicsP
   for (BallState& b : balls) {
     b.vel = fromAngle(uniform(rng, -kPi, kPi)) * uniform(rng, 0.0, limits::kMaxSpeed);
     if (p.spin()) {
-      b.w = {uniform(rng, -w_max, w_max), uniform(rng, -w_max, w_max),
-             uniform(rng, -w_max, w_max)};
+      b.w = {uniform(rng, -w_max, w_max), uniform(rng, -w_max, w_max), uniform(rng, -w_max, w_max)};
     }
     if (varied_mass) b.mass = logUniform(rng, limits::kMinBallMass, limits::kMaxBallMass);
   }
@@ -288,10 +287,10 @@ Scenario randomSettings(std::uint64_t& rng, int i, bool at_jaw) {
                              : v / std::max(p.rolling_friction * p.gravity, 1e-9);
   s.run_s = to_rest < 30.0 ? 0.0 : 2.0;
   std::ostringstream about;
-  about << " (" << clothModelName(p.cloth) << " cloth, R " << p.ball_radius << ", e " << p.ball_restitution
-        << "/" << p.cushion_restitution << ", table " << s.table.length << "x" << s.table.width
-        << " mouths " << s.table.corner_pocket << "/" << s.table.side_pocket << ", k "
-        << s.step.scale << ", " << s.step.hz << " Hz)";
+  about << " (" << clothModelName(p.cloth) << " cloth, R " << p.ball_radius << ", e "
+        << p.ball_restitution << "/" << p.cushion_restitution << ", table " << s.table.length << "x"
+        << s.table.width << " mouths " << s.table.corner_pocket << "/" << s.table.side_pocket
+        << ", k " << s.step.scale << ", " << s.step.hz << " Hz)";
   s.name += about.str();
   s.fixed_step = true;
   return s;
@@ -385,7 +384,6 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
 }
 
 }  // namespace
-
 
 long StressReport::failureCount() const {
   long n = 0;

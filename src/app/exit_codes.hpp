@@ -8,5 +8,8 @@ constexpr int kExitOk = 0;
 constexpr int kExitInternal = 1;
 /// Bad input: a refused scene, an unreadable file, a command-line usage error.
 constexpr int kExitBadInput = 2;
+/// A valid input whose run stopped at step.max_time or at the work budget with balls still
+/// moving: the result printed is partial and flagged so.
+constexpr int kExitPartial = 3;
 
 }  // namespace nineball::app

@@ -52,6 +52,7 @@ int runMatch(const MatchOptions& options, std::istream& in, std::ostream& out, s
   std::vector<TurnRecord> records;
   std::vector<std::optional<io::ComputerTurn>> computer;
   std::size_t next_script_turn = 0;
+  bool partial = false;  // a shot stopped at max_time or at the work budget, balls still moving
   while (records.size() < kMaxTurns) {
     ai::Planner* planner = planners[index(match.rack().shooter())].get();
     if (planner && !match.rack().over()) {
@@ -76,14 +77,26 @@ int runMatch(const MatchOptions& options, std::istream& in, std::ostream& out, s
     } else {
       break;
     }
+    if (match.world().exhausted() || !match.world().atRest()) {
+      partial = true;
+      break;
+    }
     const TurnRecord& r = records.back();
     logger("app")->info("turn {}: {} {}{}", records.size() - 1, rules::playerName(r.shooter),
                         r.verdict.legal() ? "legal" : "foul ",
                         r.verdict.legal() ? "" : rules::foulName(r.verdict.foul));
   }
-  out << io::matchResultToJson(records, match.rack(), match.balls(), computer).dump(2) << '\n'
-      << std::flush;
-  return out ? kExitOk : kExitInternal;
+  auto doc = io::matchResultToJson(records, match.rack(), match.balls(), computer);
+  doc["partial"] = partial;
+  out << doc.dump(2) << '\n' << std::flush;
+  if (!out) return kExitInternal;
+  if (partial) {
+    err << prefix << "turn " << records.size() - 1
+        << " stopped at step.max_time or the work budget with balls still moving: the match "
+           "stops there and the result is partial\n";
+    return kExitPartial;
+  }
+  return kExitOk;
 }
 
 }  // namespace nineball::app

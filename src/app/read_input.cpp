@@ -5,6 +5,8 @@
 #include <fstream>
 #include <istream>
 
+#include "nineball/limits.hpp"
+
 namespace nineball::app {
 namespace {
 
@@ -14,6 +16,11 @@ std::optional<std::string> readAll(std::istream& in, std::string& why) {
   errno = 0;
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > limits::kMaxInputBytes) {
+      why = "larger than " + std::to_string(limits::kMaxInputBytes >> 20) +
+            " MiB, more than any scene or script needs";
+      return std::nullopt;
+    }
   }
   if (in.bad()) {
     why = std::string("cannot read: ") + (errno ? std::strerror(errno) : "read error");

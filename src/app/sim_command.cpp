@@ -9,6 +9,7 @@
 #include "app/read_input.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
+#include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
@@ -59,7 +60,19 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
     return kExitInternal;
   }
   out << io::resultToJson(result).dump(2) << '\n' << std::flush;
-  return out ? kExitOk : kExitInternal;
+  if (!out) return kExitInternal;
+  if (result.end == SimEnd::MaxTime) {
+    err << prefix << "stopped at step.max_time (" << scene.step.max_time
+        << " s of simulated time) with balls still moving: the result is partial\n";
+    return kExitPartial;
+  }
+  if (result.end == SimEnd::Budget) {
+    err << prefix << "stopped at the work budget (" << limits::kMaxEvents << " contacts or "
+        << limits::kMaxPieces << " pieces) at t = " << result.time
+        << " s with balls still moving: the result is partial\n";
+    return kExitPartial;
+  }
+  return kExitOk;
 }
 
 }  // namespace nineball::app

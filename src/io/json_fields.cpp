@@ -4,13 +4,20 @@
 #include <cstdint>
 #include <sstream>
 
+#include "nineball/limits.hpp"
+
 namespace nineball::io {
 
 using nlohmann::json;
 
+std::string shortened(const std::string& s, std::size_t keep) {
+  // Long strings are cut so that one bad value or key cannot flood the message.
+  return s.size() > keep ? s.substr(0, keep) + "..." : s;
+}
+
 std::string quote(const std::string& s) {
   // Invalid UTF-8 (say, from a cut string) is replaced rather than thrown on.
-  return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+  return json(shortened(s)).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 std::string formatNumber(double v) {
@@ -46,9 +53,7 @@ std::string describe(const json& v) {
     case json::value_t::array:
       return "an array";
     case json::value_t::string: {
-      const auto& s = v.get_ref<const std::string&>();
-      // Long strings are cut so that one bad value cannot flood the message.
-      return "string " + quote(s.size() > 40 ? s.substr(0, 40) + "..." : s);
+      return "string " + quote(v.get_ref<const std::string&>());
     }
     default:
       return v.dump();
@@ -56,7 +61,7 @@ std::string describe(const json& v) {
 }
 
 std::string member(const std::string& parent, const std::string& key) {
-  return parent.empty() ? key : parent + "." + key;
+  return parent.empty() ? shortened(key) : parent + "." + shortened(key);
 }
 
 std::string element(const std::string& parent, std::size_t i) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/parse_error.hpp"
+#include "nineball/limits.hpp"
 
 // Typed access to the fields of a JSON document. Every function takes the path of the value
 // it reads and throws ParseError{"<path>: <reason>"} when the value does not fit.
@@ -39,7 +40,9 @@ struct Bounds {
 /// Throws ParseError{path + ": " + reason}.
 [[noreturn]] void refuse(const std::string& path, const std::string& reason);
 
-/// The string as a JSON literal: "abc" with its quotes, escaped.
+/// The string cut to `keep` characters, with "..." when cut.
+std::string shortened(const std::string& s, std::size_t keep = limits::kMaxQuotedChars);
+/// The string as a JSON literal ("abc" with its quotes, escaped), cut as by shortened().
 std::string quote(const std::string& s);
 /// A number as short as it reads: 100, 0.5, 1e+06.
 std::string formatNumber(double v);

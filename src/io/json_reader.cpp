@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/json_fields.hpp"
+
 namespace nineball::io {
 namespace {
 
@@ -43,9 +45,10 @@ class PathTrackingBuilder {
   bool parse_error(std::size_t /*position*/, const std::string& token, const json::exception& e) {
     // Id 406 is "number overflow": the lexer read a literal no double can hold.
     if (e.id == 406) {
-      error_ = ParseError{path() + ": number " + token + " is out of range"};
+      error_ = ParseError{path() + ": number " + shortened(token) + " is out of range"};
     } else {
-      error_ = ParseError{"invalid JSON: " + withoutPrefix(e.what())};
+      // nlohmann quotes what it last read, which may be a whole 100 kB token.
+      error_ = ParseError{"invalid JSON: " + shortened(withoutPrefix(e.what()), 200)};
     }
     return false;
   }
@@ -109,7 +112,7 @@ class PathTrackingBuilder {
         const bool child_open = i + 1 < frames_.size();
         p += "[" + std::to_string(f.container->size() - (child_open ? 1 : 0)) + "]";
       } else {
-        p += (p.empty() ? "" : ".") + f.key;
+        p += (p.empty() ? "" : ".") + shortened(f.key);
       }
     }
     return p.empty() ? "scene" : p;
@@ -127,6 +130,10 @@ json readJson(std::string_view text) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r';
   });
   if (blank) throw ParseError{"invalid JSON: empty input"};
+  // nlohmann's lexer would stop at a NUL byte and ignore whatever follows it.
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+    throw ParseError{"invalid JSON: a NUL byte at offset " + std::to_string(nul)};
+  }
   PathTrackingBuilder builder;
   if (!json::sax_parse(text.begin(), text.end(), &builder)) throw builder.takeError();
   return builder.takeRoot();

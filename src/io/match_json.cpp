@@ -8,6 +8,7 @@
 #include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_parts.hpp"
+#include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 
 namespace nineball::io {
@@ -98,16 +99,29 @@ MatchScript parseDocument(const json& doc) {
   if (const json* p = optional(doc, "physics")) setup.physics = parsePhysics(*p);
   if (const json* p = optional(doc, "step")) setup.step = parseStep(*p);
   double cue_mass = setup.physics.ball_mass;
+  Scene check;
+  check.table = setup.table;
+  check.physics = setup.physics;
+  check.step = setup.step;
   if (const json* p = optional(doc, "balls")) {
-    setup.balls = parseBalls(*p);
-    Scene check;
-    check.table = setup.table;
-    check.physics = setup.physics;
-    check.step = setup.step;
+    setup.balls = parseBalls(*p, setup.physics.ball_radius);
     check.balls = *setup.balls;
     if (auto problem = validateScene(check)) throw ParseError{*problem};
     for (const BallState& b : *setup.balls) {
       if (b.id == kCueBall && b.mass) cue_mass = *b.mass;
+    }
+    const bool object_ball = std::any_of(setup.balls->begin(), setup.balls->end(),
+                                         [](const BallState& b) { return b.id != kCueBall; });
+    if (!object_ball) refuse("balls", "no object ball to play (ids other than 0)");
+  } else {
+    // The rack the match would set up must fit the table like any given balls.
+    check.balls = {BallState::at(
+        kCueBall, {buildTable(setup.table, setup.physics.ball_radius).headStringX(), 0.0})};
+    for (const BallState& b : rackNineBall(setup.table, setup.physics.ball_radius, setup.seed)) {
+      check.balls.push_back(b);
+    }
+    if (auto problem = validateScene(check)) {
+      refuse("table", "too small for the nine-ball rack and the cue ball (" + *problem + ")");
     }
   }
   static const json kNoTurns = json::array();

@@ -62,6 +62,8 @@ ordered_json resultToJson(const SimResult& result) {
   j["time"] = result.time;
   j["steps"] = result.steps;
   j["wall_ms"] = result.wall_ms;
+  j["end"] = simEndName(result.end);
+  j["partial"] = result.partial();
   j["balls"] = ordered_json::array();
   for (const BallState& b : result.balls) j["balls"].push_back(ballToJson(b));
   j["events"] = ordered_json::array();

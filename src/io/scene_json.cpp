@@ -10,6 +10,7 @@
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_parts.hpp"
+#include "nineball/limits.hpp"
 
 namespace nineball::io {
 
@@ -17,13 +18,10 @@ using nlohmann::json;
 
 namespace {
 
-// Faster balls would overrun Box2D's per-step travel clamp at any sensible step rate.
-constexpr double kMaxSpeed = 100.0;  // m/s
-
-constexpr double kMaxTableSize = 100.0;  // m
-constexpr double kMaxUntil = 3600.0;     // s
-// Far beyond any cue strike (a 100 m/s ball rolling has 3500 rad/s).
-constexpr double kMaxSpin = 1e5;  // rad/s
+// Every range and its reason is in nineball/limits.hpp.
+using limits::kMaxSpeed;
+constexpr double kMaxTableSize = limits::kMaxTableLength;
+constexpr double kMaxUntil = limits::kMaxSimTime;
 
 }  // namespace
 
@@ -80,11 +78,12 @@ struct ParamField {
 
 // Every parameter reaches Box2D as a float: the upper limits, far beyond any real table, keep
 // it finite there (an infinite damping aborts the process in a Box2D assertion).
-constexpr double kMaxMass = 100.0;  // kg
+const Bounds kMass = Bounds::closed(limits::kMinBallMass, limits::kMaxBallMass);
 
 const ParamField kParamFields[] = {
-    {"ball_mass", &PhysicsParams::ball_mass, Bounds::positive(kMaxMass), kEveryCloth},
-    {"ball_radius", &PhysicsParams::ball_radius, Bounds::positive(1.0), kEveryCloth},
+    {"ball_mass", &PhysicsParams::ball_mass, kMass, kEveryCloth},
+    {"ball_radius", &PhysicsParams::ball_radius,
+     Bounds::closed(limits::kMinBallRadius, limits::kMaxBallRadius), kEveryCloth},
     {"ball_restitution", &PhysicsParams::ball_restitution, Bounds::closed(0.0, 1.0), kEveryCloth},
     {"cushion_restitution", &PhysicsParams::cushion_restitution, Bounds::closed(0.0, 1.0),
      kEveryCloth},
@@ -160,9 +159,13 @@ PhysicsParams parsePhysics(const json& v) {
   return p;
 }
 
-std::vector<BallState> parseBalls(const json& v) {
+std::vector<BallState> parseBalls(const json& v, double radius) {
   const std::string path = "balls";
   if (!v.is_array()) refuse(path, "expected an array, found " + describe(v));
+  if (v.size() > limits::kMaxBalls) {
+    refuse(path, std::to_string(v.size()) + " balls, more than the " +
+                     std::to_string(limits::kMaxBalls) + " a scene may hold");
+  }
   std::vector<BallState> balls;
   std::map<int, std::size_t> index_of_id;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -189,12 +192,14 @@ std::vector<BallState> parseBalls(const json& v) {
       if (!p->is_array() || p->size() != 3) {
         refuse(wpath, "expected [wx, wy, wz] in rad/s, found " + describe(*p));
       }
-      const Bounds spin = Bounds::closed(-kMaxSpin, kMaxSpin);
+      // No cue gives the ball's surface more speed than a strike at its edge at top speed.
+      const double w_max = limits::kMaxSurfaceSpeed / radius;
+      const Bounds spin = Bounds::closed(-w_max, w_max);
       ball.w = {number((*p)[0], element(wpath, 0), spin), number((*p)[1], element(wpath, 1), spin),
                 number((*p)[2], element(wpath, 2), spin)};
     }
     if (const json* p = optional(b, "mass")) {
-      ball.mass = number(*p, member(at, "mass"), Bounds::positive(kMaxMass));
+      ball.mass = number(*p, member(at, "mass"), kMass);
     }
     balls.push_back(ball);
   }
@@ -269,17 +274,17 @@ StepParams parseStep(const json& v) {
             {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "engine",
              "max_time", "baseline"});
   StepParams s;
-  if (const json* p = optional(v, "hz")) s.hz = number(*p, "step.hz", Bounds::positive(1e5));
+  if (const json* p = optional(v, "hz")) {
+    s.hz = number(*p, "step.hz", Bounds::closed(limits::kMinHz, limits::kMaxHz));
+  }
   if (const json* p = optional(v, "velocity_iterations")) {
     s.velocity_iterations = integer(*p, "step.velocity_iterations", 1, 100);
   }
   if (const json* p = optional(v, "position_iterations")) {
     s.position_iterations = integer(*p, "step.position_iterations", 0, 100);
   }
-  // Below 1 Box2D unit per metre the cushion loop's vertices come closer than Box2D's linear
-  // slop and b2ChainShape::CreateLoop aborts the process.
   if (const json* p = optional(v, "scale")) {
-    s.scale = number(*p, "step.scale", Bounds::closed(1.0, 1e4));
+    s.scale = number(*p, "step.scale", Bounds::closed(limits::kMinScale, limits::kMaxScale));
   }
   if (const json* p = optional(v, "contacts")) {
     const std::string name = text(*p, "step.contacts");
@@ -306,7 +311,7 @@ StepParams parseStep(const json& v) {
     if (s.baseline && !optional(v, "hz")) s.hz = StepParams::kBaselineHz;
   }
   if (const json* p = optional(v, "max_time")) {
-    s.max_time = number(*p, "step.max_time", Bounds::positive(36000.0));
+    s.max_time = number(*p, "step.max_time", Bounds::positive(limits::kMaxSimTime));
   }
   return s;
 }
@@ -343,7 +348,7 @@ Scene parseDocument(const json& doc) {
   Scene scene;
   if (const json* p = optional(doc, "table")) scene.table = parseTable(*p);
   if (const json* p = optional(doc, "physics")) scene.physics = parsePhysics(*p);
-  scene.balls = parseBalls(required(doc, "", "balls"));
+  scene.balls = parseBalls(required(doc, "", "balls"), scene.physics.ball_radius);
   if (const json* p = optional(doc, "shot")) scene.shot = parseShot(*p, scene.balls, scene.physics);
   if (const json* p = optional(doc, "until")) scene.until = parseUntil(*p);
   if (const json* p = optional(doc, "step")) scene.step = parseStep(*p);

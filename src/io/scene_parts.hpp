@@ -18,7 +18,8 @@ TableDef parseTable(const nlohmann::json& v);
 /// {"preset", overrides...} at "physics".
 PhysicsParams parsePhysics(const nlohmann::json& v);
 /// [{"id", "x", "y", "vx", "vy", "mass"}, ...] at "balls".
-std::vector<BallState> parseBalls(const nlohmann::json& v);
+/// Balls of the given radius (it bounds their spin).
+std::vector<BallState> parseBalls(const nlohmann::json& v, double radius);
 /// {"hz", "velocity_iterations", ...} at "step".
 StepParams parseStep(const nlohmann::json& v);
 /// [side, height] at `path`.

@@ -1,12 +1,15 @@
 #include "nineball/shot.hpp"
 
+#include <cmath>
+
 #include "nineball/event.hpp"
 
 namespace nineball {
 
 Shot Shot::withSpeed(double heading_deg, double speed) {
   Shot s;
-  s.heading_rad = degToRad(heading_deg);
+  // Reduced first: any finite angle is a direction (1e308 degrees would overflow in radians).
+  s.heading_rad = degToRad(std::remainder(heading_deg, 360.0));
   s.speed = speed;
   return s;
 }

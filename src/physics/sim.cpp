@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "nineball/limits.hpp"
 #include "nineball/world.hpp"
 #include "reference/reference_engine.hpp"
 
@@ -109,6 +110,20 @@ std::optional<std::string> validateScene(const Scene& scene) {
   return std::nullopt;
 }
 
+const char* simEndName(SimEnd end) {
+  switch (end) {
+    case SimEnd::Rest:
+      return "rest";
+    case SimEnd::Until:
+      return "until";
+    case SimEnd::MaxTime:
+      return "max_time";
+    case SimEnd::Budget:
+      return "budget";
+  }
+  return "?";
+}
+
 SimResult simulate(const Scene& scene) {
   if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
   World world(scene.table, scene.physics, scene.step);
@@ -129,6 +144,12 @@ SimResult simulate(const Scene& scene) {
   result.time = world.time();
   result.balls = world.balls();
   result.events = world.events();
+  result.end = scene.until ? SimEnd::Until : SimEnd::Rest;
+  if (world.exhausted()) {
+    result.end = SimEnd::Budget;
+  } else if (!scene.until && !world.atRest()) {
+    result.end = SimEnd::MaxTime;
+  }
   if (started_at_rest) {
     Event rest;
     rest.type = EventType::AllAtRest;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/contact_recorder.hpp"
@@ -33,8 +34,8 @@ constexpr double kMaxTravelUnitsPerStep = 1.5;
 // Box2D resolves a bounce the world predicted in a step this short (s): the contact solver
 // changes the velocity, and the ball moves by less than a float's rounding of its position.
 constexpr float kBounceStep = 1e-12f;
-// More events than this in one step (a frozen cluster caught in a loop) stop the contact
-// search for the rest of the step, with a warning.
+// More events than this in one step (a frozen cluster caught in a loop) end the run: its
+// result is partial, and says so.
 constexpr std::size_t kEventsPerStepBase = 10000;
 
 }  // namespace
@@ -62,6 +63,9 @@ struct World::Impl {
   std::vector<Event> events;
   double time = 0.0;
   long steps = 0;
+  long pieces = 0;             // Box2D steps taken, for the work budget
+  long resolved = 0;           // events resolved, for the work budget
+  bool exhausted = false;      // the work budget ran out: nothing more moves
   bool contacts_stale = true;  // bodies added or moved by hand: sensors not yet updated
 
   Impl(const TableDef& t, const PhysicsParams& p, const StepParams& s)
@@ -357,25 +361,29 @@ struct World::Impl {
     std::size_t count = 0;
     bool was_settled = settled();
     std::vector<physics::Mover> movers(balls.size());
-    while (time < end && !(to_rest && was_settled)) {
+    while (time < end && !(to_rest && was_settled) && !exhausted) {
       double limit = end;
       for (std::size_t i = 0; i < balls.size(); ++i) {
         const Ball& b = balls[i];
         movers[i] = {b.body ? &b.arc : nullptr, b.body && recorder.overPocket(i)};
         if (b.body && b.arc.translating()) limit = std::min(limit, time + longestPiece(b));
       }
-      NextEvent e;
-      if (count < cap) {
-        e = search.next(movers, time, limit);
-      } else {
-        e.t = limit;
+      const NextEvent e = search.next(movers, time, limit);
+      if (e.t > time) {
+        transport(e.t - time);
+        ++pieces;
       }
-      if (e.t > time) transport(e.t - time);
       time = e.t;
       resolve(e);
-      if (e.kind != NextEvent::Kind::None && ++count == cap) {
-        logger("physics")->warn("t={:.6f}: more than {} events in one step; contacts off", time,
-                                cap);
+      if (e.kind != NextEvent::Kind::None) {
+        ++count;
+        ++resolved;
+      }
+      if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
+        exhausted = true;
+        logger("physics")->info(
+            "t={:.6f}: work budget spent ({} events, {} in this step; {} pieces); stopped", time,
+            resolved, count, pieces);
       }
       const bool now_settled = settled();
       if (!was_settled && now_settled) {
@@ -391,7 +399,8 @@ struct World::Impl {
   double boundary(long n) const { return static_cast<double>(n) / sp.hz; }
 
   void step() {
-    advance(boundary(steps + 1), false);
+    // Spent, the clock still runs (so that loops over steps end) but nothing moves.
+    if (!exhausted) advance(boundary(steps + 1), false);
     time = boundary(++steps);
   }
 };
@@ -459,32 +468,36 @@ void World::step() {
 void World::runFor(double seconds) {
   Impl& w = *impl_;
   const double target = w.time + seconds;
-  while (w.time < target) {
+  while (w.time < target && !w.exhausted) {
     if (w.settled()) {
       // Nothing travels: only spins die away, which costs no step.
       w.advance(target, false);
-      w.time = target;
+      if (!w.exhausted) w.time = target;
       return;
     }
     if (w.boundary(w.steps + 1) <= target) {
       w.step();
     } else {
       w.advance(target, false);
-      w.time = target;
+      if (!w.exhausted) w.time = target;
     }
   }
 }
 
 void World::runUntilRest() {
   Impl& w = *impl_;
-  while (!w.settled() && w.time < w.sp.max_time) {
+  while (!w.settled() && w.time < w.sp.max_time && !w.exhausted) {
     const double next = w.boundary(++w.steps);
     w.advance(std::min(next, w.sp.max_time), true);
   }
-  if (!w.settled()) {
-    logger("physics")->warn("balls still moving after {} s of simulated time; stopped",
+  if (!w.settled() && !w.exhausted) {
+    logger("physics")->info("balls still moving after {} s of simulated time; stopped",
                             w.sp.max_time);
   }
+}
+
+bool World::exhausted() const {
+  return impl_->exhausted;
 }
 
 bool World::atRest() const {

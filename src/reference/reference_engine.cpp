@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string>
 
+#include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/models/ball_contact.hpp"
@@ -64,8 +65,6 @@ class Run {
 
   // Runs until `end`, or until every ball has stopped when `to_rest`.
   void run(double end, bool to_rest) {
-    const std::size_t cap = 100000 + 1000 * balls_.size();
-    std::size_t count = 0;
     bool was_settled = settled();
     while (t_ < end && !(to_rest && settled())) {
       std::vector<physics::Mover> movers;
@@ -74,8 +73,9 @@ class Run {
       t_ = e.t;
       if (e.kind == NextEvent::Kind::None) break;
       resolve(e);
-      if (++count > cap) {
-        logger("physics")->warn("t={:.6f}: more than {} events; stopped", t_, cap);
+      if (++resolved_ >= limits::kMaxEvents) {
+        exhausted_ = true;
+        logger("physics")->info("t={:.6f}: work budget spent ({} events); stopped", t_, resolved_);
         break;
       }
       if (!was_settled && settled()) {
@@ -87,6 +87,8 @@ class Run {
       was_settled = settled();
     }
   }
+
+  bool exhausted() const { return exhausted_; }
 
   SimResult result() const {
     SimResult r;
@@ -174,6 +176,8 @@ class Run {
   physics::EventSearch search_;
   std::vector<Ball> balls_;
   std::vector<Event> events_;
+  long resolved_ = 0;
+  bool exhausted_ = false;
   double t_ = 0.0;
 };
 
@@ -188,13 +192,15 @@ SimResult simulate(const Scene& scene) {
     run.run(*scene.until, false);
   } else {
     run.run(scene.step.max_time, true);
-    if (!run.settled()) {
-      logger("physics")->warn("balls still moving after {} s of simulated time; stopped",
-                              scene.step.max_time);
-    }
   }
   const auto stop = std::chrono::steady_clock::now();
   SimResult r = run.result();
+  r.end = scene.until ? SimEnd::Until : SimEnd::Rest;
+  if (run.exhausted()) {
+    r.end = SimEnd::Budget;
+  } else if (!scene.until && !run.settled()) {
+    r.end = SimEnd::MaxTime;
+  }
   r.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
   if (started_at_rest) {
     Event rest;

@@ -37,7 +37,8 @@ TEST(SimCli, PrintsTheResultOfAGoodScene) {
   const Outcome r = run("sim " + quoted(scene.path()));
   ASSERT_EQ(r.status, 0) << r.err;
   const auto doc = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(keysOf(doc), (std::vector<std::string>{"time", "steps", "wall_ms", "balls", "events"}));
+  EXPECT_EQ(keysOf(doc), (std::vector<std::string>{"time", "steps", "wall_ms", "end", "partial",
+                                                   "balls", "events"}));
   ASSERT_EQ(doc["balls"].size(), 2u);
   EXPECT_EQ(doc["balls"][0]["id"], 0);
   EXPECT_EQ(doc["balls"][1]["id"], 1);

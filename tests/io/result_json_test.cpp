@@ -56,7 +56,7 @@ SimResult sampleResult() {
 
 TEST(ResultJson, HasTheDesignsKeysInOrder) {
   const auto j = resultToJson(sampleResult());
-  EXPECT_EQ(keysOf(j), (Keys{"time", "steps", "wall_ms", "balls", "events"}));
+  EXPECT_EQ(keysOf(j), (Keys{"time", "steps", "wall_ms", "end", "partial", "balls", "events"}));
   EXPECT_EQ(j["time"], 4.21);
   EXPECT_EQ(j["steps"], 4210);
   EXPECT_EQ(j["wall_ms"], 1.9);

@@ -117,9 +117,9 @@ TEST(SceneJson, RefusesUnknownPhysicsParameters) {
 }
 
 TEST(SceneJson, RefusesPhysicsOutOfRange) {
-  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": 0})"), "physics.ball_mass", "> 0"));
-  EXPECT_TRUE(
-      refusedAt(scene(R"("physics": {"ball_radius": -0.01})"), "physics.ball_radius", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": 0})"), "physics.ball_mass", ">= 0.01"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_radius": -0.01})"), "physics.ball_radius",
+                        ">= 0.01 and <= 0.1"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_restitution": 1.5})"),
                         "physics.ball_restitution", ">= 0 and <= 1"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"rolling_friction": -0.1})"),
@@ -128,7 +128,39 @@ TEST(SceneJson, RefusesPhysicsOutOfRange) {
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"linear_damping": 1e300})"), "physics.linear_damping",
                         "<= 1000"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_mass": 1e300})"), "physics.ball_mass",
-                        "> 0 and <= 100"));
+                        ">= 0.01 and <= 1"));
+}
+
+TEST(SceneJson, RefusesWhatThePhysicsCannotHold) {
+  // Each bound of nineball/limits.hpp, and the message that names it.
+  EXPECT_TRUE(
+      refusedAt(scene(R"("physics": {"ball_radius": 1e-160})"), "physics.ball_radius", ">= 0.01"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"hz": 1e5})"), "step.hz", "<= 2000"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "mass": 1e-40}]})", "balls[0].mass",
+                        ">= 0.01"));
+  EXPECT_TRUE(
+      refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "vx": 100}]})", "balls[0]", "<= 14 m/s"));
+  EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "w": [0, 0, 1e4]}]})",
+                        "balls[0].w[2]", "<= 1224.85"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 0.27, "width": 0.27})"), "table",
+                        "less than a ball's diameter"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 2.54, "width": 1.27, "side_pocket": 0.06,
+                                           "side_jaw_deg": 179.9})"),
+                        "table", "cross each other"));
+  std::string many = R"({"balls": [)";
+  for (int i = 0; i < 201; ++i)
+    many += (i ? "," : "") + std::string(R"({"id": )") + std::to_string(i) + R"(, "x": 0, "y": 0})";
+  EXPECT_TRUE(refusedAt(many + "]}", "balls", "more than the 200"));
+}
+
+TEST(SceneJson, CutsLongKeysAndRefusesNulBytes) {
+  const auto long_key = parseScene("{\"" + std::string(100000, 'k') + "\": 1}");
+  ASSERT_TRUE(std::holds_alternative<ParseError>(long_key));
+  EXPECT_LT(std::get<ParseError>(long_key).message.size(), 300u);
+  const std::string with_nul = std::string(R"({"balls": []})") + '\0' + "garbage";
+  const auto nul = parseScene(with_nul);
+  ASSERT_TRUE(std::holds_alternative<ParseError>(nul));
+  EXPECT_NE(std::get<ParseError>(nul).message.find("NUL byte at offset 13"), std::string::npos);
 }
 
 TEST(SceneJson, RefusesUnknownOrImpossibleTables) {
@@ -148,7 +180,7 @@ TEST(SceneJson, RefusesDuplicateIds) {
 
 TEST(SceneJson, RefusesANegativeMass) {
   EXPECT_TRUE(refusedAt(R"({"balls": [{"id": 0, "x": 0, "y": 0, "mass": -0.17}]})", "balls[0].mass",
-                        "> 0"));
+                        ">= 0.01"));
 }
 
 TEST(SceneJson, RefusesABadUntil) {
@@ -159,12 +191,12 @@ TEST(SceneJson, RefusesABadUntil) {
 }
 
 TEST(SceneJson, RefusesABadStep) {
-  EXPECT_TRUE(refusedAt(scene(R"("step": {"hz": 0})"), "step.hz", "> 0"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"hz": 0})"), "step.hz", ">= 1 and <= 2000"));
   EXPECT_TRUE(refusedAt(scene(R"("step": {"velocity_iterations": 0})"), "step.velocity_iterations",
                         ">= 1"));
   EXPECT_TRUE(refusedAt(scene(R"("step": {"position_iterations": 2.5})"),
                         "step.position_iterations", "expected an integer"));
-  EXPECT_TRUE(refusedAt(scene(R"("step": {"scale": 0.1})"), "step.scale", ">= 1 and <= 10000"));
+  EXPECT_TRUE(refusedAt(scene(R"("step": {"scale": 0.1})"), "step.scale", ">= 10 and <= 1000"));
   EXPECT_TRUE(refusedAt(scene(R"("step": {"contacts": "exact"})"), "step.contacts",
                         "unknown contact model"));
 }
@@ -181,9 +213,9 @@ TEST(SceneJson, RefusesIncompleteOrExcessiveShots) {
   EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "force": 10})"), "shot.contact_time",
                         "required"));
   EXPECT_TRUE(
-      refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 101})"), "shot.speed", "<= 100"));
+      refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 14.5})"), "shot.speed", "<= 14"));
   EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "force": 1000, "contact_time": 1})"),
-                        "shot", "more than 100"));
+                        "shot", "more than 14"));
   EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "tip": [0.1]})"),
                         "shot.tip", "two numbers"));
   EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 1, "tip": [0.9, 0.9]})"),
