@@ -12,7 +12,7 @@ constexpr double kTouchTolerance = 1e-6;
 
 /// Balls closing slower than this (m/s) are taken as resting against each other: after a
 /// perfectly inelastic contact the rounding of single precision must not start another.
-constexpr double kMinClosingSpeed = 1e-6;
+constexpr double kMinClosingSpeed = 1e-4;
 
 /// Velocities of two balls after an instantaneous frictionless collision.
 struct CollisionOutcome {

@@ -92,6 +92,11 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
         // gained, s (vn + a_n s / 2), is zero again.
         s = firstCrossing(Quartic{{vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0, 0.0}}, 0.0,
                           horizon);
+      } else {
+        // Resting on it: met again if pressed a touch tolerance in.
+        s = firstCrossing(
+            Quartic{{gap + kTouchTolerance, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0,
+            horizon);
       }
     } else {
       s = firstCrossing(Quartic{{gap, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0, horizon);

@@ -257,6 +257,9 @@ struct World::Impl {
     }
     s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
     s = physics::stopPressing(s, -normal, phys);
+    const Vec2 was = s.p;
+    physics::setOutOfCushion(s, predicted, table, phys.ball_radius);
+    if (s.p != was) b.body->SetTransform(toB2(s.p), 0.0f);
     restart(b, s);
     Event e;
     e.type = EventType::Cushion;

@@ -147,6 +147,7 @@ class Run {
         Kinematics k = physics::bounceOffCushion(now(a), e.normal, *a.state.mass, p_, impulse);
         k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
         k = physics::stopPressing(k, -e.normal, p_);
+        physics::setOutOfCushion(k, e.normal, table_, p_.ball_radius);
         restart(a, k);
         Event ev;
         ev.type = EventType::Cushion;

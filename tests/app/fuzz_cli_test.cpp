@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -216,6 +217,7 @@ TEST(FuzzCli, EveryInputEndsWellOrIsRefusedCleanly) {
       std::printf("[ known    ] ball %d off the table at (%g, %g) in scene %d\n",
                   b["id"].get<int>(), b["x"].get<double>(), b["y"].get<double>(), i);
       if (std::getenv("NINEBALL_FUZZ_STRICT")) ADD_FAILURE() << where;
+      if (const char* dump = std::getenv("NINEBALL_FUZZ_DUMP")) std::ofstream(dump) << text;
     }
     if (!scene.contains("shot") && scene["physics"]["cloth"] != "spin") {
       const double mass = scene["physics"]["ball_mass"].get<double>();

@@ -35,7 +35,11 @@ void setApart(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
 void collideBalls(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
                   const PhysicsParams& p) {
   const Vec2 n = normalized(b.p - a.p);
-  const auto out = collide(a.v, b.v, mass_a, mass_b, p.ball_restitution, n);
+  // Balls that meet slower than a ball can bounce stay together, as at a cushion: else a
+  // jammed crowd passes micrometre-per-second bounces round for ever.
+  const double closing = dot(a.v - b.v, n);
+  const double e = closing > kRestingSpeed ? p.ball_restitution : 0.0;
+  const auto out = collide(a.v, b.v, mass_a, mass_b, e, n);
   a.v = out.v1;
   b.v = out.v2;
   if (dot(b.v - a.v, n) < kRestingSpeed) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/ball_collision.hpp"
+
 namespace nineball::physics {
 
 Kinematics bounceOffCushion(Kinematics k, Vec2 normal, double mass, const PhysicsParams& p,
@@ -44,6 +46,12 @@ Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p) {
   k.w.x += du.y / p.ball_radius;
   k.w.y -= du.x / p.ball_radius;
   return k;
+}
+
+void setOutOfCushion(Kinematics& k, Vec2 normal, const TableGeometry& table, double r) {
+  // Below half the tolerance a sink is the rounding of a contact met on time.
+  const double sink = cushionSink(table, k.p, r);
+  if (sink > 0.5 * kTouchTolerance) k.p += normal * sink;
 }
 
 }  // namespace nineball::physics

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nineball/params.hpp"
+#include "nineball/table.hpp"
 #include "physics/motion.hpp"
 
 namespace nineball::physics {
@@ -26,5 +27,10 @@ Kinematics cushionFriction(Kinematics k, Vec2 normal, double normal_impulse, dou
 /// ball slides along it instead of bouncing against it ever more often (a Zeno sequence).
 /// `towards` is the unit vector from the ball to the obstacle. Never adds energy.
 Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p);
+
+/// A ball pressed into a cushion (by other balls, or by a contact met a little late) is met
+/// again once it sinks by the touch tolerance, and set back out along the cushion's normal
+/// here: micrometres of position, no velocity, so no energy.
+void setOutOfCushion(Kinematics& k, Vec2 normal, const TableGeometry& table, double r);
 
 }  // namespace nineball::physics
