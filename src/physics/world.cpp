@@ -357,7 +357,10 @@ struct World::Impl {
 #ifdef NINEBALL_CHECKED
     // Checked builds (the sanitizer build among them) stop at the first contact that gives
     // energy back, with the rounding of Box2D's single-precision velocities allowed for.
-    const bool contact = e.kind == NextEvent::Kind::Ball || e.kind == NextEvent::Kind::Cushion;
+    // Box2D's own ball solver ("contacts": "box2d") is the one model known to gain energy; it
+    // is kept as the measured counter-example and not checked.
+    const bool contact = e.kind == NextEvent::Kind::Cushion ||
+                         (e.kind == NextEvent::Kind::Ball && sp.contacts == ContactModel::Pairwise);
     const double before = contact ? energyOf(e) : 0.0;
     resolveUnchecked(e);
     if (contact && energyOf(e) > before * (1.0 + 1e-6) + 1e-15) {
