@@ -32,6 +32,9 @@ enum class SimEnd {
 /// "rest", "until", "max_time" or "budget".
 const char* simEndName(SimEnd end);
 
+/// How a run of either engine ended, from what it was asked for and where it stopped.
+SimEnd simEnd(bool until, bool exhausted, bool at_rest);
+
 struct SimResult {
   double time = 0.0;     ///< simulated seconds reached
   long steps = 0;        ///< fixed steps computed

@@ -81,8 +81,7 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     if (height > limit || foot < -limit || foot > seg.length + limit) continue;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
-    // Past this segment's line beyond its ends: a neighbouring segment holds the ball.
-    if (gap < -kTouchTolerance) continue;
+    if (gap < -kTouchTolerance) continue;  // behind this segment's line: another one holds it
     std::optional<double> s;
     if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
       if (vn < -kMinClosingSpeed) {

@@ -124,6 +124,12 @@ const char* simEndName(SimEnd end) {
   return "?";
 }
 
+SimEnd simEnd(bool until, bool exhausted, bool at_rest) {
+  if (exhausted) return SimEnd::Budget;
+  if (until) return SimEnd::Until;
+  return at_rest ? SimEnd::Rest : SimEnd::MaxTime;
+}
+
 SimResult simulate(const Scene& scene) {
   if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
   World world(scene.table, scene.physics, scene.step);
@@ -144,12 +150,7 @@ SimResult simulate(const Scene& scene) {
   result.time = world.time();
   result.balls = world.balls();
   result.events = world.events();
-  result.end = scene.until ? SimEnd::Until : SimEnd::Rest;
-  if (world.exhausted()) {
-    result.end = SimEnd::Budget;
-  } else if (!scene.until && !world.atRest()) {
-    result.end = SimEnd::MaxTime;
-  }
+  result.end = simEnd(scene.until.has_value(), world.exhausted(), world.atRest());
   if (started_at_rest) {
     Event rest;
     rest.type = EventType::AllAtRest;

@@ -317,7 +317,7 @@ struct World::Impl {
     const Vec2 pa = sa.p, pb = sb.p;
     physics::collideBalls(sa, sb, a.mass, b.mass, phys);
     physics::setApart(sa, sb, a.mass, b.mass, table, phys.ball_radius);
-    // Balls pressed together are set back to touching (see collideBalls).
+    // Balls pressed together are set back to touching (see setApart).
     if (sa.p != pa) a.body->SetTransform(toB2(sa.p), 0.0f);
     if (sb.p != pb) b.body->SetTransform(toB2(sb.p), 0.0f);
     restart(a, sa);

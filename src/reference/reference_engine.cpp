@@ -196,12 +196,7 @@ SimResult simulate(const Scene& scene) {
   }
   const auto stop = std::chrono::steady_clock::now();
   SimResult r = run.result();
-  r.end = scene.until ? SimEnd::Until : SimEnd::Rest;
-  if (run.exhausted()) {
-    r.end = SimEnd::Budget;
-  } else if (!scene.until && !run.settled()) {
-    r.end = SimEnd::MaxTime;
-  }
+  r.end = simEnd(scene.until.has_value(), run.exhausted(), run.settled());
   r.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
   if (started_at_rest) {
     Event rest;
