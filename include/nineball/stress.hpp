@@ -20,6 +20,8 @@ struct StressOptions {
   double long_run_s = 60.0;     ///< simulated seconds of the frictionless endless run
   double rest_within_s = 60.0;  ///< every scenario with a cloth must be at rest by then
   StepParams step;              ///< solver settings of every scenario
+  /// Only the scenarios whose names start with one of these ("settings #616 "); all if empty.
+  std::vector<std::string> only;
 };
 
 /// What it found.
@@ -33,7 +35,6 @@ struct StressReport {
 
   long failureCount() const;
 };
-
 
 /// The first scenario whose name starts with `name`, as a scene (to run it on its own).
 std::optional<Scene> stressScene(const StressOptions& options, const std::string& name);

@@ -68,6 +68,9 @@ struct TableGeometry {
 /// How deep a ball of radius r at c sinks into the cushion loop (m; 0 or less when clear).
 double cushionSink(const TableGeometry& table, Vec2 c, double r);
 
+/// Where a ball of radius r at c is once lifted straight out of the cushions it sinks into.
+Vec2 outOfCushions(const TableGeometry& table, Vec2 c, double r);
+
 /// Empty when a table can hold balls of radius r: every rail at least a ball's diameter long
 /// between its pockets, and jaws and cups that cross nothing. Else why not, naming the table.
 std::optional<std::string> checkTable(const TableDef& def, double r);

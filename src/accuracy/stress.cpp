@@ -1,5 +1,6 @@
 #include "nineball/stress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -408,7 +409,13 @@ std::optional<Scene> stressScene(const StressOptions& options, const std::string
 
 StressReport runStress(const StressOptions& options) {
   StressReport report;
+  auto wanted = [&](const std::string& name) {
+    return options.only.empty() ||
+           std::any_of(options.only.begin(), options.only.end(),
+                       [&](const std::string& prefix) { return name.rfind(prefix, 0) == 0; });
+  };
   for (Scenario s : scenarios(options)) {
+    if (!wanted(s.name)) continue;
     if (!s.fixed_step) s.step = options.step;
     ++report.scenarios[s.kind];
     const std::uint64_t first = runOnce(s, options, report, true);

@@ -33,6 +33,9 @@ CLI::App* addStressCommand(CLI::App& app, StressCommandOptions& options) {
   cmd->add_option("--hz", s.step.hz, "Base step rate")
       ->check(CLI::Range(1.0, 100000.0))
       ->capture_default_str();
+  cmd->add_option("--only", s.only,
+                  "Run only the scenarios whose names start with this (as \"settings #616 \" "
+                  "in a failure's description); may be given again");
   cmd->add_option("--contacts", options.contacts, "pairwise or box2d")
       ->check(CLI::IsMember({"pairwise", "box2d"}))
       ->capture_default_str();

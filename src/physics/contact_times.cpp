@@ -16,8 +16,8 @@ Quartic separation(Vec2 d, Vec2 e, Vec2 g, double distance) {
 }
 
 // Two circles `distance` apart at their closest: first touch while closing. With
-// `pressed_apart`, circles resting against each other are met again once the cloth has pressed
-// them an extra touch tolerance together, for the contact to set them back to touching.
+// `pressed_apart`, circles resting against each other are met again once pressed a touch
+// tolerance together, for the contact to set them back to touching.
 std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horizon,
                            bool pressed_apart) {
   const double gap = length(d) - distance;
@@ -25,8 +25,8 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
     const double closing = -dot(normalized(d), e);
     if (closing > kMinClosingSpeed) return 0.0;
     if (pressed_apart && -closing <= kMinClosingSpeed) {
-      const double pressed = std::min(length(d), distance) - kTouchTolerance;
-      return firstCrossing(separation(d, e, g, pressed), 0.0, horizon);
+      if (gap < -kTouchTolerance) return 0.0;
+      return firstCrossing(separation(d, e, g, distance - kTouchTolerance), 0.0, horizon);
     }
     // Parting, but spin or the cloth may bring them back: |d(s)|^2 - |d(0)|^2 = s c(s), so
     // they are back at today's distance at the first root of c. Slower parting is a resting
@@ -81,9 +81,14 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     if (height > limit || foot < -limit || foot > seg.length + limit) continue;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
-    if (gap < -kTouchTolerance) continue;  // behind this segment's line: another one holds it
     std::optional<double> s;
-    if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
+    if (gap < -kTouchTolerance) {
+      // Behind this segment's line. Off its ends another segment holds the ball; on it, the
+      // ball has sunk past the tolerance (pressed by others) and is met to be set out again:
+      // at once if it still goes in, else once pressed further, unless it is leaving.
+      if (gap < -radius || foot < 0.0 || foot > seg.length || vn > kMinClosingSpeed) continue;
+      s = 0.0;
+    } else if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
       if (vn < -kMinClosingSpeed) {
         s = 0.0;
       } else if (vn > kMinClosingSpeed) {
@@ -107,11 +112,26 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
   for (Vec2 corner : cushions.corners) {
     const Vec2 d = path.p - corner;
     if (length(d) > limit) continue;
-    if (auto s = meet(d, path.v, path.a, radius, horizon, false)) {
+    if (auto s = meet(d, path.v, path.a, radius, horizon, true)) {
       consider(*s, normalized(path.at(*s) - corner));
     }
   }
   return best;
+}
+
+std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushions) {
+  std::vector<Vec2> normals;
+  for (const Cushions::Segment& seg : cushions.segments) {
+    const double gap = dot(p - seg.a, seg.inward) - radius;
+    const double foot = dot(p - seg.a, seg.along);
+    if (gap <= kTouchTolerance && gap >= -radius && foot >= 0.0 && foot <= seg.length) {
+      normals.push_back(seg.inward);
+    }
+  }
+  for (Vec2 corner : cushions.corners) {
+    if (length(p - corner) - radius <= kTouchTolerance) normals.push_back(normalized(p - corner));
+  }
+  return normals;
 }
 
 std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon) {

@@ -41,6 +41,9 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
                                          double horizon);
 
 /// The first clock value in [0, horizon] at which the path's point enters the circle.
+/// The normals (into the table) of every face and corner a ball of `radius` at p touches.
+std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushions);
+
 std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon);
 
 /// How far a path can get from its start within the horizon.

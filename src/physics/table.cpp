@@ -176,8 +176,9 @@ std::optional<std::string> checkTable(const TableDef& def, double r) {
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;
       if (segmentsCross(loop[i], loop[(i + 1) % n], loop[j], loop[(j + 1) % n])) {
-        return std::string("table: the pocket jaws and cups cross each other or the rails (jaw "
-                           "faces are ") +
+        return std::string(
+                   "table: the pocket jaws and cups cross each other or the rails (jaw "
+                   "faces are ") +
                metres(std::max(kJawLength, 1.2 * r)) +
                " long): widen the mouths or bring the jaw angles further from 180 degrees";
       }
@@ -221,6 +222,29 @@ double cushionSink(const TableGeometry& t, Vec2 c, double r) {
     sink = std::max(sink, r - length(c - (a + ab * u)));
   }
   return sink;
+}
+
+Vec2 outOfCushions(const TableGeometry& t, Vec2 c, double r) {
+  const auto& loop = t.cushion_loop;
+  // A ball in a wedge is lifted off one face onto the other: a few passes settle it.
+  for (int pass = 0; pass < 4; ++pass) {
+    double deepest = 0.0;
+    Vec2 lift;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+      const Vec2 ab = b - a;
+      const Vec2 nearest = a + ab * std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
+      const double gap = length(c - nearest);
+      // A centre on the face itself has no side to be lifted to.
+      if (r - gap > deepest && gap > 0.0) {
+        deepest = r - gap;
+        lift = (c - nearest) * (deepest / gap);
+      }
+    }
+    if (deepest <= 0.0) break;
+    c += lift;
+  }
+  return c;
 }
 
 std::optional<PocketId> TableGeometry::pocketAt(Vec2 p) const {

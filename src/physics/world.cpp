@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
@@ -15,6 +16,7 @@
 #include "physics/contact_recorder.hpp"
 #include "physics/models/ball_contact.hpp"
 #include "physics/models/cushion.hpp"
+#include "physics/models/jam.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 
@@ -35,9 +37,11 @@ constexpr double kMaxTravelUnitsPerStep = 1.5;
 // Box2D resolves a bounce the world predicted in a step this short (s): the contact solver
 // changes the velocity, and the ball moves by less than a float's rounding of its position.
 constexpr float kBounceStep = 1e-12f;
-// More events than this in one step (a frozen cluster caught in a loop) end the run: its
-// result is partial, and says so.
+// More events than this in a sixtieth of a second (a frozen cluster caught in a loop) end the
+// run: its result is partial, and says so. Steps longer than that (base rates under 60 Hz)
+// may hold as many more as their length calls for.
 constexpr std::size_t kEventsPerStepBase = 10000;
+constexpr double kCapPeriod = 1.0 / 60.0;
 
 }  // namespace
 
@@ -60,6 +64,7 @@ struct World::Impl {
   b2Body* table_body = nullptr;
   ContactRecorder recorder;
   physics::EventSearch search;
+  physics::JamCounter jams;
   std::vector<Ball> balls;
   std::vector<Event> events;
   double time = 0.0;
@@ -218,10 +223,24 @@ struct World::Impl {
     recorder.ball_contacts = false;
   }
 
+  // The cushion faces a ball at p touches.
+  std::vector<Vec2> faces(Vec2 p) const {
+    return physics::touchingNormals(p, phys.ball_radius, search.cushions);
+  }
+
   void cushionBounce(std::size_t i, Vec2 predicted) {
     Ball& b = balls[i];
     Vec2 normal;
     Kinematics s = now(b);
+    if (jams.jammed(time, i, physics::JamCounter::kCushion)) {
+      // In a jam: no bounce, and every face it touches at once (see JamCounter).
+      double impulse = 0.0;
+      auto normals = faces(s.p);
+      normals.push_back(predicted);
+      s = physics::stopAgainst(s, normals, b.mass, impulse);
+      settleOnCushion(b, s, predicted, predicted, impulse);
+      return;
+    }
     recorder.bouncing = i;
     solveContactsNow();
     double impulse = 0.0;
@@ -259,6 +278,12 @@ struct World::Impl {
 #ifdef NINEBALL_BREAK_ENERGY
     s.v = s.v * 1.01;  // deliberately broken, to show that the checks catch it
 #endif
+    settleOnCushion(b, s, normal, predicted, impulse);
+  }
+
+  // After the bounce itself: the rail's friction, the pressing spin taken away, the ball set
+  // out of the cushion, and the event.
+  void settleOnCushion(Ball& b, Kinematics s, Vec2 normal, Vec2 predicted, double impulse) {
     s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
     s = physics::stopPressing(s, -normal, phys);
     const Vec2 was = s.p;
@@ -313,16 +338,51 @@ struct World::Impl {
       if (!hits.empty()) return;
       logger("physics")->debug("t={:.6f} Box2D saw no contact of {} and {}", time, a.id, b.id);
     }
+    if (jams.jammed(time, i, j)) {
+      settleJam(i, j);
+      return;
+    }
     Kinematics sa = now(a), sb = now(b);
     const Vec2 pa = sa.p, pb = sb.p;
     physics::collideBalls(sa, sb, a.mass, b.mass, phys);
-    physics::setApart(sa, sb, a.mass, b.mass, table, phys.ball_radius);
+    physics::setApart(sa, sb, table, phys.ball_radius);
     // Balls pressed together are set back to touching (see setApart).
     if (sa.p != pa) a.body->SetTransform(toB2(sa.p), 0.0f);
     if (sb.p != pb) b.body->SetTransform(toB2(sb.p), 0.0f);
     restart(a, sa);
     restart(b, sb);
     pushBallEvent(a, b, sa.v, sb.v);
+  }
+
+  // A contact of i and j in a jam: every ball touching them settled at once (see settleJam).
+  void settleJam(std::size_t i, std::size_t j) {
+    std::vector<Vec2> centres(balls.size());
+    std::vector<bool> on_table(balls.size());
+    for (std::size_t m = 0; m < balls.size(); ++m) {
+      on_table[m] = balls[m].body != nullptr;
+      if (on_table[m]) centres[m] = position(balls[m]);
+    }
+    physics::Jam jam;
+    std::vector<std::size_t> members;
+    std::tie(members, jam.pairs) = physics::jamAround(centres, on_table, i, j, phys.ball_radius);
+    for (std::size_t m : members) {
+      jam.balls.push_back({m, now(balls[m]), balls[m].mass, faces(centres[m])});
+    }
+    physics::settleJam(jam, phys);
+    physics::setJamApart(jam, table, phys.ball_radius);
+    std::vector<bool> changed(jam.balls.size());
+    for (std::size_t m = 0; m < jam.balls.size(); ++m) {
+      const physics::JamBall& jb = jam.balls[m];
+      Ball& b = balls[jb.index];
+      changed[m] = m < 2 || jb.k.v != now(b).v || jb.k.p != centres[jb.index];
+      if (jb.k.p != centres[jb.index]) b.body->SetTransform(toB2(jb.k.p), 0.0f);
+      if (changed[m]) restart(b, jb.k);
+    }
+    for (auto [x, y] : jam.pairs) {
+      if (!changed[x] && !changed[y]) continue;
+      pushBallEvent(balls[jam.balls[x].index], balls[jam.balls[y].index], jam.balls[x].k.v,
+                    jam.balls[y].k.v);
+    }
   }
 
   void drop(std::size_t i, PocketId pocket) {
@@ -397,7 +457,9 @@ struct World::Impl {
   // with `to_rest`, stops the moment the last ball stops travelling.
   void advance(double end, bool to_rest) {
     if (contacts_stale) updateContacts();
-    const std::size_t cap = kEventsPerStepBase + 100 * balls.size();
+    const double periods = std::max(1.0, (end - time) / kCapPeriod);
+    const auto cap = static_cast<std::size_t>(
+        periods * static_cast<double>(kEventsPerStepBase + 100 * balls.size()));
     std::size_t count = 0;
     bool was_settled = settled();
     std::vector<physics::Mover> movers(balls.size());

@@ -2,12 +2,15 @@
 
 #include <chrono>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/models/ball_contact.hpp"
 #include "physics/models/cushion.hpp"
+#include "physics/models/jam.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 
@@ -117,6 +120,51 @@ class Run {
 
   void restart(Ball& b, const Kinematics& k) { b.arc = physics::beginArc(t_, k, p_); }
 
+  void pushBallEvent(const Ball& a, const Ball& b, Vec2 va, Vec2 vb) {
+    Event ev;
+    ev.type = EventType::BallBall;
+    ev.t = t_;
+    ev.a = a.state.id;
+    ev.b = b.state.id;
+    ev.va = va;
+    ev.vb = vb;
+    events_.push_back(ev);
+  }
+
+  // As World's: every ball touching i and j settled at once.
+  void settleJam(std::size_t i, std::size_t j) {
+    std::vector<Vec2> centres(balls_.size());
+    std::vector<bool> on_table(balls_.size());
+    for (std::size_t m = 0; m < balls_.size(); ++m) {
+      on_table[m] = balls_[m].on_table;
+      if (on_table[m]) centres[m] = now(balls_[m]).p;
+    }
+    physics::Jam jam;
+    std::vector<std::size_t> members;
+    std::tie(members, jam.pairs) = physics::jamAround(centres, on_table, i, j, p_.ball_radius);
+    for (std::size_t m : members) {
+      jam.balls.push_back({m, now(balls_[m]), *balls_[m].state.mass, faces(centres[m])});
+    }
+    physics::settleJam(jam, p_);
+    physics::setJamApart(jam, table_, p_.ball_radius);
+    std::vector<bool> changed(jam.balls.size());
+    for (std::size_t m = 0; m < jam.balls.size(); ++m) {
+      const physics::JamBall& jb = jam.balls[m];
+      Ball& b = balls_[jb.index];
+      changed[m] = m < 2 || jb.k.v != now(b).v || jb.k.p != centres[jb.index];
+      if (changed[m]) restart(b, jb.k);
+    }
+    for (auto [x, y] : jam.pairs) {
+      if (!changed[x] && !changed[y]) continue;
+      pushBallEvent(balls_[jam.balls[x].index], balls_[jam.balls[y].index], jam.balls[x].k.v,
+                    jam.balls[y].k.v);
+    }
+  }
+
+  std::vector<Vec2> faces(Vec2 p) const {
+    return physics::touchingNormals(p, p_.ball_radius, search_.cushions);
+  }
+
   void resolve(const NextEvent& e) {
     Ball& a = balls_[e.i];
     switch (e.kind) {
@@ -127,24 +175,28 @@ class Run {
         return;
       case NextEvent::Kind::Ball: {
         Ball& b = balls_[e.j];
+        if (jams_.jammed(t_, e.i, e.j)) {
+          settleJam(e.i, e.j);
+          return;
+        }
         Kinematics ka = now(a), kb = now(b);
         physics::collideBalls(ka, kb, *a.state.mass, *b.state.mass, p_);
-        physics::setApart(ka, kb, *a.state.mass, *b.state.mass, table_, p_.ball_radius);
+        physics::setApart(ka, kb, table_, p_.ball_radius);
         restart(a, ka);
         restart(b, kb);
-        Event ev;
-        ev.type = EventType::BallBall;
-        ev.t = t_;
-        ev.a = a.state.id;
-        ev.b = b.state.id;
-        ev.va = ka.v;
-        ev.vb = kb.v;
-        events_.push_back(ev);
+        pushBallEvent(a, b, ka.v, kb.v);
         return;
       }
       case NextEvent::Kind::Cushion: {
         double impulse = 0.0;
-        Kinematics k = physics::bounceOffCushion(now(a), e.normal, *a.state.mass, p_, impulse);
+        Kinematics k = now(a);
+        if (jams_.jammed(t_, e.i, physics::JamCounter::kCushion)) {
+          auto normals = faces(k.p);
+          normals.push_back(e.normal);
+          k = physics::stopAgainst(k, normals, *a.state.mass, impulse);
+        } else {
+          k = physics::bounceOffCushion(k, e.normal, *a.state.mass, p_, impulse);
+        }
         k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
         k = physics::stopPressing(k, -e.normal, p_);
         physics::setOutOfCushion(k, e.normal, table_, p_.ball_radius);
@@ -175,6 +227,7 @@ class Run {
   PhysicsParams p_;
   TableGeometry table_;
   physics::EventSearch search_;
+  physics::JamCounter jams_;
   std::vector<Ball> balls_;
   std::vector<Event> events_;
   long resolved_ = 0;

@@ -7,28 +7,32 @@
 
 namespace nineball::physics {
 
-void setApart(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
-              const TableGeometry& table, double r) {
-  const Vec2 d = b.p - a.p;
-  const double overlap = 2.0 * r - length(d);
-  // Below half the tolerance an overlap is the rounding of a contact met on time.
-  if (!(overlap > 0.5 * kTouchTolerance)) return;
-  const Vec2 n = normalized(d);
-  // A ball that its share of the move would sink into a cushion stays put; the other moves.
-  auto sinks = [&](Vec2 from, Vec2 to) {
-    return cushionSink(table, to, r) > std::max(cushionSink(table, from, r), 0.0);
+void setApart(Kinematics& a, Kinematics& b, const TableGeometry& table, double r) {
+  // Each moves half the overlap whatever the masses: positions carry no energy, and a light
+  // ball pressed between two heavy ones is set free in a few contacts, not thousands. A ball
+  // that its half would sink into a cushion is lifted back out (it keeps the part along the
+  // rail) and the other, if free, makes up what it could not do. Lifting can close the gap
+  // a little again (two balls in a corner, each on its own rail): a few rounds settle it.
+  auto moved = [&](Vec2 from, Vec2 move, bool& held) {
+    const Vec2 to = from + move;
+    held = cushionSink(table, to, r) > std::max(cushionSink(table, from, r), 0.0);
+    return held ? outOfCushions(table, to, r) : to;
   };
-  const double total = mass_a + mass_b;
-  const Vec2 move_a = n * (-overlap * mass_b / total), move_b = n * (overlap * mass_a / total);
-  const bool hold_a = sinks(a.p, a.p + move_a), hold_b = sinks(b.p, b.p + move_b);
-  if (hold_a && hold_b) return;
-  if (hold_a) {
-    b.p += n * overlap;
-  } else if (hold_b) {
-    a.p -= n * overlap;
-  } else {
-    a.p += move_a;
-    b.p += move_b;
+  for (int round = 0; round < 8; ++round) {
+    const Vec2 d = b.p - a.p;
+    const double overlap = 2.0 * r - length(d);
+    // Below half the tolerance an overlap is the rounding of a contact met on time.
+    if (!(overlap > 0.5 * kTouchTolerance)) return;
+    const Vec2 n = normalized(d);
+    bool held_a = false, held_b = false;
+    Vec2 to_a = moved(a.p, n * (-0.5 * overlap), held_a);
+    Vec2 to_b = moved(b.p, n * (0.5 * overlap), held_b);
+    const double short_a = 0.5 * overlap + dot(to_a - a.p, n);
+    const double short_b = 0.5 * overlap - dot(to_b - b.p, n);
+    if (!held_b) to_b += n * short_a;
+    if (!held_a) to_a -= n * short_b;
+    a.p = to_a;
+    b.p = to_b;
   }
 }
 
@@ -45,6 +49,64 @@ void collideBalls(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
   if (dot(b.v - a.v, n) < kRestingSpeed) {
     a = stopPressing(a, n, p);
     b = stopPressing(b, -n, p);
+  }
+}
+
+std::pair<std::vector<std::size_t>, std::vector<std::pair<std::size_t, std::size_t>>> jamAround(
+    const std::vector<Vec2>& centres, const std::vector<bool>& on_table, std::size_t i,
+    std::size_t j, double r) {
+  std::vector<std::size_t> members{i, j};
+  std::vector<int> at(centres.size(), -1);
+  at[i] = 0;
+  at[j] = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    for (std::size_t o = 0; o < centres.size(); ++o) {
+      if (o == members[m] || !on_table[o]) continue;
+      if (length(centres[o] - centres[members[m]]) - 2.0 * r > kTouchTolerance) continue;
+      if (at[o] < 0) {
+        at[o] = static_cast<int>(members.size());
+        members.push_back(o);
+      }
+      if (static_cast<std::size_t>(at[o]) > m) pairs.emplace_back(m, at[o]);
+    }
+  }
+  return {members, pairs};
+}
+
+void setJamApart(Jam& jam, const TableGeometry& table, double r) {
+  // Setting one pair apart may press one of them into a third: a few sweeps settle most.
+  for (int sweep = 0; sweep < 16; ++sweep) {
+    double worst = 0.0;
+    for (auto [x, y] : jam.pairs) {
+      Kinematics& a = jam.balls[x].k;
+      Kinematics& b = jam.balls[y].k;
+      worst = std::max(worst, 2.0 * r - length(b.p - a.p));
+      setApart(a, b, table, r);
+    }
+    if (worst <= 0.5 * kTouchTolerance) return;
+  }
+}
+
+void settleJam(Jam& jam, const PhysicsParams& p) {
+  PhysicsParams still = p;
+  still.ball_restitution = 0.0;
+  double unused = 0.0;
+  for (int sweep = 0; sweep < 4000; ++sweep) {
+    double closing = 0.0;
+    for (auto [x, y] : jam.pairs) {
+      JamBall& a = jam.balls[x];
+      JamBall& b = jam.balls[y];
+      const double c = dot(a.k.v - b.k.v, normalized(b.k.p - a.k.p));
+      if (c <= 0.0) continue;
+      closing = std::max(closing, c);
+      collideBalls(a.k, b.k, a.mass, b.mass, still);
+    }
+    for (JamBall& b : jam.balls) {
+      for (Vec2 f : b.faces) closing = std::max(closing, -dot(b.k.v, f));
+      b.k = stopAgainst(b.k, b.faces, b.mass, unused);
+    }
+    if (closing <= kMinClosingSpeed) break;
   }
 }
 

@@ -18,6 +18,30 @@ Kinematics bounceOffCushion(Kinematics k, Vec2 normal, double mass, const Physic
   return k;
 }
 
+Kinematics stopAgainst(Kinematics k, const std::vector<Vec2>& normals, double mass,
+                       double& impulse) {
+  // The nearest velocity in the cone of allowed ones lies on one of its faces or at its apex.
+  auto allowed = [&](Vec2 v) {
+    for (Vec2 n : normals) {
+      if (dot(v, n) < -1e-12) return false;
+    }
+    return true;
+  };
+  Vec2 best;
+  if (allowed(k.v)) {
+    best = k.v;
+  } else {
+    for (Vec2 n : normals) {
+      const double vn = dot(k.v, n);
+      const Vec2 v = k.v - n * vn;
+      if (vn < 0.0 && allowed(v) && length(k.v - v) < length(k.v - best)) best = v;
+    }
+  }
+  impulse = mass * length(k.v - best);
+  k.v = best;
+  return k;
+}
+
 Kinematics cushionFriction(Kinematics k, Vec2 normal, double normal_impulse, double mass,
                            const PhysicsParams& p) {
   if (!p.spin() || p.cushion_friction <= 0.0 || normal_impulse <= 0.0) return k;

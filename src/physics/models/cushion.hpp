@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
 #include "physics/motion.hpp"
@@ -17,6 +19,13 @@ Kinematics bounceOffCushion(Kinematics k, Vec2 normal, double mass, const Physic
                             double& impulse);
 
 /// Friction at the cushion nose (spin cloth only): it acts on the slip of the contact point,
+/// A perfectly inelastic stop against every face in `normals` at once: the velocity nearest
+/// to today's that enters none of them (in a wedge, often none at all). Pair by pair the
+/// same stop only creeps towards it, by a factor of the wedge's angle each time.
+/// `impulse` is the size of the impulse given.
+Kinematics stopAgainst(Kinematics k, const std::vector<Vec2>& normals, double mass,
+                       double& impulse);
+
 /// Coulomb with cushion_friction times the normal impulse, capped where the point stops
 /// slipping; side spin changes the angle off the rail, and the rail changes the side spin.
 Kinematics cushionFriction(Kinematics k, Vec2 normal, double normal_impulse, double mass,
