@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -10,6 +11,22 @@ enum class ClothModel {
   Spin,      ///< sliding friction on the contact point's slip, then rolling resistance
   Friction,  ///< constant deceleration mu g against the velocity (paper eq. 4.5-4.8)
   Damping,   ///< Box2D linear damping: v <- v / (1 + h c) each step
+};
+
+/// How balls grip each other while they touch.
+enum class BallBallModel {
+  Frictionless,  ///< the paper's: the impulse is along the line of centres only
+  Frictional,    ///< Coulomb friction of the contact points: throw and spin transfer
+};
+
+/// Ball-ball friction against the sliding speed v (m/s) of the contact points:
+/// mu = a + b exp(-c v), Alciatore's fit of measured throw (TP A.14); b = 0 for a constant.
+struct BallFriction {
+  double a = 9.951e-3;
+  double b = 0.108;
+  double c = 1.088;
+
+  double at(double sliding) const { return a + b * std::exp(-c * sliding); }
 };
 
 /// How ball-ball contacts are resolved.
@@ -38,7 +55,9 @@ struct PhysicsParams {
   double linear_damping = 0.2;        ///< 1/s, the damping model's c
   double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
   ClothModel cloth = ClothModel::Spin;
-  double miscue_limit = 0.5;  ///< largest tip offset (fraction of R) that is a hit
+  BallBallModel ball_ball = BallBallModel::Frictional;
+  BallFriction ball_friction;  ///< read by the frictional ball-ball model
+  double miscue_limit = 0.5;   ///< largest tip offset (fraction of R) that is a hit
 
   /// True when balls carry spin (the Spin cloth model).
   bool spin() const { return cloth == ClothModel::Spin; }
@@ -78,6 +97,8 @@ struct StepParams {
 };
 
 const char* clothModelName(ClothModel m);
+const char* ballBallModelName(BallBallModel m);
+std::optional<BallBallModel> ballBallModelFromName(const std::string& name);
 const char* contactModelName(ContactModel m);
 const char* engineName(Engine e);
 std::optional<Engine> engineFromName(const std::string& name);

@@ -22,6 +22,12 @@ struct Vec3 {
   constexpr bool operator!=(Vec3 o) const { return !(*this == o); }
 };
 
+inline constexpr double dot(Vec3 a, Vec3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double length(Vec3 v) {
+  return std::sqrt(dot(v, v));
+}
 inline constexpr Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

@@ -108,6 +108,25 @@ std::string clothsUsing(unsigned used_by) {
   return out;
 }
 
+// A number is a constant coefficient; {"a", "b", "c"} is mu = a + b exp(-c v).
+BallFriction parseBallFriction(const json& v, const std::string& path) {
+  const Bounds coefficient = Bounds::closed(0.0, 1.0);
+  if (v.is_number()) return {number(v, path, coefficient), 0.0, 0.0};
+  if (!v.is_object()) {
+    refuse(path,
+           "expected a coefficient or {\"a\", \"b\", \"c\"} for mu = a + b exp(-c v), "
+           "found " +
+               describe(v));
+  }
+  allowOnly(v, path, {"a", "b", "c"});
+  BallFriction f;
+  f.a = number(required(v, path, "a"), member(path, "a"), coefficient);
+  f.b = number(required(v, path, "b"), member(path, "b"), coefficient);
+  f.c = number(required(v, path, "c"), member(path, "c"), Bounds::closed(0.0, 100.0));
+  if (f.a + f.b > 1.0) refuse(path, "a + b (mu at rest) must be <= 1");
+  return f;
+}
+
 PhysicsParams parsePhysics(const json& v) {
   const std::string path = "physics";
   expectObject(v, path);
@@ -136,19 +155,32 @@ PhysicsParams parsePhysics(const json& v) {
       p.cloth = *model;
       continue;
     }
+    if (key == "ball_ball") {
+      const std::string name = text(item.value(), field_path);
+      auto model = ballBallModelFromName(name);
+      if (!model) {
+        refuse(field_path, "unknown ball-ball model " + quote(name) +
+                               " (expected \"frictionless\" or \"frictional\")");
+      }
+      p.ball_ball = *model;
+      continue;
+    }
     if (key == "ball_friction") {
-      refuse(field_path,
-             "not used by any model yet: balls do not grip each other (ball-ball friction is "
-             "not modelled)");
+      p.ball_friction = parseBallFriction(item.value(), field_path);
+      continue;
     }
     const auto* f = std::find_if(std::begin(kParamFields), std::end(kParamFields),
                                  [&](const ParamField& pf) { return key == pf.name; });
     if (f == std::end(kParamFields)) {
-      std::string list = "preset, cloth";
+      std::string list = "preset, cloth, ball_ball, ball_friction";
       for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
     p.*(f->field) = number(item.value(), field_path, f->bounds);
+  }
+  if (optional(v, "ball_friction") && p.ball_ball != BallBallModel::Frictional) {
+    refuse(member(path, "ball_friction"),
+           "not used by the \"frictionless\" ball-ball model (only by \"frictional\")");
   }
   // Checked once the cloth is known, wherever "cloth" and "preset" appear in the object.
   for (const ParamField& pf : kParamFields) {

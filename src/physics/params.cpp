@@ -10,6 +10,7 @@ PhysicsParams PhysicsParams::paper() {
   // The paper's own mu was in program units; the real rolling resistance stands in for it.
   p.rolling_friction = 0.01;
   p.cloth = ClothModel::Friction;
+  p.ball_ball = BallBallModel::Frictionless;
   return p;
 }
 
@@ -21,11 +22,24 @@ std::optional<PhysicsParams> PhysicsParams::preset(const std::string& name) {
 
 const char* clothModelName(ClothModel m) {
   switch (m) {
-    case ClothModel::Spin: return "spin";
-    case ClothModel::Friction: return "friction";
-    case ClothModel::Damping: return "damping";
+    case ClothModel::Spin:
+      return "spin";
+    case ClothModel::Friction:
+      return "friction";
+    case ClothModel::Damping:
+      return "damping";
   }
   return "?";
+}
+
+const char* ballBallModelName(BallBallModel m) {
+  return m == BallBallModel::Frictionless ? "frictionless" : "frictional";
+}
+
+std::optional<BallBallModel> ballBallModelFromName(const std::string& name) {
+  if (name == "frictionless") return BallBallModel::Frictionless;
+  if (name == "frictional") return BallBallModel::Frictional;
+  return std::nullopt;
 }
 
 const char* contactModelName(ContactModel m) {

@@ -302,9 +302,29 @@ TEST(SceneJson, ReadsEveryPhysicsParameter) {
   EXPECT_EQ(d.physics.rest_speed, 0.002);
 }
 
+TEST(SceneJson, ReadsTheBallBallModelAndItsFriction) {
+  Scene s = accepted(scene(R"("physics": {"ball_friction": 0.05})"));
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictional);
+  EXPECT_DOUBLE_EQ(s.physics.ball_friction.at(3.0), 0.05);
+  s = accepted(scene(R"("physics": {"ball_friction": {"a": 0.01, "b": 0.1, "c": 1.0}})"));
+  EXPECT_DOUBLE_EQ(s.physics.ball_friction.at(0.0), 0.11);
+  s = accepted(scene(R"("physics": {"preset": "paper"})"));
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictionless);
+  s = accepted(scene(R"("physics": {"ball_ball": "frictionless"})"));
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictionless);
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_ball": "sticky"})"), "physics.ball_ball",
+                        "unknown ball-ball model"));
+  EXPECT_TRUE(
+      refusedAt(scene(R"("physics": {"ball_friction": 1.5})"), "physics.ball_friction", "<= 1"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": {"a": 0.01, "b": 0.1}})"),
+                        "physics.ball_friction.c", "required"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": {"a": 0.6, "b": 0.6, "c": 1}})"),
+                        "physics.ball_friction", "a + b"));
+}
+
 TEST(SceneJson, RefusesAParameterNoModelReads) {
-  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": 0.05})"), "physics.ball_friction",
-                        "not used by any model yet"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": 0.05, "preset": "paper"})"),
+                        "physics.ball_friction", "not used by the \"frictionless\" ball-ball"));
   // The cloth may come after the parameter: the check waits for it.
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"spin_decay": 5, "preset": "paper"})"),
                         "physics.spin_decay", "not used by the \"friction\" cloth"));

@@ -42,10 +42,11 @@ inline TableDef longTable() {
   return t;
 }
 
-/// The real preset with the paper's cloth (constant deceleration mu g, no spin): the model
-/// the paper's closed forms describe.
+/// The real preset with the paper's cloth (constant deceleration mu g, no spin) and its
+/// frictionless balls: the model the paper's closed forms describe.
 inline PhysicsParams constantDeceleration(PhysicsParams p = PhysicsParams::real()) {
   p.cloth = ClothModel::Friction;
+  p.ball_ball = BallBallModel::Frictionless;
   return p;
 }
 
