@@ -56,8 +56,9 @@ struct PhysicsParams {
   double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
   ClothModel cloth = ClothModel::Spin;
   BallBallModel ball_ball = BallBallModel::Frictional;
-  BallFriction ball_friction;  ///< read by the frictional ball-ball model
-  double miscue_limit = 0.5;   ///< largest tip offset (fraction of R) that is a hit
+  BallFriction ball_friction;          ///< read by the frictional ball-ball model
+  double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
+  double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
 
   /// True when balls carry spin (the Spin cloth model).
   bool spin() const { return cloth == ClothModel::Spin; }

@@ -6,9 +6,10 @@ namespace nineball {
 
 /// A cue strike on the cue ball.
 struct Shot {
-  double heading_rad = 0.0;  ///< direction of travel, anticlockwise from +x
-  double speed = 0.0;        ///< m/s given to the cue ball
-  Vec2 tip;                  ///< [side, height] as fractions of R (spin)
+  double heading_rad = 0.0;    ///< direction of travel, anticlockwise from +x
+  double speed = 0.0;          ///< m/s given to the cue ball
+  Vec2 tip;                    ///< [side, height] as fractions of R (spin)
+  double elevation_rad = 0.0;  ///< the cue's tilt above the table (0 to 89 degrees)
 
   /// A plain speed along a heading in degrees.
   static Shot withSpeed(double heading_deg, double speed);

@@ -30,7 +30,9 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass) {
     turn.shoot = choice == "shoot";
     return turn;
   }
-  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip", "cue", "push_out"});
+  allowOnly(
+      v, path,
+      {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue", "push_out"});
   if (const json* p = optional(v, "push_out")) {
     if (!p->is_boolean())
       refuse(member(path, "push_out"), "expected true or false, found " + describe(*p));

@@ -79,6 +79,8 @@ struct ParamField {
 // Every parameter reaches Box2D as a float: the upper limits, far beyond any real table, keep
 // it finite there (an infinite damping aborts the process in a Box2D assertion).
 const Bounds kMass = Bounds::closed(limits::kMinBallMass, limits::kMaxBallMass);
+// 0 is no squirt; a shaft end heavier than the heaviest ball is no cue.
+const Bounds kEndMass = Bounds::closed(0.0, limits::kMaxBallMass);
 
 const ParamField kParamFields[] = {
     {"ball_mass", &PhysicsParams::ball_mass, kMass, kEveryCloth},
@@ -93,6 +95,7 @@ const ParamField kParamFields[] = {
     {"spin_decay", &PhysicsParams::spin_decay, Bounds::nonNegative(1e4), kSpinCloth},
     {"cushion_friction", &PhysicsParams::cushion_friction, Bounds::nonNegative(10.0), kSpinCloth},
     {"miscue_limit", &PhysicsParams::miscue_limit, Bounds::closed(0.0, 1.0), kEveryCloth},
+    {"cue_end_mass", &PhysicsParams::cue_end_mass, kEndMass, kEveryCloth},
     {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0), kSpinCloth | kFrictionCloth},
     {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0), kDampingCloth},
     {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed), kDampingCloth},
@@ -274,6 +277,11 @@ Shot parseShotFields(const json& v, const std::string& path, double cue_mass) {
     }
   }
   if (const json* tip = optional(v, "tip")) shot.tip = parseTip(*tip, member(path, "tip"));
+  if (const json* e = optional(v, "elevation_deg")) {
+    // 90 degrees would drive the ball straight into the slate: no horizontal motion at all.
+    shot.elevation_rad =
+        degToRad(number(*e, member(path, "elevation_deg"), Bounds::closed(0.0, 89.0)));
+  }
   return shot;
 }
 
@@ -282,7 +290,7 @@ namespace {
 Shot parseShot(const json& v, const std::vector<BallState>& balls, const PhysicsParams& physics) {
   const std::string path = "shot";
   expectObject(v, path);
-  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip"});
+  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg"});
   const auto cue =
       std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
   if (cue == balls.end()) refuse(path, "needs a cue ball (a ball with id 0)");

@@ -184,12 +184,6 @@ Path pathFrom(const Arc& arc, double t, const PhysicsParams& p) {
   return {k.p, k.v, p.cloth == ClothModel::Damping ? Vec2{} : arc.accel};
 }
 
-Vec3 strikeSpin(Vec2 dir, double speed, Vec2 tip, double radius) {
-  // r x (J d) = J R (side z + height (-dy, dx, 0)), I = 2/5 m R^2, J = m v.
-  const double k = 5.0 * speed / (2.0 * radius);
-  return {-dir.y * tip.y * k, dir.x * tip.y * k, tip.x * k};
-}
-
 double kineticEnergy(const Kinematics& k, double mass, double radius) {
   const double inertia = 0.4 * mass * radius * radius;
   return 0.5 * mass * dot(k.v, k.v) +

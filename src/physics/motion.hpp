@@ -76,10 +76,6 @@ Path pathFrom(const Arc& arc, double t, const PhysicsParams& p);
 /// Velocity of the ball's contact point with the cloth: v + w x (0, 0, -R).
 Vec2 slip(Vec2 v, Vec3 w, double radius);
 
-/// Angular velocity a level cue gives a ball at speed `speed` along unit `dir`, struck at
-/// `tip` = [side, height] fractions of R (paper eq. 3.16-3.21: w = r x F dt / I).
-Vec3 strikeSpin(Vec2 dir, double speed, Vec2 tip, double radius);
-
 /// Kinetic energy with rotation (I = 2/5 m R^2), J.
 double kineticEnergy(const Kinematics& k, double mass, double radius);
 

@@ -11,6 +11,7 @@ PhysicsParams PhysicsParams::paper() {
   p.rolling_friction = 0.01;
   p.cloth = ClothModel::Friction;
   p.ball_ball = BallBallModel::Frictionless;
+  p.cue_end_mass = 0.0;
   return p;
 }
 

@@ -15,6 +15,7 @@
 #include "physics/ball_collision.hpp"
 #include "physics/contact_recorder.hpp"
 #include "physics/models/ball_contact.hpp"
+#include "physics/models/cue.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/models/jam.hpp"
 #include "physics/motion.hpp"
@@ -543,11 +544,8 @@ bool World::strike(int ball_id, const Shot& shot) {
     w.events.push_back(e);
     return false;
   }
-  const Vec2 v = shot.velocity();
-  const Vec3 spin = p.spin() ? physics::strikeSpin(fromAngle(shot.heading_rad), shot.speed,
-                                                   shot.tip, p.ball_radius)
-                             : Vec3{};
-  w.restart(b, {w.position(b), v, spin});
+  const physics::Strike s = physics::cueStrike(shot, b.mass, p);
+  w.restart(b, {w.position(b), s.v, s.w});
   return true;
 }
 

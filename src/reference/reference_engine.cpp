@@ -9,6 +9,7 @@
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/models/ball_contact.hpp"
+#include "physics/models/cue.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/models/jam.hpp"
 #include "physics/motion.hpp"
@@ -51,11 +52,8 @@ class Run {
         events_.push_back(e);
         return;
       }
-      const Vec2 v = shot.velocity();
-      const Vec3 w = p_.spin() ? physics::strikeSpin(fromAngle(shot.heading_rad), shot.speed,
-                                                     shot.tip, p_.ball_radius)
-                               : Vec3{};
-      b.arc = physics::beginArc(0.0, {b.arc.start.p, v, w}, p_);
+      const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
+      b.arc = physics::beginArc(0.0, {b.arc.start.p, s.v, s.w}, p_);
     }
   }
 
