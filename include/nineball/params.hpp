@@ -19,6 +19,12 @@ enum class BallBallModel {
   Frictional,    ///< Coulomb friction of the contact points: throw and spin transfer
 };
 
+/// How a cushion sends a ball back.
+enum class CushionModel {
+  Simple,    ///< the paper's: restitution on the normal speed, Coulomb friction at the nose
+  Mathavan,  ///< the nose above the centre, friction at nose and slate (Mathavan et al. 2010)
+};
+
 /// Ball-ball friction against the sliding speed v (m/s) of the contact points:
 /// mu = a + b exp(-c v), Alciatore's fit of measured throw (TP A.14); b = 0 for a constant.
 struct BallFriction {
@@ -56,7 +62,11 @@ struct PhysicsParams {
   double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
   ClothModel cloth = ClothModel::Spin;
   BallBallModel ball_ball = BallBallModel::Frictional;
-  BallFriction ball_friction;          ///< read by the frictional ball-ball model
+  BallFriction ball_friction;  ///< read by the frictional ball-ball model
+  CushionModel cushion = CushionModel::Mathavan;
+  /// m, the cushion's nose above the slate (WPA: 62.5-64.5 % of the ball's diameter); read by
+  /// the Mathavan cushion. Follows ball_radius in a scene that sets only the radius.
+  double cushion_height = 1.27 * 0.028575;
   double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
   double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
 
@@ -99,6 +109,8 @@ struct StepParams {
 
 const char* clothModelName(ClothModel m);
 const char* ballBallModelName(BallBallModel m);
+const char* cushionModelName(CushionModel m);
+std::optional<CushionModel> cushionModelFromName(const std::string& name);
 std::optional<BallBallModel> ballBallModelFromName(const std::string& name);
 const char* contactModelName(ContactModel m);
 const char* engineName(Engine e);

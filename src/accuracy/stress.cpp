@@ -217,6 +217,13 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
   p.cushion_friction = frictionless ? 0.0 : uniform(rng, 0.0, 0.5);
   p.spin_decay = frictionless ? 0.0 : uniform(rng, 0.0, 20.0);
   p.linear_damping = frictionless ? 0.0 : uniform(rng, 0.0, 1.0);
+  // The models are drawn from a copy, so that every scene drawn before they existed stays.
+  std::uint64_t models = rng ^ 0x6d6f64656c73ULL;
+  p.ball_ball = static_cast<BallBallModel>(splitmix64(models) % 2);
+  p.cushion = static_cast<CushionModel>(splitmix64(models) % 2);
+  // The nose anywhere strictly between the ball's centre and its top.
+  p.cushion_height = p.ball_radius * uniform(models, 1.001, 1.999);
+  p.ball_friction.a = uniform(models, 0.0, 0.1);
   return p;
 }
 

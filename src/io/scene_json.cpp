@@ -172,14 +172,43 @@ PhysicsParams parsePhysics(const json& v) {
       p.ball_friction = parseBallFriction(item.value(), field_path);
       continue;
     }
+    if (key == "cushion") {
+      const std::string name = text(item.value(), field_path);
+      auto model = cushionModelFromName(name);
+      if (!model) {
+        refuse(field_path,
+               "unknown cushion model " + quote(name) + " (expected \"simple\" or \"mathavan\")");
+      }
+      p.cushion = *model;
+      continue;
+    }
+    if (key == "cushion_height") {
+      p.cushion_height = number(item.value(), field_path, Bounds::positive(1.0));
+      continue;
+    }
     const auto* f = std::find_if(std::begin(kParamFields), std::end(kParamFields),
                                  [&](const ParamField& pf) { return key == pf.name; });
     if (f == std::end(kParamFields)) {
-      std::string list = "preset, cloth, ball_ball, ball_friction";
+      std::string list = "preset, cloth, ball_ball, ball_friction, cushion, cushion_height";
       for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
     p.*(f->field) = number(item.value(), field_path, f->bounds);
+  }
+  if (optional(v, "cushion_height")) {
+    if (p.cushion != CushionModel::Mathavan) {
+      refuse(member(path, "cushion_height"),
+             "not used by the \"simple\" cushion (only by \"mathavan\")");
+    }
+    const double r = p.ball_radius;
+    if (!(p.cushion_height > r && p.cushion_height < 2.0 * r)) {
+      refuse(member(path, "cushion_height"),
+             "the nose must stand above the ball's centre and below its top: between " +
+                 formatNumber(r) + " and " + formatNumber(2.0 * r) + " m for ball_radius " +
+                 formatNumber(r));
+    }
+  } else if (optional(v, "ball_radius")) {
+    p.cushion_height = 1.27 * p.ball_radius;  // 63.5 % of the diameter, as for the default ball
   }
   if (optional(v, "ball_friction") && p.ball_ball != BallBallModel::Frictional) {
     refuse(member(path, "ball_friction"),

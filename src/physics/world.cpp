@@ -18,6 +18,7 @@
 #include "physics/models/cue.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/models/jam.hpp"
+#include "physics/models/mathavan.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 
@@ -242,6 +243,12 @@ struct World::Impl {
       settleOnCushion(b, s, predicted, predicted, impulse);
       return;
     }
+    if (phys.cushion == CushionModel::Mathavan && -dot(s.v, predicted) > physics::kRestingSpeed) {
+      double impulse = 0.0;
+      s = physics::mathavanBounce(s, predicted, b.mass, phys, impulse);
+      settleOnCushion(b, s, predicted, predicted, impulse);
+      return;
+    }
     recorder.bouncing = i;
     solveContactsNow();
     double impulse = 0.0;
@@ -285,7 +292,10 @@ struct World::Impl {
   // After the bounce itself: the rail's friction, the pressing spin taken away, the ball set
   // out of the cushion, and the event.
   void settleOnCushion(Ball& b, Kinematics s, Vec2 normal, Vec2 predicted, double impulse) {
-    s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
+    // Mathavan's model holds the nose's friction already.
+    if (phys.cushion == CushionModel::Simple) {
+      s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
+    }
     s = physics::stopPressing(s, -normal, phys);
     const Vec2 was = s.p;
     physics::setOutOfCushion(s, predicted, table, phys.ball_radius);
@@ -481,6 +491,8 @@ struct World::Impl {
       if (e.kind != NextEvent::Kind::None) {
         ++count;
         ++resolved;
+      } else if (e.t <= time) {
+        ++count;  // a piece of no length and no event is no progress: it counts all the same
       }
       if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
         exhausted = true;

@@ -12,6 +12,7 @@
 #include "physics/models/cue.hpp"
 #include "physics/models/cushion.hpp"
 #include "physics/models/jam.hpp"
+#include "physics/models/mathavan.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 
@@ -192,10 +193,16 @@ class Run {
           auto normals = faces(k.p);
           normals.push_back(e.normal);
           k = physics::stopAgainst(k, normals, *a.state.mass, impulse);
+        } else if (p_.cushion == CushionModel::Mathavan &&
+                   -dot(k.v, e.normal) > physics::kRestingSpeed) {
+          k = physics::mathavanBounce(k, e.normal, *a.state.mass, p_, impulse);
         } else {
           k = physics::bounceOffCushion(k, e.normal, *a.state.mass, p_, impulse);
         }
-        k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
+        // Mathavan's model holds the nose's friction already.
+        if (p_.cushion == CushionModel::Simple) {
+          k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
+        }
         k = physics::stopPressing(k, -e.normal, p_);
         physics::setOutOfCushion(k, e.normal, table_, p_.ball_radius);
         restart(a, k);

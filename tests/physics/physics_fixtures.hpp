@@ -42,11 +42,12 @@ inline TableDef longTable() {
   return t;
 }
 
-/// The real preset with the paper's cloth (constant deceleration mu g, no spin) and its
-/// frictionless balls: the model the paper's closed forms describe.
+/// The real preset with the paper's cloth (constant deceleration mu g, no spin), frictionless
+/// balls and simple cushion: the model the paper's closed forms describe.
 inline PhysicsParams constantDeceleration(PhysicsParams p = PhysicsParams::real()) {
   p.cloth = ClothModel::Friction;
   p.ball_ball = BallBallModel::Frictionless;
+  p.cushion = CushionModel::Simple;
   return p;
 }
 

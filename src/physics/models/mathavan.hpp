@@ -1,0 +1,21 @@
+#pragma once
+
+#include "nineball/params.hpp"
+#include "physics/motion.hpp"
+
+namespace nineball::physics {
+
+/// A ball's rebound from a cushion whose nose stands above its centre (Mathavan, Jackson and
+/// Parkin, Proc. IMechE C 224, 2010). The contact I on the nose is at sin(theta) =
+/// (cushion_height - R) / R above the centre, so the impulse there also presses the ball into
+/// the slate, and friction acts at both contacts during the impact: at I with
+/// cushion_friction, at the slate C with sliding_friction, each against its own slip.
+/// The equations of motion are integrated over the normal impulse P at I: compression until
+/// the ball no longer moves into the cushion, then restitution until the normal force has
+/// given back cushion_restitution^2 of the work it took. Topspin, draw and side spin all
+/// change the rebound, and the restitution this gives falls with the approach speed.
+/// `inward` is the cushion's normal, into the table; `impulse` is the total P.
+Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
+                          double& impulse);
+
+}  // namespace nineball::physics
