@@ -322,6 +322,37 @@ TEST(SceneJson, ReadsTheBallBallModelAndItsFriction) {
                         "physics.ball_friction", "a + b"));
 }
 
+TEST(SceneJson, ReadsTheCushionModelTheCueAndElevation) {
+  Scene s = accepted(scene(R"("physics": {"cushion": "simple"})"));
+  EXPECT_EQ(s.physics.cushion, CushionModel::Simple);
+  s = accepted(scene(R"("physics": {"cushion_height": 0.037})"));
+  EXPECT_EQ(s.physics.cushion, CushionModel::Mathavan);
+  EXPECT_DOUBLE_EQ(s.physics.cushion_height, 0.037);
+  // The nose follows a ball whose radius is set alone: 63.5 % of its diameter.
+  s = accepted(scene(R"("physics": {"ball_radius": 0.03})"));
+  EXPECT_DOUBLE_EQ(s.physics.cushion_height, 1.27 * 0.03);
+  EXPECT_EQ(accepted(scene(R"("physics": {"preset": "paper"})")).physics.cushion,
+            CushionModel::Simple);
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion": "rubber"})"), "physics.cushion",
+                        "unknown cushion model"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion_height": 0.02})"), "physics.cushion_height",
+                        "above the ball's centre"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion_height": 0.06})"), "physics.cushion_height",
+                        "below its top"));
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion": "simple", "cushion_height": 0.036})"),
+                        "physics.cushion_height", "not used by the \"simple\" cushion"));
+  s = accepted(scene(R"("shot": {"heading_deg": 0, "speed": 3, "elevation_deg": 30})"));
+  ASSERT_TRUE(s.shot.has_value());
+  EXPECT_NEAR(s.shot->elevation_rad, 30.0 * 3.14159265358979323846 / 180.0, 1e-12);
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 3, "elevation_deg": 90})"),
+                        "shot.elevation_deg", ""));
+  EXPECT_TRUE(refusedAt(scene(R"("shot": {"heading_deg": 0, "speed": 3, "elevation_deg": -1})"),
+                        "shot.elevation_deg", ""));
+  s = accepted(scene(R"("physics": {"cue_end_mass": 0})"));
+  EXPECT_EQ(s.physics.cue_end_mass, 0.0);
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"cue_end_mass": -1})"), "physics.cue_end_mass", ""));
+}
+
 TEST(SceneJson, RefusesAParameterNoModelReads) {
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_friction": 0.05, "preset": "paper"})"),
                         "physics.ball_friction", "not used by the \"frictionless\" ball-ball"));
