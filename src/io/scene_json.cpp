@@ -111,6 +111,20 @@ std::string clothsUsing(unsigned used_by) {
   return out;
 }
 
+// A model chosen by name; an unknown name is refused with the names there are.
+template <typename Model>
+Model modelNamed(const json& v, const std::string& path,
+                 std::optional<Model> (*from_name)(const std::string&), const char* what,
+                 const char* expected) {
+  const std::string name = text(v, path);
+  const std::optional<Model> model = from_name(name);
+  if (!model) {
+    refuse(path, "unknown " + std::string(what) + " model " + quote(name) + " (expected " +
+                     expected + ")");
+  }
+  return *model;
+}
+
 // A number is a constant coefficient; {"a", "b", "c"} is mu = a + b exp(-c v).
 BallFriction parseBallFriction(const json& v, const std::string& path) {
   const Bounds coefficient = Bounds::closed(0.0, 1.0);
@@ -149,23 +163,13 @@ PhysicsParams parsePhysics(const json& v) {
     const std::string field_path = member(path, key);
     if (key == "preset") continue;
     if (key == "cloth") {
-      const std::string name = text(item.value(), field_path);
-      auto model = clothModelFromName(name);
-      if (!model) {
-        refuse(field_path, "unknown cloth model " + quote(name) +
-                               " (expected \"spin\", \"friction\" or \"damping\")");
-      }
-      p.cloth = *model;
+      p.cloth = modelNamed(item.value(), field_path, clothModelFromName, "cloth",
+                           "\"spin\", \"friction\" or \"damping\"");
       continue;
     }
     if (key == "ball_ball") {
-      const std::string name = text(item.value(), field_path);
-      auto model = ballBallModelFromName(name);
-      if (!model) {
-        refuse(field_path, "unknown ball-ball model " + quote(name) +
-                               " (expected \"frictionless\" or \"frictional\")");
-      }
-      p.ball_ball = *model;
+      p.ball_ball = modelNamed(item.value(), field_path, ballBallModelFromName, "ball-ball",
+                               "\"frictionless\" or \"frictional\"");
       continue;
     }
     if (key == "ball_friction") {
@@ -173,13 +177,8 @@ PhysicsParams parsePhysics(const json& v) {
       continue;
     }
     if (key == "cushion") {
-      const std::string name = text(item.value(), field_path);
-      auto model = cushionModelFromName(name);
-      if (!model) {
-        refuse(field_path,
-               "unknown cushion model " + quote(name) + " (expected \"simple\" or \"mathavan\")");
-      }
-      p.cushion = *model;
+      p.cushion = modelNamed(item.value(), field_path, cushionModelFromName, "cushion",
+                             "\"simple\" or \"mathavan\"");
       continue;
     }
     if (key == "cushion_height") {
