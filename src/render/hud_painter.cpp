@@ -130,9 +130,14 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
                   std::abs(hud.tip.y), hud.tip.x >= 0 ? "right" : "left", std::abs(hud.tip.x));
     spin = s;
   }
-  text(target, "spin (T/B, click)", {c.x - r - small * 0.6, c.y - small * 1.4}, small * 0.9, kDim,
+  // Three lines beside the icon, centred on it: what sets the tip, the tip, the cue's tilt.
+  text(target, "spin (T/B, click)", {c.x - r - small * 0.6, c.y - small * 2.1}, small * 0.9, kDim,
        Align::Right);
-  text(target, spin, {c.x - r - small * 0.6, c.y + small * 0.1}, small * 0.9, kText, Align::Right);
+  text(target, spin, {c.x - r - small * 0.6, c.y - small * 0.65}, small * 0.9, kText, Align::Right);
+  char tilt[48];
+  std::snprintf(tilt, sizeof tilt, "cue %.0f deg (E/Q)", hud.elevation_deg);
+  text(target, tilt, {c.x - r - small * 0.6, c.y + small * 0.8}, small * 0.9,
+       hud.elevation_deg > 0.0 ? kText : kDim, Align::Right);
 
   const PixelRect m = layout.message;
   text(target, hud.status, {m.left, m.top + m.height * 0.12}, layout.text_px, kText, Align::Left,

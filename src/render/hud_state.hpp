@@ -30,10 +30,11 @@ struct HudState {
   std::string status;   ///< what the player to move does now
   std::string message;  ///< what the last shot gave
   Tone tone = Tone::Info;
-  double power = 0.0;    ///< 0..1 of the gauge
-  double speed = 0.0;    ///< m/s the cue ball will get
-  Vec2 tip;              ///< [side, height] as fractions of R
-  double max_tip = 0.5;  ///< the tip's useful range
+  double power = 0.0;          ///< 0..1 of the gauge
+  double speed = 0.0;          ///< m/s the cue ball will get
+  Vec2 tip;                    ///< [side, height] as fractions of R
+  double max_tip = 0.5;        ///< the tip's useful range
+  double elevation_deg = 0.0;  ///< the cue's tilt above the table
   bool push_out_declared = false;
   Overlay overlay = Overlay::None;
   std::string overlay_title;

@@ -79,6 +79,25 @@ TEST(GameSession, TheTipStaysInItsUsefulRange) {
   EXPECT_EQ(s.speed(), GameSession::kMinSpeed);
 }
 
+TEST(GameSession, TheCueRisesToAMasseAndIsLevelAgainForTheNextTurn) {
+  MatchSetup setup;
+  setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
+                 BallState::at(3, {0.0, 0.0})};
+  GameSession s(setup);
+  s.setElevation(2.0);  // past the top: held there
+  EXPECT_NEAR(s.elevation(), nineball::degToRad(GameSession::kMaxElevationDeg), 1e-12);
+  s.setElevation(-1.0);
+  EXPECT_EQ(s.elevation(), 0.0);
+  s.setElevation(nineball::degToRad(20.0));
+  s.setTip({0.4, 0.0});
+  s.setHeading(0.0);
+  s.setSpeed(1.5);
+  ASSERT_TRUE(s.shoot());
+  EXPECT_NEAR(s.elevation(), nineball::degToRad(20.0), 1e-12);  // the shot played with it
+  ASSERT_TRUE(roll(s));
+  EXPECT_EQ(s.elevation(), 0.0);  // a new turn starts with a level cue
+}
+
 TEST(GameSession, AWrongBallFirstIsAFoulWithBallInHandForTheOther) {
   MatchSetup setup;
   setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),

@@ -11,8 +11,8 @@ const std::vector<std::string> kHelpLines = {
     "Mouse: point where to aim; press, drag back and let go to strike",
     "  (the further you drag, the harder the shot; right click cancels)",
     "Left / Right: turn the aim (Shift: finer)    Up / Down: power",
-    "Space: shoot    T / B: top / back spin    C: centre the tip",
-    "Click the cue-ball icon to hit off centre (side spin too)",
+    "Space: shoot    T / B: top / back spin    E / Q: raise / lower the cue",
+    "Click the cue-ball icon for side spin; C centres the tip and levels the cue",
     "Ball in hand: drag the cue ball, or move it with W A S D",
     "P: declare a push-out when offered; then S: play or P: pass",
     "R: rematch after a rack    F1: full screen    F12: screenshot",
@@ -127,6 +127,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.power = session.power();
   hud.speed = session.speed();
   hud.tip = session.tip();
+  hud.elevation_deg = radToDeg(session.elevation());
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
   fillDialog(hud, session, activeOverlay(session, ui), computer);

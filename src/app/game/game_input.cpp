@@ -23,6 +23,8 @@ constexpr double kAimFastDegPerS = 30.0;
 constexpr double kAimFineDegPerS = 1.0;
 constexpr double kSpeedPerS = 3.0;
 constexpr double kSpinStep = 0.1;
+// Degrees of cue elevation per E / Q press: a few presses reach a swerve, twelve a masse.
+constexpr double kElevationStepDeg = 5.0;
 // The cue ball in hand moves this fast with W A S D (m/s), in steps no longer than this (m).
 constexpr double kCueMoveSpeed = 0.4;
 constexpr double kCueMoveStep = 0.002;
@@ -148,8 +150,15 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     case Key::B:
       session_.setTip(session_.tip() - Vec2{0.0, kSpinStep});
       break;
+    case Key::E:
+      session_.setElevation(session_.elevation() + degToRad(kElevationStepDeg));
+      break;
+    case Key::Q:
+      session_.setElevation(session_.elevation() - degToRad(kElevationStepDeg));
+      break;
     case Key::C:
       session_.setTip({});
+      session_.setElevation(0.0);
       break;
     case Key::P:
       session_.togglePushOut();

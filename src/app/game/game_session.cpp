@@ -51,6 +51,10 @@ void GameSession::setTip(Vec2 tip) {
   tip_ = len > limit ? tip * (limit / len) : tip;
 }
 
+void GameSession::setElevation(double radians) {
+  elevation_ = std::clamp(radians, 0.0, degToRad(kMaxElevationDeg));
+}
+
 bool GameSession::pushOutAvailable() const {
   return phase_ == Phase::Aiming && match_->rack().pushOutAvailable();
 }
@@ -114,6 +118,7 @@ void GameSession::startTurn() {
   phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
   push_out_ = false;
   tip_ = {};
+  elevation_ = 0.0;
   cue_spot_.reset();
   if (match_->cueInHand()) {
     std::optional<Vec2> on_table;
@@ -157,6 +162,7 @@ bool GameSession::shoot() {
   turn.shot.heading_rad = heading_;
   turn.shot.speed = speed_;
   turn.shot.tip = tip_;
+  turn.shot.elevation_rad = elevation_;
   return shoot(turn);
 }
 
@@ -179,11 +185,13 @@ bool GameSession::shoot(const TurnInput& given) {
   heading_ = turn.shot.heading_rad;
   setSpeed(turn.shot.speed);
   tip_ = turn.shot.tip;
+  elevation_ = turn.shot.elevation_rad;
   push_out_ = turn.kind == TurnInput::Kind::PushOut;
   if (turn.cue) cue_spot_ = turn.cue;
-  logger("game")->info("{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}]{}",
-                       seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed,
-                       turn.shot.tip.x, turn.shot.tip.y, push_out_ ? ", push-out" : "");
+  logger("game")->info(
+      "{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}], elevation {:.0f} deg{}",
+      seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed, turn.shot.tip.x,
+      turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
   clock_.reset();
   events_seen_ = 0;

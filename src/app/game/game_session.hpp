@@ -26,11 +26,12 @@ enum class Phase {
 /// window, and the messages about each turn. No SFML: the window drives it.
 class GameSession {
  public:
-  static constexpr double kMaxSpeed = 12.0;    ///< m/s at full power (a hard break)
-  static constexpr double kMinSpeed = 0.1;     ///< m/s at the bottom of the gauge
-  static constexpr double kMaxTip = 0.5;       ///< the tip's useful range, fraction of R
-  static constexpr double kBreakSpeed = 10.0;  ///< m/s the break starts with
-  static constexpr double kShotSpeed = 3.0;    ///< m/s the first shot after the break starts with
+  static constexpr double kMaxSpeed = 12.0;         ///< m/s at full power (a hard break)
+  static constexpr double kMinSpeed = 0.1;          ///< m/s at the bottom of the gauge
+  static constexpr double kMaxTip = 0.5;            ///< the tip's useful range, fraction of R
+  static constexpr double kMaxElevationDeg = 60.0;  ///< the cue's tilt: swerve up to a masse
+  static constexpr double kBreakSpeed = 10.0;       ///< m/s the break starts with
+  static constexpr double kShotSpeed = 3.0;  ///< m/s the first shot after the break starts with
 
   /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
   explicit GameSession(const MatchSetup& setup);
@@ -59,6 +60,10 @@ class GameSession {
   double maxTip() const;
   /// Sets the tip, pulled in to the useful range.
   void setTip(Vec2 tip);
+  /// The cue's tilt above the table, radians: an elevated cue curves the ball (swerve).
+  double elevation() const { return elevation_; }
+  /// Sets the tilt, held within 0 to kMaxElevationDeg.
+  void setElevation(double radians);
 
   bool pushOutAvailable() const;
   bool pushOutDeclared() const { return push_out_; }
@@ -122,6 +127,7 @@ class GameSession {
   double heading_ = 0.0;
   double speed_ = kShotSpeed;
   Vec2 tip_;
+  double elevation_ = 0.0;
   bool push_out_ = false;
   std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
   int ball_on_at_shot_ = 0;
