@@ -31,8 +31,10 @@ struct Contact {
     const double sc = std::max(std::hypot(xc, yc), stick);
     const double cos_i = xi / si, sin_i = yi / si, cos_c = xc / sc, sin_c = yc / sc;
     // The slate's normal force per unit P: the nose presses down by sin(theta), and the
-    // nose's friction adds its vertical share.
-    const double slate = sin_t + mu_w * sin_i * cos_t;
+    // nose's friction adds its vertical share. The slate can only push: when the nose's
+    // friction would lift the ball (a low nose, a rough cushion) it carries no load, and
+    // its friction none either (else that friction would drive the ball and add energy).
+    const double slate = std::max(0.0, sin_t + mu_w * sin_i * cos_t);
     const double spin = 5.0 / (2.0 * mass * r);
     return {-(mu_w * cos_i + mu_s * cos_c * slate) / mass,
             -(cos_t - mu_w * sin_t * sin_i + mu_s * sin_c * slate) / mass,
