@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "game/planner_geometry.hpp"
+#include "game/planner_throw.hpp"
 #include "nineball/aim_guide.hpp"
 
 namespace nineball::ai {
@@ -42,6 +43,10 @@ struct Line {
   std::optional<PocketId> pocket;
   double prior = 0.0;
   double min_speed = 0.0;
+  // Lines that mean to send the first ball hit somewhere: that ball, and where to. The aim
+  // then allows for squirt and throw at each speed and tip.
+  const BallState* object = nullptr;
+  Vec2 send_to;
 };
 
 double decel(const PhysicsParams& p) {
@@ -101,9 +106,9 @@ std::vector<Line> potLines(const SearchContext& ctx, const std::vector<BallState
       if (!g || !entersPocket(pocket, g->object_dir)) continue;
       if (!pathClear(on.pos, g->target, ctx.radius, balls, kCueBall, on.id)) continue;
       if (!hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
-      lines.push_back({ShotKind::Pot, g->heading, on.id, pocket.id,
-                       potChance(*g, pocket, ctx.radius, sigma),
-                       minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut)});
+      lines.push_back(
+          {ShotKind::Pot, g->heading, on.id, pocket.id, potChance(*g, pocket, ctx.radius, sigma),
+           minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, g->target});
     }
   }
   keepBest(lines, ctx.level.max_pot_lines);
@@ -128,7 +133,8 @@ std::vector<Line> combinationLines(const SearchContext& ctx, const std::vector<B
                            std::erf(std::cos(g1->cut) * ctx.radius / (g1->to_ghost * sigma));
       const double on_speed = minPotSpeed(ctx.in.physics, g2->to_ghost, g2->to_target, g2->cut);
       lines.push_back({ShotKind::Combination, g1->heading, second.id, pocket.id, prior,
-                       strikerSpeed(ctx.in.physics, on_speed, g1->to_ghost, g1->cut)});
+                       strikerSpeed(ctx.in.physics, on_speed, g1->to_ghost, g1->cut), &on,
+                       g2->ghost});
     }
   }
   keepBest(lines, kMaxCombinationLines);
@@ -158,7 +164,7 @@ std::vector<Line> bankLines(const SearchContext& ctx, const std::vector<BallStat
       if (!g || !hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
       lines.push_back({ShotKind::Bank, g->heading, on.id, pocket.id,
                        kBankDiscount * potChance(*g, pocket, ctx.radius, sigma),
-                       minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut)});
+                       minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, image});
     }
   }
   keepBest(lines, kMaxBankLines);
@@ -175,7 +181,8 @@ std::vector<Line> safetyLines(const SearchContext& ctx, const std::vector<BallSt
     const Vec2 ghost = on.pos - rotated(along, spread) * (2.0 * ctx.radius);
     const double heading = headingTo(cue, ghost);
     if (!hitsFirst(ctx, balls, cue, heading, on.id)) continue;
-    lines.push_back({ShotKind::Safety, heading, on.id, std::nullopt, kSafetyPrior, 0.0});
+    lines.push_back(
+        {ShotKind::Safety, heading, on.id, std::nullopt, kSafetyPrior, 0.0, nullptr, {}});
   }
   return lines;
 }
@@ -188,7 +195,7 @@ std::vector<Line> kickLines(const SearchContext& ctx, const std::vector<BallStat
   auto add = [&](Vec2 image) {
     const double heading = headingTo(cue, image);
     if (meetsCushionFirst(ctx, balls, cue, heading)) {
-      lines.push_back({ShotKind::Kick, heading, on.id, std::nullopt, kKickPrior, 0.0});
+      lines.push_back({ShotKind::Kick, heading, on.id, std::nullopt, kKickPrior, 0.0, nullptr, {}});
     }
   };
   for (int r = 0; r < kRailCount; ++r) {
@@ -217,9 +224,27 @@ std::vector<double> speedsFor(const std::vector<double>& choices, double min_spe
   return out;
 }
 
-void expand(const std::vector<Line>& lines, const std::vector<double>& speeds,
-            const std::vector<Vec2>& tips, std::optional<Vec2> placed,
-            std::vector<Candidate>& out) {
+// The ghost ball's heading, or the one that allows for squirt and throw when the line means
+// to send a ball somewhere.
+double aimedHeading(const SearchContext& ctx, const Line& line, Vec2 cue, const Shot& shot) {
+  if (!line.object) return line.heading;
+  const double standard = ctx.in.physics.ball_mass;
+  ThrowSetup s;
+  s.cue = cue;
+  s.cue_mass = standard;
+  for (const BallState& b : ctx.in.balls) {
+    if (b.id == kCueBall) s.cue_mass = b.mass.value_or(standard);
+  }
+  s.object = line.object->pos;
+  s.object_mass = line.object->mass.value_or(standard);
+  s.shot = shot;
+  const Vec2 want = line.send_to - line.object->pos;
+  return headingAllowingForThrow(ctx.in.physics, s, line.heading, std::atan2(want.y, want.x));
+}
+
+void expand(const SearchContext& ctx, Vec2 cue, const std::vector<Line>& lines,
+            const std::vector<double>& speeds, const std::vector<Vec2>& tips,
+            std::optional<Vec2> placed, std::vector<Candidate>& out) {
   for (const Line& line : lines) {
     for (double speed : speedsFor(speeds, line.min_speed)) {
       for (Vec2 tip : tips) {
@@ -228,6 +253,7 @@ void expand(const std::vector<Line>& lines, const std::vector<double>& speeds,
         c.shot.heading_rad = line.heading;
         c.shot.speed = speed;
         c.shot.tip = tip;
+        c.shot.heading_rad = aimedHeading(ctx, line, cue, c.shot);
         c.cue = placed;
         c.target = line.target;
         c.pocket = line.pocket;
@@ -258,27 +284,36 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
   const std::vector<Vec2> centre{Vec2{}};
   if (on) {
     const auto pots = potLines(ctx, balls, cue, *on, std::nullopt);
-    expand(pots, level.pot_speeds, usableTips(ctx), placed, out);
+    expand(ctx, cue, pots, level.pot_speeds, usableTips(ctx), placed, out);
     if (level.combinations) {
-      expand(combinationLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed, out);
+      expand(ctx, cue, combinationLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed,
+             out);
     }
-    if (level.banks) expand(bankLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed, out);
+    if (level.banks) {
+      expand(ctx, cue, bankLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed, out);
+    }
     const auto safeties = safetyLines(ctx, balls, cue, *on);
-    expand(safeties, level.safety_speeds, centre, placed, out);
+    expand(ctx, cue, safeties, level.safety_speeds, centre, placed, out);
     if (pots.empty() && safeties.empty()) {
       const std::vector<double> kick_speeds(std::begin(kKickSpeeds), std::end(kKickSpeeds));
-      expand(kickLines(ctx, balls, cue, *on), kick_speeds, centre, placed, out);
+      expand(ctx, cue, kickLines(ctx, balls, cue, *on), kick_speeds, centre, placed, out);
     }
   }
   if (out.empty()) {
     // Nothing aims anywhere useful: try every direction and let the physics tell.
     std::vector<Line> blind;
     for (int i = 0; i < kBlindHeadings; ++i) {
-      blind.push_back(
-          {ShotKind::Kick, 2.0 * kPi * i / kBlindHeadings, ctx.ball_on, std::nullopt, 0.0, 0.0});
+      blind.push_back({ShotKind::Kick,
+                       2.0 * kPi * i / kBlindHeadings,
+                       ctx.ball_on,
+                       std::nullopt,
+                       0.0,
+                       0.0,
+                       nullptr,
+                       {}});
     }
     const std::vector<double> speeds(std::begin(kBlindSpeeds), std::end(kBlindSpeeds));
-    expand(blind, speeds, centre, placed, out);
+    expand(ctx, cue, blind, speeds, centre, placed, out);
   }
   return out;
 }
@@ -286,12 +321,19 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
 std::vector<Candidate> sweepShots(const SearchContext& ctx, int headings) {
   std::vector<Line> lines;
   for (int i = 0; i < headings; ++i) {
-    lines.push_back(
-        {ShotKind::Kick, 2.0 * kPi * i / headings, ctx.ball_on, std::nullopt, 0.0, 0.0});
+    lines.push_back({ShotKind::Kick,
+                     2.0 * kPi * i / headings,
+                     ctx.ball_on,
+                     std::nullopt,
+                     0.0,
+                     0.0,
+                     nullptr,
+                     {}});
   }
   std::vector<Candidate> out;
   const std::vector<double> speeds(std::begin(kSweepSpeeds), std::end(kSweepSpeeds));
-  expand(lines, speeds, {Vec2{}}, std::nullopt, out);
+  const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
+  expand(ctx, cue ? cue->pos : Vec2{}, lines, speeds, {Vec2{}}, std::nullopt, out);
   return out;
 }
 
@@ -299,8 +341,8 @@ std::vector<Candidate> potsInto(const SearchContext& ctx, const std::vector<Ball
                                 Vec2 cue, PocketId pocket, std::optional<Vec2> placed) {
   std::vector<Candidate> out;
   if (const BallState* on = objectBall(balls, ctx.ball_on)) {
-    expand(potLines(ctx, balls, cue, *on, pocket), ctx.level.pot_speeds, usableTips(ctx), placed,
-           out);
+    expand(ctx, cue, potLines(ctx, balls, cue, *on, pocket), ctx.level.pot_speeds, usableTips(ctx),
+           placed, out);
   }
   return out;
 }
