@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cmath>
+#include <optional>
+
 #include "render/hud_state.hpp"
 #include "render/view_transform.hpp"
 
@@ -12,6 +15,10 @@ struct HudLayout {
   PixelRect message;    ///< the message lines between the gauge and the spin icon
   Vec2 spin_centre;     ///< the cue-ball icon that sets the tip (px)
   double spin_radius = 0.0;
+  /// The cue seen from the side: a quarter ring round the icon's upper left, from level (on
+  /// the left) to straight down (at the top), where a click tilts the cue.
+  double tilt_inner = 0.0;
+  double tilt_outer = 0.0;
   PixelRect panel;         ///< a dialog over the table (help, push-out choice, game over)
   PixelRect button_left;   ///< the dialog's first button
   PixelRect button_right;  ///< the dialog's second button
@@ -31,11 +38,13 @@ struct HudLayout {
     h.spin_radius = 0.07 * s;
     h.spin_centre = {band.left + band.width - margin - h.spin_radius, band.top + band.height / 2.0};
     const double msg_left = h.power_bar.left + h.power_bar.width + 2.0 * margin;
-    const double msg_right = h.spin_centre.x - h.spin_radius - 0.36 * s;  // spin labels
+    h.tilt_inner = 1.12 * h.spin_radius;
+    h.tilt_outer = 1.42 * h.spin_radius;
+    const double msg_right = h.spin_centre.x - h.tilt_outer - 0.36 * s;  // spin labels
     h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left, band.height - 0.02 * s};
     const Vec2 c = view.toPixels({0.0, 0.0});
     const double pw = (wide ? 2.0 : 1.3) * s;
-    const double ph = (compact ? 0.36 : wide ? 0.95 : 0.6) * s;
+    const double ph = (compact ? 0.36 : wide ? 1.02 : 0.6) * s;
     const double top =
         compact ? view.toPixels({0.0, view.table().width / 2.0 - 0.04}).y : c.y - ph / 2.0;
     h.panel = {c.x - pw / 2.0, top, pw, ph};
@@ -44,6 +53,22 @@ struct HudLayout {
     h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
     h.button_right = {c.x + gap / 2.0, by, bw, bh};
     return h;
+  }
+
+  /// Where on the tilt ring a cue `elevation` (rad) above the table points from, as a unit
+  /// vector from the icon's centre (window axes, y down).
+  static Vec2 tiltDirection(double elevation) {
+    return {-std::cos(elevation), -std::sin(elevation)};
+  }
+
+  /// The elevation (rad, 0 to pi/2) a press at `px` asks for, or nothing when it is off the
+  /// tilt ring (with a little slack round it).
+  std::optional<double> tiltAt(Vec2 px) const {
+    const Vec2 d = px - spin_centre;
+    const double r = length(d);
+    if (r < tilt_inner - 0.05 * spin_radius || r > tilt_outer + 0.15 * spin_radius) return {};
+    if (d.x > 0.1 * spin_radius || d.y > 0.1 * spin_radius) return {};
+    return std::atan2(std::max(-d.y, 0.0), std::max(-d.x, 0.0));
   }
 };
 

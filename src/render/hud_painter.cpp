@@ -113,6 +113,18 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
   batch_.line(c - Vec2{0.0, r}, c + Vec2{0.0, r}, 1.0, sf::Color(160, 160, 160, 120));
   const Vec2 dot_px = c + Vec2{hud.tip.x, -hud.tip.y} * r;
   batch_.circle(dot_px, std::max(3.0, r * 0.14), sf::Color(200, 30, 30));
+  // The cue seen from the side: the ring of the tilts it can take, the cue at its tilt.
+  const double top = degToRad(hud.max_elevation_deg);
+  batch_.arc(c, layout.tilt_inner, layout.tilt_outer, kPi + top, kPi, sf::Color(255, 255, 255, 45));
+  for (double tick : {0.0, 15.0, 30.0, 45.0, 60.0}) {
+    if (tick > hud.max_elevation_deg) break;
+    const Vec2 u = HudLayout::tiltDirection(degToRad(tick));
+    batch_.line(c + u * layout.tilt_outer, c + u * (layout.tilt_outer + 0.12 * r), 1.0,
+                sf::Color(200, 200, 200, 140));
+  }
+  const Vec2 tilt = HudLayout::tiltDirection(degToRad(hud.elevation_deg));
+  batch_.line(c + tilt * (layout.tilt_inner - 1.0), c + tilt * (layout.tilt_outer + 0.25 * r),
+              std::max(3.0, 0.09 * r), sf::Color(222, 184, 135));
   batch_.draw(target);
 
   const double small = layout.text_px * 0.85;
@@ -131,12 +143,13 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
     spin = s;
   }
   // Three lines beside the icon, centred on it: what sets the tip, the tip, the cue's tilt.
-  text(target, "spin (T/B, click)", {c.x - r - small * 0.6, c.y - small * 2.1}, small * 0.9, kDim,
+  const double labels_right = c.x - layout.tilt_outer - small * 0.6;
+  text(target, "spin (T/B, click)", {labels_right, c.y - small * 2.1}, small * 0.9, kDim,
        Align::Right);
-  text(target, spin, {c.x - r - small * 0.6, c.y - small * 0.65}, small * 0.9, kText, Align::Right);
-  char tilt[48];
-  std::snprintf(tilt, sizeof tilt, "cue %.0f deg (E/Q)", hud.elevation_deg);
-  text(target, tilt, {c.x - r - small * 0.6, c.y + small * 0.8}, small * 0.9,
+  text(target, spin, {labels_right, c.y - small * 0.65}, small * 0.9, kText, Align::Right);
+  char tilt_text[48];
+  std::snprintf(tilt_text, sizeof tilt_text, "cue %.0f deg (E/Q)", hud.elevation_deg);
+  text(target, tilt_text, {labels_right, c.y + small * 0.8}, small * 0.9,
        hud.elevation_deg > 0.0 ? kText : kDim, Align::Right);
 
   const PixelRect m = layout.message;

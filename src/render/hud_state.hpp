@@ -35,6 +35,7 @@ struct HudState {
   Vec2 tip;                    ///< [side, height] as fractions of R
   double max_tip = 0.5;        ///< the tip's useful range
   double elevation_deg = 0.0;  ///< the cue's tilt above the table
+  double max_elevation_deg = 60.0;
   bool push_out_declared = false;
   Overlay overlay = Overlay::None;
   std::string overlay_title;

@@ -26,9 +26,22 @@ void TriangleBatch::circle(Vec2 centre, double radius, sf::Color colour, int seg
 }
 
 void TriangleBatch::ring(Vec2 centre, double inner, double outer, sf::Color colour, int segments) {
-  const int n = segments > 0 ? segments : circleSegments(outer);
+  band(centre, inner, outer, 0.0, 2.0 * kPi, segments > 0 ? segments : circleSegments(outer),
+       colour);
+}
+
+void TriangleBatch::arc(Vec2 centre, double inner, double outer, double from, double to,
+                        sf::Color colour) {
+  const double share = std::abs(to - from) / (2.0 * kPi);
+  band(centre, inner, outer, from, to,
+       std::max(2, static_cast<int>(std::ceil(circleSegments(outer) * share))), colour);
+}
+
+void TriangleBatch::band(Vec2 centre, double inner, double outer, double from, double to, int n,
+                         sf::Color colour) {
   for (int i = 0; i < n; ++i) {
-    const Vec2 u0 = fromAngle(2.0 * kPi * i / n), u1 = fromAngle(2.0 * kPi * (i + 1) / n);
+    const Vec2 u0 = fromAngle(from + (to - from) * i / n);
+    const Vec2 u1 = fromAngle(from + (to - from) * (i + 1) / n);
     quad(centre + u0 * inner, centre + u0 * outer, centre + u1 * outer, centre + u1 * inner,
          colour);
   }

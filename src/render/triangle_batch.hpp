@@ -27,6 +27,8 @@ class TriangleBatch {
   void circle(Vec2 centre, double radius, sf::Color colour, int segments = 0);
   /// A ring between two radii.
   void ring(Vec2 centre, double inner, double outer, sf::Color colour, int segments = 0);
+  /// The part of a ring between two angles (rad, counter-clockwise in the window's axes).
+  void arc(Vec2 centre, double inner, double outer, double from, double to, sf::Color colour);
   /// A convex polygon, as a fan from its first point.
   void convex(const std::vector<Vec2>& points, sf::Color colour);
   /// A fan of triangles from `centre` over the closed outline `points`.
@@ -41,6 +43,8 @@ class TriangleBatch {
   void draw(sf::RenderTarget& target) const;
 
  private:
+  void band(Vec2 centre, double inner, double outer, double from, double to, int n,
+            sf::Color colour);
   void triangle(Vec2 a, Vec2 b, Vec2 c, sf::Color colour);
   std::vector<sf::Vertex> vertices_;
 };

@@ -12,7 +12,8 @@ const std::vector<std::string> kHelpLines = {
     "  (the further you drag, the harder the shot; right click cancels)",
     "Left / Right: turn the aim (Shift: finer)    Up / Down: power",
     "Space: shoot    T / B: top / back spin    E / Q: raise / lower the cue",
-    "Click the cue-ball icon for side spin; C centres the tip and levels the cue",
+    "Click the cue-ball icon for side spin, the arc by it to tilt the cue (C: reset)",
+    "The aim line is the ghost ball's: throw, squirt and swerve bend the real paths",
     "Ball in hand: drag the cue ball, or move it with W A S D",
     "P: declare a push-out when offered; then S: play or P: pass",
     "R: rematch after a rack    F1: full screen    F12: screenshot",
@@ -128,6 +129,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.speed = session.speed();
   hud.tip = session.tip();
   hud.elevation_deg = radToDeg(session.elevation());
+  hud.max_elevation_deg = GameSession::kMaxElevationDeg;
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
   fillDialog(hud, session, activeOverlay(session, ui), computer);

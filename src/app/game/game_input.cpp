@@ -272,6 +272,11 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
     setTipFromIcon(px, view);
     return;
   }
+  if (const auto tilt = layout.tiltAt(px)) {
+    ui_.drag = Drag::Tilt;
+    session_.setElevation(*tilt);
+    return;
+  }
   const Vec2 m = view.toWorld(px);
   const double r = session_.match().world().physics().ball_radius;
   if (session_.cueInHand() && length(m - session_.cuePosition()) <= 1.6 * r) {
@@ -294,6 +299,12 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
     case Drag::Spin:
       setTipFromIcon(px, view);
       return;
+    case Drag::Tilt: {
+      // Past either end of the ring the cue stays at that end.
+      const Vec2 d = px - render::HudLayout::of(view).spin_centre;
+      session_.setElevation(std::atan2(std::max(-d.y, 0.0), std::max(-d.x, 1e-9)));
+      return;
+    }
     case Drag::Cue: {
       const auto problem = session_.placementProblem(m);
       ui_.ghost = render::CueGhost{m, !problem, problem.value_or("")};

@@ -8,7 +8,7 @@
 namespace nineball::app {
 
 /// What the mouse is dragging.
-enum class Drag { None, Power, Cue, Spin };
+enum class Drag { None, Power, Cue, Spin, Tilt };
 
 /// The window's own state beside the match: dialogs and drags. No SFML.
 struct UiState {
