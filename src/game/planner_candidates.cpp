@@ -274,6 +274,16 @@ std::vector<Vec2> usableTips(const SearchContext& ctx) {
   return tips;
 }
 
+// Kicks in `count` even steps round the cue ball, for the physics to tell which help.
+std::vector<Line> everyDirection(const SearchContext& ctx, int count) {
+  std::vector<Line> lines;
+  for (int i = 0; i < count; ++i) {
+    lines.push_back(
+        {ShotKind::Kick, 2.0 * kPi * i / count, ctx.ball_on, std::nullopt, 0.0, 0.0, nullptr, {}});
+  }
+  return lines;
+}
+
 }  // namespace
 
 std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<BallState>& balls,
@@ -301,35 +311,14 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
   }
   if (out.empty()) {
     // Nothing aims anywhere useful: try every direction and let the physics tell.
-    std::vector<Line> blind;
-    for (int i = 0; i < kBlindHeadings; ++i) {
-      blind.push_back({ShotKind::Kick,
-                       2.0 * kPi * i / kBlindHeadings,
-                       ctx.ball_on,
-                       std::nullopt,
-                       0.0,
-                       0.0,
-                       nullptr,
-                       {}});
-    }
     const std::vector<double> speeds(std::begin(kBlindSpeeds), std::end(kBlindSpeeds));
-    expand(ctx, cue, blind, speeds, centre, placed, out);
+    expand(ctx, cue, everyDirection(ctx, kBlindHeadings), speeds, centre, placed, out);
   }
   return out;
 }
 
 std::vector<Candidate> sweepShots(const SearchContext& ctx, int headings) {
-  std::vector<Line> lines;
-  for (int i = 0; i < headings; ++i) {
-    lines.push_back({ShotKind::Kick,
-                     2.0 * kPi * i / headings,
-                     ctx.ball_on,
-                     std::nullopt,
-                     0.0,
-                     0.0,
-                     nullptr,
-                     {}});
-  }
+  const std::vector<Line> lines = everyDirection(ctx, headings);
   std::vector<Candidate> out;
   const std::vector<double> speeds(std::begin(kSweepSpeeds), std::end(kSweepSpeeds));
   const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
