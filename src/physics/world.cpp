@@ -13,6 +13,7 @@
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 #include "physics/ball_collision.hpp"
+#include "physics/box2d_clock.hpp"
 #include "physics/contact_recorder.hpp"
 #include "physics/models/ball_contact.hpp"
 #include "physics/models/cue.hpp"
@@ -200,12 +201,17 @@ struct World::Impl {
         if (!sp.baseline) b.body->SetAwake(false);  // a resting ball costs the solver nothing
       }
     }
-    if (any) world.Step(static_cast<float>(h), sp.velocity_iterations, sp.position_iterations);
+    if (any) box2dStep(static_cast<float>(h), sp.position_iterations);
+  }
+
+  void box2dStep(float h, int position_iterations) {
+    const physics::MutedBox2DClock muted;
+    world.Step(h, sp.velocity_iterations, position_iterations);
   }
 
   void updateContacts() {
     // A step of no time makes Box2D find the new contacts and fire the sensors.
-    world.Step(0.0f, sp.velocity_iterations, sp.position_iterations);
+    box2dStep(0.0f, sp.position_iterations);
     contacts_stale = false;
   }
 
@@ -220,7 +226,7 @@ struct World::Impl {
     }
     recorder.cushion_pushes.clear();
     recorder.ball_hits.clear();
-    world.Step(kBounceStep, sp.velocity_iterations, 0);
+    box2dStep(kBounceStep, 0);
     recorder.bouncing = ContactRecorder::kNoBall;
     recorder.ball_contacts = false;
   }
