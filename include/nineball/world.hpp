@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -32,8 +33,9 @@ class World {
   void step();
   /// Steps until every ball rests or `seconds` of simulated time have passed.
   void runFor(double seconds);
-  /// Steps until every ball rests, at most StepParams::max_time.
-  void runUntilRest();
+  /// Steps until every ball rests, at most StepParams::max_time; with `stop`, also until it
+  /// says, after a step, that what has happened (events()) decides all the caller needs.
+  void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {});
 
   bool atRest() const;
   /// True once the run has spent its work budget (limits::kMaxEvents events, kMaxPieces

@@ -19,6 +19,20 @@ constexpr double kContinueSpread = 0.4;
 constexpr double kLeaveBase = 0.45;
 constexpr double kLeaveSpread = 0.4;
 
+// A foul nothing later in the shot can undo: the cue ball pocketed, or its first contact with
+// a ball other than the ball on.
+bool foulDecided(const std::vector<Event>& events, int ball_on) {
+  bool first_seen = false;
+  for (const Event& e : events) {
+    if (e.type == EventType::Pocket && e.a == kCueBall) return true;
+    if (e.type != EventType::BallBall || first_seen) continue;
+    if (e.a != kCueBall && e.b != kCueBall) continue;
+    first_seen = true;
+    if ((e.a == kCueBall ? e.b : e.a) != ball_on) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg)
@@ -53,7 +67,12 @@ double Evaluator::value(const Shot& shot, std::optional<Vec2> cue) const {
     }
   }
   world.strike(kCueBall, shot);
-  world.runUntilRest();
+  // Under WPA rules a scratch or a wrong first ball is a foul whatever follows, and a foul is
+  // worth the same wherever the balls stop (ball in hand): the rest of the shot is not run.
+  const int ball_on = in_.rack.ballOn();
+  const bool may_stop = in_.rack.rules() == rules::RuleSet::Wpa && !in_.rack.isBreak();
+  world.runUntilRest(
+      [&](const std::vector<Event>& events) { return may_stop && foulDecided(events, ball_on); });
   const rules::ShotSummary summary = game::summarize(world.events());
   rules::Rack rack = in_.rack;
   rules::Verdict verdict;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 #include "physics/ball_collision.hpp"
 #include "physics/polynomial.hpp"
@@ -57,7 +59,70 @@ Cushions Cushions::of(const TableGeometry& table) {
     const Vec2 next = loop[(i + 2) % n];
     if (cross(b - a, next - b) > 0.0) c.corners.push_back(b);
   }
+  c.buildGrid();
   return c;
+}
+
+std::shared_ptr<const Cushions> Cushions::sharedOf(const TableGeometry& table) {
+  constexpr std::size_t kKept = 8;
+  static std::mutex mutex;
+  static std::deque<std::pair<std::vector<Vec2>, std::shared_ptr<const Cushions>>> kept;
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& [loop, cushions] : kept) {
+    if (loop == table.cushion_loop) return cushions;
+  }
+  auto built = std::make_shared<const Cushions>(of(table));
+  kept.emplace_front(table.cushion_loop, built);
+  if (kept.size() > kKept) kept.pop_back();
+  return built;
+}
+
+void Cushions::buildGrid() {
+  if (segments.empty()) return;
+  Vec2 lo = segments.front().a, hi = lo;
+  for (const Segment& seg : segments) {
+    for (Vec2 q : {seg.a, seg.b}) {
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)};
+      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+    }
+  }
+  grid_min = lo;
+  grid_nx = static_cast<int>(std::ceil((hi.x - lo.x) / kGridCell)) + 1;
+  grid_ny = static_cast<int>(std::ceil((hi.y - lo.y) / kGridCell)) + 1;
+  std::vector<std::vector<int>> cells(static_cast<std::size_t>(grid_nx * grid_ny));
+  auto add = [&](int item, Vec2 a, Vec2 b) {
+    const int x0 = std::max(
+        0, static_cast<int>(std::floor((std::min(a.x, b.x) - kGridReach - lo.x) / kGridCell)));
+    const int x1 = std::min(
+        grid_nx - 1,
+        static_cast<int>(std::floor((std::max(a.x, b.x) + kGridReach - lo.x) / kGridCell)));
+    const int y0 = std::max(
+        0, static_cast<int>(std::floor((std::min(a.y, b.y) - kGridReach - lo.y) / kGridCell)));
+    const int y1 = std::min(
+        grid_ny - 1,
+        static_cast<int>(std::floor((std::max(a.y, b.y) + kGridReach - lo.y) / kGridCell)));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x)
+        cells[static_cast<std::size_t>(y * grid_nx + x)].push_back(item);
+    }
+  };
+  const int n = static_cast<int>(segments.size());
+  for (int i = 0; i < n; ++i)
+    add(i, segments[static_cast<std::size_t>(i)].a, segments[static_cast<std::size_t>(i)].b);
+  for (int k = 0; k < static_cast<int>(corners.size()); ++k)
+    add(n + k, corners[static_cast<std::size_t>(k)], corners[static_cast<std::size_t>(k)]);
+  cell_start.assign(1, 0);
+  for (const auto& cell : cells) {
+    items.insert(items.end(), cell.begin(), cell.end());
+    cell_start.push_back(static_cast<int>(items.size()));
+  }
+}
+
+std::optional<int> Cushions::cellOf(Vec2 p) const {
+  const double fx = std::floor((p.x - grid_min.x) / kGridCell);
+  const double fy = std::floor((p.y - grid_min.y) / kGridCell);
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < grid_nx && fy < grid_ny)) return std::nullopt;
+  return static_cast<int>(fy) * grid_nx + static_cast<int>(fx);
 }
 
 double reach(const Path& path, double horizon) {
@@ -75,10 +140,10 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
   auto consider = [&](double s, Vec2 normal) {
     if (!best || s < best->s) best = CushionHit{s, normal};
   };
-  for (const Cushions::Segment& seg : cushions.segments) {
+  auto segment = [&](const Cushions::Segment& seg) {
     const double height = dot(path.p - seg.a, seg.inward);
     const double foot = dot(path.p - seg.a, seg.along);
-    if (height > limit || foot < -limit || foot > seg.length + limit) continue;
+    if (height > limit || foot < -limit || foot > seg.length + limit) return;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
     std::optional<double> s;
@@ -86,7 +151,7 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
       // Behind this segment's line. Off its ends another segment holds the ball; on it, the
       // ball has sunk past the tolerance (pressed by others) and is met to be set out again:
       // at once if it still goes in, else once pressed further, unless it is leaving.
-      if (gap < -radius || foot < 0.0 || foot > seg.length || vn > kMinClosingSpeed) continue;
+      if (gap < -radius || foot < 0.0 || foot > seg.length || vn > kMinClosingSpeed) return;
       s = 0.0;
     } else if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
       if (vn < -kMinClosingSpeed) {
@@ -105,17 +170,35 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     } else {
       s = firstCrossing(Quartic{{gap, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0, horizon);
     }
-    if (!s) continue;
+    if (!s) return;
     const double at = dot(path.at(*s) - seg.a, seg.along);
     if (at >= 0.0 && at <= seg.length) consider(*s, seg.inward);
-  }
-  for (Vec2 corner : cushions.corners) {
-    const Vec2 d = path.p - corner;
-    if (length(d) > limit) continue;
+  };
+  auto corner = [&](Vec2 c) {
+    const Vec2 d = path.p - c;
+    if (length(d) > limit) return;
     if (auto s = meet(d, path.v, path.a, radius, horizon, true)) {
-      consider(*s, normalized(path.at(*s) - corner));
+      consider(*s, normalized(path.at(*s) - c));
     }
+  };
+  // Every segment or corner a hit can come from lies within `limit` of the start (the ball
+  // touches it within its reach), so the start's cell lists all of them, in the same order.
+  const int n = static_cast<int>(cushions.segments.size());
+  const auto cell = limit <= Cushions::kGridReach ? cushions.cellOf(path.p) : std::nullopt;
+  if (cell) {
+    const auto c = static_cast<std::size_t>(*cell);
+    for (int k = cushions.cell_start[c]; k < cushions.cell_start[c + 1]; ++k) {
+      const int item = cushions.items[static_cast<std::size_t>(k)];
+      if (item < n) {
+        segment(cushions.segments[static_cast<std::size_t>(item)]);
+      } else {
+        corner(cushions.corners[static_cast<std::size_t>(item - n)]);
+      }
+    }
+    return best;
   }
+  for (const Cushions::Segment& seg : cushions.segments) segment(seg);
+  for (Vec2 c : cushions.corners) corner(c);
   return best;
 }
 

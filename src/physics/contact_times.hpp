@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,7 +21,26 @@ struct Cushions {
   std::vector<Segment> segments;
   std::vector<Vec2> corners;
 
+  /// A grid over the loop, so that a search looks only at what is near: each cell lists the
+  /// segments and then the corners (numbered after the segments) whose bounding box, grown by
+  /// kGridReach, overlaps it, in order. A search that may reach further than kGridReach, or
+  /// starts off the grid, looks at everything.
+  static constexpr double kGridReach = 0.15;  ///< m: a piece's travel and a ball's radius
+  static constexpr double kGridCell = 0.1;    ///< m
+  Vec2 grid_min;
+  int grid_nx = 0, grid_ny = 0;
+  std::vector<int> cell_start;  ///< cell c's items are items[cell_start[c] .. cell_start[c + 1])
+  std::vector<int> items;
+
   static Cushions of(const TableGeometry& table);
+  /// Cushions::of, built once for each cushion loop a process meets (the last few are kept)
+  /// and shared. Safe from any thread.
+  static std::shared_ptr<const Cushions> sharedOf(const TableGeometry& table);
+  /// The grid cell holding p, or nothing off the grid.
+  std::optional<int> cellOf(Vec2 p) const;
+
+ private:
+  void buildGrid();
 };
 
 /// Where a path meets a cushion: the clock value and the unit normal from the cushion to the

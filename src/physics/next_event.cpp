@@ -11,7 +11,7 @@ constexpr double kSameInstant = 1e-12;
 }  // namespace
 
 EventSearch::EventSearch(const TableGeometry& t, const PhysicsParams& p)
-    : table(&t), cushions(Cushions::of(t)), physics(p) {}
+    : table(&t), shared_cushions(Cushions::sharedOf(t)), cushions(*shared_cushions), physics(p) {}
 
 NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double until) const {
   NextEvent best;

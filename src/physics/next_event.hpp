@@ -30,7 +30,10 @@ struct NextEvent {
 /// Everything the search needs that does not change during a run.
 struct EventSearch {
   const TableGeometry* table = nullptr;
-  Cushions cushions;
+  // Shared by every search on the same table: building the grid for each world of the
+  // planner's thousands cost more than some of their searches.
+  std::shared_ptr<const Cushions> shared_cushions;
+  const Cushions& cushions;
   PhysicsParams physics;
 
   EventSearch(const TableGeometry& t, const PhysicsParams& p);

@@ -607,11 +607,12 @@ void World::runFor(double seconds) {
   }
 }
 
-void World::runUntilRest() {
+void World::runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop) {
   Impl& w = *impl_;
   while (!w.settled() && w.time < w.sp.max_time && !w.exhausted) {
     const double next = w.boundary(++w.steps);
     w.advance(std::min(next, w.sp.max_time), true);
+    if (stop && stop(w.events)) return;
   }
   if (!w.settled() && !w.exhausted) {
     logger("physics")->info("balls still moving after {} s of simulated time; stopped",
