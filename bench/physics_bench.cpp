@@ -2,8 +2,11 @@
 // `nineball bench`; this measures the parts.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
+#include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/world.hpp"
@@ -66,6 +69,38 @@ void BM_RollingAmongRestingBalls(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RollingAmongRestingBalls)->Arg(0)->Arg(9)->Arg(99)->Unit(benchmark::kMillisecond);
+
+// N balls on an even grid over the table, all rolling at 3 m/s in seeded directions, to rest:
+// how the contact search scales with the number of moving balls.
+std::vector<BallState> movingGrid(int n) {
+  const TableDef table;
+  const double r = PhysicsParams{}.ball_radius;
+  const int cols = static_cast<int>(std::ceil(std::sqrt(2.0 * n)));
+  const int rows = (n + cols - 1) / cols;
+  std::uint64_t seed = 12345;
+  std::vector<BallState> balls;
+  for (int i = 0; i < n; ++i) {
+    const double x = -table.length / 2 + (table.length * ((i % cols) + 0.5)) / cols;
+    const double y = -table.width / 2 + (table.width * ((i / cols) + 0.5)) / rows;
+    const double angle = uniform(seed, 0.0, 2.0 * kPi);
+    const Vec2 v = fromAngle(angle) * 3.0;
+    BallState b = BallState::at(i, {x, y}, v);
+    b.w = {-v.y / r, v.x / r, 0.0};
+    balls.push_back(b);
+  }
+  return balls;
+}
+
+void BM_MovingGridToRest(benchmark::State& state) {
+  const std::vector<BallState> balls = movingGrid(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    World w(TableDef{}, PhysicsParams{}, StepParams{});
+    for (const BallState& b : balls) w.addBall(b);
+    w.runUntilRest();
+    benchmark::DoNotOptimize(w.time());
+  }
+}
+BENCHMARK(BM_MovingGridToRest)->Arg(9)->Arg(30)->Arg(60)->Arg(100)->Unit(benchmark::kMillisecond);
 
 void BM_BallContactTime(benchmark::State& state) {
   // A sliding ball curving into a resting one: the quartic root of their separation.

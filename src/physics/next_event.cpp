@@ -1,12 +1,53 @@
 #include "physics/next_event.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "physics/ball_collision.hpp"
 
 namespace nineball::physics {
 namespace {
 
 // Contacts closer together than this (s) are at the same instant.
 constexpr double kSameInstant = 1e-12;
+
+// For each moving ball, the balls it may touch within the horizon, in index order (each pair
+// once: with two moving balls, from the lower index). Sort and sweep over boxes that hold each
+// centre's whole reach, grown by a radius: a pair whose boxes do not overlap cannot come within
+// two radii, so its contact test would answer "never". The pairs left are tested in the order
+// the full double loop used, which keeps every tie-break, and the results bit for bit.
+std::vector<std::vector<std::size_t>> partnersOf(const std::vector<Path>& paths,
+                                                 const std::vector<bool>& present,
+                                                 const std::vector<bool>& moving, double horizon,
+                                                 double r) {
+  const std::size_t n = paths.size();
+  std::vector<double> half(n, 0.0);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!present[i]) continue;
+    half[i] = (moving[i] ? reach(paths[i], horizon) : 0.0) + r + kTouchTolerance;
+    order.push_back(i);
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double la = paths[a].p.x - half[a], lb = paths[b].p.x - half[b];
+    return la < lb || (la == lb && a < b);
+  });
+  std::vector<std::vector<std::size_t>> partners(n);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t a = order[k];
+    const double right = paths[a].p.x + half[a];
+    for (std::size_t l = k + 1; l < order.size(); ++l) {
+      const std::size_t b = order[l];
+      if (paths[b].p.x - half[b] > right) break;
+      if (!moving[a] && !moving[b]) continue;
+      if (std::abs(paths[a].p.y - paths[b].p.y) > half[a] + half[b]) continue;
+      const std::size_t owner = moving[a] && moving[b] ? std::min(a, b) : moving[a] ? a : b;
+      partners[owner].push_back(owner == a ? b : a);
+    }
+  }
+  for (auto& list : partners) std::sort(list.begin(), list.end());
+  return partners;
+}
 
 }  // namespace
 
@@ -29,10 +70,15 @@ NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double un
   const double horizon = clock.fromTime(best.t - t);
   std::vector<Path> paths(balls.size());
   std::vector<std::size_t> moving;
+  std::vector<bool> present(balls.size(), false), is_moving(balls.size(), false);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (!balls[i].arc) continue;
     paths[i] = pathFrom(*balls[i].arc, t, physics);
-    if (balls[i].arc->translating()) moving.push_back(i);
+    present[i] = true;
+    if (balls[i].arc->translating()) {
+      moving.push_back(i);
+      is_moving[i] = true;
+    }
   }
   double best_s = horizon;
   double best_closing = 0.0;
@@ -43,11 +89,9 @@ NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double un
     best_s = s;
   };
   const double r = physics.ball_radius;
+  const auto partners = partnersOf(paths, present, is_moving, horizon, r);
   for (std::size_t m : moving) {
-    for (std::size_t o = 0; o < balls.size(); ++o) {
-      if (o == m || !balls[o].arc) continue;
-      const bool other_moving = balls[o].arc->translating();
-      if (other_moving && o < m) continue;  // the pair was seen from o
+    for (std::size_t o : partners[m]) {
       const std::size_t i = std::min(m, o), j = std::max(m, o);
       const auto s = ballContact(paths[i], paths[j], 2.0 * r, best_s);
       if (!s) continue;
