@@ -19,7 +19,8 @@ bool finite(Vec2 v) {
   return std::isfinite(v.x) && std::isfinite(v.y);
 }
 
-/// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
+}  // namespace
+
 bool allFinite(const SimResult& r) {
   bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
   for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
@@ -27,17 +28,19 @@ bool allFinite(const SimResult& r) {
   return ok;
 }
 
-}  // namespace
-
 CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
   CLI::App* sim =
       app.add_subcommand("sim", "Simulate a JSON scene and print the result as JSON on stdout");
   sim->add_option("scene", options.scene_path, "Scene file, or - to read standard input")
       ->required();
+  sim->add_flag("--jsonl", options.jsonl,
+                "One scene per line in, one result per line out (a bad line gets an error "
+                "object on its line and the rest go on)");
   return sim;
 }
 
 int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  if (options.jsonl) return runSimLines(options, in, out, err);
   const std::string shown = shownPath(options.scene_path);
   const std::string prefix = "nineball sim: " + shown + ": ";
   std::string why;

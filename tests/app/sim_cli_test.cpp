@@ -1,7 +1,9 @@
 // Runs the real nineball binary, as a user or a script would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -130,6 +132,48 @@ TEST(SimCli, BreakPrintsASummaryOrJson) {
   ASSERT_EQ(json.status, 0) << json.err;
   const auto doc = nlohmann::json::parse(json.out);
   EXPECT_EQ(doc["balls"].size(), 10u);
+}
+
+TEST(SimCli, JsonlGivesOneLinePerSceneAndGoesOnPastABadOne) {
+  std::string one_line = kGoodScene;
+  std::replace(one_line.begin(), one_line.end(), '\n', ' ');
+  const std::string bad_place = R"({"balls": [{"id": 0, "x": 9, "y": 0}]})";
+  TempFile lines(one_line + "\n\nnot json\n" + bad_place + "\n" + one_line + "\n");
+  const Outcome r = run("sim --jsonl " + quoted(lines.path()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  std::istringstream out(r.out);
+  std::vector<nlohmann::ordered_json> docs;
+  for (std::string line; std::getline(out, line);)
+    docs.push_back(nlohmann::ordered_json::parse(line));
+  ASSERT_EQ(docs.size(), 4u) << "the blank line gets nothing, every other line one line";
+  EXPECT_EQ(docs[0]["balls"].size(), 2u);
+  EXPECT_EQ(docs[1]["line"], 3);
+  EXPECT_NE(docs[1]["error"].get<std::string>().find("invalid JSON"), std::string::npos);
+  EXPECT_EQ(docs[2]["line"], 4);
+  EXPECT_NE(docs[2]["error"].get<std::string>().find("balls[0]"), std::string::npos);
+  EXPECT_EQ(docs[3]["balls"], docs[0]["balls"]) << "the same scene, the same result";
+  EXPECT_NE(r.err.find("2 of 4 scenes refused"), std::string::npos) << r.err;
+}
+
+TEST(SimCli, JsonlMatchesTheSingleSceneResultAndExitsZeroWhenAllAreGood) {
+  std::string one_line = kGoodScene;
+  std::replace(one_line.begin(), one_line.end(), '\n', ' ');
+  TempFile single(kGoodScene);
+  TempFile lines(one_line + "\n" + one_line);  // the last line needs no newline
+  const Outcome r = run("sim --jsonl " + quoted(lines.path()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Outcome alone = run("sim " + quoted(single.path()));
+  auto expected = nlohmann::ordered_json::parse(alone.out);
+  std::istringstream out(r.out);
+  int count = 0;
+  for (std::string line; std::getline(out, line); ++count) {
+    auto doc = nlohmann::ordered_json::parse(line);
+    doc.erase("wall_ms");
+    expected.erase("wall_ms");
+    EXPECT_EQ(doc, expected);
+  }
+  EXPECT_EQ(count, 2);
+  EXPECT_EQ(run("sim --jsonl /nonexistent/scenes.jsonl").status, 2);
 }
 
 }  // namespace
