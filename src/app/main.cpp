@@ -7,6 +7,7 @@
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/game_command.hpp"
+#include "app/game_launcher.hpp"
 #include "app/match_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/sim_command.hpp"
@@ -74,7 +75,11 @@ int run(int argc, char** argv) {
   if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);
   if (stress->parsed()) return runStressCommand(stress_options, std::cout);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
+#ifdef NINEBALL_WINDOW
   return runGameCommand(game_options, std::cin, std::cerr);
+#else
+  return launchGameWindow(argv, std::cerr);
+#endif
 }
 
 }  // namespace
