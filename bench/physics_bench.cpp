@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "game/planner_evaluate.hpp"
+#include "nineball/planner.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
@@ -101,6 +103,23 @@ void BM_MovingGridToRest(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MovingGridToRest)->Arg(9)->Arg(30)->Arg(60)->Arg(100)->Unit(benchmark::kMillisecond);
+
+// One candidate of the planner: a cut of the 1 into a corner from a five-ball position, played
+// to rest through a fresh world and scored by the rules (what `ai-bench` counts as a shot).
+void BM_PlannerCandidate(benchmark::State& state) {
+  ai::PlanInput in;
+  in.balls = {BallState::at(0, {-0.5, 0.1}), BallState::at(1, {0.6, 0.35}),
+              BallState::at(3, {0.2, -0.3}), BallState::at(5, {-0.9, -0.4}),
+              BallState::at(9, {0.9, -0.1})};
+  in.rack = rules::Rack(rules::RuleSet::Wpa, {1, 3, 5, 9}, false);
+  const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
+  const ai::Evaluator eval(in, table);
+  Shot shot;
+  shot.heading_rad = std::atan2(0.35 - 0.1, 0.6 + 0.5) + 0.02;  // a thin cut of the 1
+  shot.speed = 2.5;
+  for (auto _ : state) benchmark::DoNotOptimize(eval.value(shot, std::nullopt));
+}
+BENCHMARK(BM_PlannerCandidate)->Unit(benchmark::kMicrosecond);
 
 void BM_BallContactTime(benchmark::State& state) {
   // A sliding ball curving into a resting one: the quartic root of their separation.

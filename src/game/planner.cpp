@@ -2,11 +2,8 @@
 // aim and speed, and keep the shot whose outcomes are worth most on average.
 #include "nineball/planner.hpp"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <chrono>
-#include <mutex>
 #include <numeric>
 
 #include "game/parallel_map.hpp"
@@ -38,15 +35,6 @@ constexpr double kBreakNoiseScale = 1.0 / 3.0;
 // Executed speeds stay within what a cue can give (m/s).
 constexpr double kMinExecutedSpeed = 0.05;
 constexpr double kMaxExecutedSpeed = 13.0;
-
-// The planner builds and frees a world for every candidate (Box2D allocates over 100 KiB for
-// each). With glibc's default trim threshold of 128 KiB every free gave the heap back to the
-// kernel and the next world faulted it in again: a fifth of the planner's time went to brk
-// and page faults. Keeping up to 64 MiB of freed heap costs nothing else.
-void keepFreedHeap() {
-  static std::once_flag once;
-  std::call_once(once, [] { mallopt(M_TRIM_THRESHOLD, 64 << 20); });
-}
 
 std::vector<Candidate> candidatesFor(const SearchContext& ctx, const Evaluator& eval) {
   const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
@@ -86,9 +74,7 @@ Planner::Planner(Level level, std::uint64_t seed, int threads)
     : level_(level),
       settings_(LevelSettings::of(level)),
       rng_state_(seed),
-      threads_(std::max(threads, 1)) {
-  keepFreedHeap();
-}
+      threads_(std::max(threads, 1)) {}
 
 Plan Planner::plan(const PlanInput& in) {
   const auto started = std::chrono::steady_clock::now();
