@@ -10,11 +10,15 @@
 namespace nineball {
 namespace {
 
-// The cases compare with the paper's formulas, which know no spin: the real preset with the
-// paper's cloth (constant deceleration).
+// The cases compare with the paper's formulas, which know no spin, no ball-ball friction, no
+// squirt and a cushion at the height of the centre: the real preset with the paper's cloth
+// (constant deceleration) and the paper's contact models.
 PhysicsParams paperCloth() {
   PhysicsParams p = PhysicsParams::real();
   p.cloth = ClothModel::Friction;
+  p.ball_ball = BallBallModel::Frictionless;
+  p.cushion = CushionModel::Simple;
+  p.cue_end_mass = 0.0;
   return p;
 }
 
