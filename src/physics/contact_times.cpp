@@ -96,27 +96,25 @@ void Cushions::buildGrid() {
   grid_nx = static_cast<int>(std::ceil((hi.x - lo.x) / kGridCell)) + 1;
   grid_ny = static_cast<int>(std::ceil((hi.y - lo.y) / kGridCell)) + 1;
   std::vector<std::vector<int>> cells(static_cast<std::size_t>(grid_nx * grid_ny));
+  // The cells along one axis that a span from `from` to `to`, grown by kGridReach, covers.
+  auto cells_along = [](double from, double to, double origin, int count) {
+    const auto at = [&](double x) {
+      return static_cast<int>(std::floor((x - origin) / kGridCell));
+    };
+    return std::make_pair(std::max(0, at(from - kGridReach)),
+                          std::min(count - 1, at(to + kGridReach)));
+  };
   auto add = [&](int item, Vec2 a, Vec2 b) {
-    const int x0 = std::max(
-        0, static_cast<int>(std::floor((std::min(a.x, b.x) - kGridReach - lo.x) / kGridCell)));
-    const int x1 = std::min(
-        grid_nx - 1,
-        static_cast<int>(std::floor((std::max(a.x, b.x) + kGridReach - lo.x) / kGridCell)));
-    const int y0 = std::max(
-        0, static_cast<int>(std::floor((std::min(a.y, b.y) - kGridReach - lo.y) / kGridCell)));
-    const int y1 = std::min(
-        grid_ny - 1,
-        static_cast<int>(std::floor((std::max(a.y, b.y) + kGridReach - lo.y) / kGridCell)));
+    const auto [x0, x1] = cells_along(std::min(a.x, b.x), std::max(a.x, b.x), lo.x, grid_nx);
+    const auto [y0, y1] = cells_along(std::min(a.y, b.y), std::max(a.y, b.y), lo.y, grid_ny);
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x)
         cells[static_cast<std::size_t>(y * grid_nx + x)].push_back(item);
     }
   };
-  const int n = static_cast<int>(segments.size());
-  for (int i = 0; i < n; ++i)
-    add(i, segments[static_cast<std::size_t>(i)].a, segments[static_cast<std::size_t>(i)].b);
-  for (int k = 0; k < static_cast<int>(corners.size()); ++k)
-    add(n + k, corners[static_cast<std::size_t>(k)], corners[static_cast<std::size_t>(k)]);
+  int item = 0;
+  for (const Segment& seg : segments) add(item++, seg.a, seg.b);
+  for (Vec2 corner : corners) add(item++, corner, corner);
   cell_start.assign(1, 0);
   for (const auto& cell : cells) {
     items.insert(items.end(), cell.begin(), cell.end());

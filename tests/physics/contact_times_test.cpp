@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "nineball/params.hpp"
+#include "nineball/random.hpp"
 #include "nineball/table.hpp"
 #include "physics/ball_collision.hpp"
 
@@ -52,6 +53,35 @@ TEST(PressedPairs, AreMetAtAFixedDepthHoweverOftenTheSearchRuns) {
     overlap += speed * 0.01;
   }
   FAIL() << "a pressed pair was never met";
+}
+
+TEST(CushionGrid, FindsWhatTheFullSearchFinds) {
+  // Paths anywhere inside the loop, up to 8 m/s with sliding deceleration, over horizons the
+  // grid serves: the grid's answer must be the full search's, bit for bit.
+  const double r = PhysicsParams{}.ball_radius;
+  const TableGeometry table = buildTable(TableDef{}, r);
+  const Cushions grid = Cushions::of(table);
+  Cushions full = grid;
+  full.grid_nx = full.grid_ny = 0;  // no cell: every segment and corner
+  std::uint64_t seed = 99;
+  int hits = 0, served = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 p{uniform(seed, -1.4, 1.4), uniform(seed, -0.75, 0.75)};
+    if (cushionSink(table, p, r) > 0.0) continue;
+    const Path path{p, fromAngle(uniform(seed, 0.0, 2.0 * kPi)) * uniform(seed, 0.0, 8.0),
+                    fromAngle(uniform(seed, 0.0, 2.0 * kPi)) * uniform(seed, 0.0, 2.0)};
+    const double horizon = uniform(seed, 0.0, 0.02);
+    served += reach(path, horizon) + r + kTouchTolerance <= Cushions::kGridReach ? 1 : 0;
+    const auto a = cushionContact(path, r, grid, horizon);
+    const auto b = cushionContact(path, r, full, horizon);
+    ASSERT_EQ(a.has_value(), b.has_value()) << i;
+    if (!a) continue;
+    ++hits;
+    EXPECT_EQ(a->s, b->s) << i;
+    EXPECT_EQ(a->normal, b->normal) << i;
+  }
+  EXPECT_GT(hits, 300);  // 473 with this seed: the comparison sees real contacts
+  EXPECT_GT(served, 10000);
 }
 
 }  // namespace
