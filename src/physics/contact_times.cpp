@@ -130,7 +130,10 @@ std::optional<int> Cushions::cellOf(Vec2 p) const {
 }
 
 double reach(const Path& path, double horizon) {
-  return length(path.v) * horizon + 0.5 * length(path.a) * horizon * horizon;
+  // Only ever a bound with a touch tolerance of room (1 um), far beyond sqrt's rounding against
+  // hypot's: sqrt is several times cheaper and nothing it decides changes.
+  return std::sqrt(dot(path.v, path.v)) * horizon +
+         0.5 * std::sqrt(dot(path.a, path.a)) * horizon * horizon;
 }
 
 std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon) {
@@ -224,7 +227,7 @@ std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushion
 std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon) {
   const Vec2 d = path.p - centre;
   if (dot(d, d) <= radius * radius) return 0.0;
-  if (length(d) - radius > reach(path, horizon)) return std::nullopt;
+  if (length(d) - radius > reach(path, horizon) + kTouchTolerance) return std::nullopt;
   return firstCrossing(separation(d, path.v, path.a, radius), 0.0, horizon);
 }
 

@@ -11,15 +11,15 @@ namespace {
 // Contacts closer together than this (s) are at the same instant.
 constexpr double kSameInstant = 1e-12;
 
-// For each moving ball, the balls it may touch within the horizon, in index order (each pair
-// once: with two moving balls, from the lower index). Sort and sweep over boxes that hold each
-// centre's whole reach, grown by a radius: a pair whose boxes do not overlap cannot come within
-// two radii, so its contact test would answer "never". The pairs left are tested in the order
-// the full double loop used, which keeps every tie-break, and the results bit for bit.
-std::vector<std::vector<std::size_t>> partnersOf(const std::vector<Path>& paths,
-                                                 const std::vector<bool>& present,
-                                                 const std::vector<bool>& moving, double horizon,
-                                                 double r) {
+// The pairs that may touch within the horizon, as (owner, partner) sorted: the owner is the
+// moving ball of the pair, or the lower index of two moving ones. Sort and sweep over boxes that
+// hold each centre's whole reach, grown by a radius: a pair whose boxes do not overlap cannot come
+// within two radii, so its contact test would answer "never". The pairs left are tested in the
+// order the full double loop used, which keeps every tie-break, and the results bit for bit.
+std::vector<std::pair<std::size_t, std::size_t>> partnersOf(const std::vector<Path>& paths,
+                                                            const std::vector<bool>& present,
+                                                            const std::vector<bool>& moving,
+                                                            double horizon, double r) {
   const std::size_t n = paths.size();
   std::vector<double> half(n, 0.0);
   std::vector<std::size_t> order;
@@ -32,7 +32,7 @@ std::vector<std::vector<std::size_t>> partnersOf(const std::vector<Path>& paths,
     const double la = paths[a].p.x - half[a], lb = paths[b].p.x - half[b];
     return la < lb || (la == lb && a < b);
   });
-  std::vector<std::vector<std::size_t>> partners(n);
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (owner, partner)
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t a = order[k];
     const double right = paths[a].p.x + half[a];
@@ -42,11 +42,11 @@ std::vector<std::vector<std::size_t>> partnersOf(const std::vector<Path>& paths,
       if (!moving[a] && !moving[b]) continue;
       if (std::abs(paths[a].p.y - paths[b].p.y) > half[a] + half[b]) continue;
       const std::size_t owner = moving[a] && moving[b] ? std::min(a, b) : moving[a] ? a : b;
-      partners[owner].push_back(owner == a ? b : a);
+      pairs.emplace_back(owner, owner == a ? b : a);
     }
   }
-  for (auto& list : partners) std::sort(list.begin(), list.end());
-  return partners;
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
 }
 
 }  // namespace
@@ -89,9 +89,12 @@ NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double un
     best_s = s;
   };
   const double r = physics.ball_radius;
-  const auto partners = partnersOf(paths, present, is_moving, horizon, r);
+  const auto pairs = partnersOf(paths, present, is_moving, horizon, r);
+  auto next_pair = pairs.begin();
   for (std::size_t m : moving) {
-    for (std::size_t o : partners[m]) {
+    // `moving` and the pairs both run in index order: m's partners come next.
+    for (; next_pair != pairs.end() && next_pair->first == m; ++next_pair) {
+      const std::size_t o = next_pair->second;
       const std::size_t i = std::min(m, o), j = std::max(m, o);
       const auto s = ballContact(paths[i], paths[j], 2.0 * r, best_s);
       if (!s) continue;
