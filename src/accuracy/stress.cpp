@@ -10,6 +10,7 @@
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/world.hpp"
+#include "physics/motion.hpp"
 
 namespace nineball {
 namespace {
@@ -38,9 +39,7 @@ double energy(const std::vector<BallState>& balls, double r, double mass) {
   double e = 0.0;
   for (const BallState& b : balls) {
     if (b.pocket) continue;
-    const double m = b.mass.value_or(mass);
-    e += 0.5 * m * dot(b.vel, b.vel) +
-         0.2 * m * r * r * (b.w.x * b.w.x + b.w.y * b.w.y + b.w.z * b.w.z);
+    e += physics::kineticEnergy({b.pos, b.vel, b.w}, b.mass.value_or(mass), r);
   }
   return e;
 }

@@ -199,13 +199,7 @@ PhysicsParams parsePhysics(const json& v) {
       refuse(member(path, "cushion_height"),
              "not used by the \"simple\" cushion (only by \"mathavan\")");
     }
-    const double r = p.ball_radius;
-    if (!(p.cushion_height > r && p.cushion_height < 2.0 * r)) {
-      refuse(member(path, "cushion_height"),
-             "the nose must stand above the ball's centre and below its top: between " +
-                 formatNumber(r) + " and " + formatNumber(2.0 * r) + " m for ball_radius " +
-                 formatNumber(r));
-    }
+    // Its range (between the ball's centre and top) is checkSettings's, with every setting.
   } else if (optional(v, "ball_radius")) {
     p.cushion_height = 1.27 * p.ball_radius;  // 63.5 % of the diameter, as for the default ball
   }

@@ -13,7 +13,8 @@ namespace nineball::physics {
 /// The equations of motion are integrated over the normal impulse P at I: compression until
 /// the ball no longer moves into the cushion, then restitution until the normal force has
 /// given back cushion_restitution^2 of the work it took. Topspin, draw and side spin all
-/// change the rebound, and the restitution this gives falls with the approach speed.
+/// change the rebound. Every velocity scales with the approach speed (the model is rigid and
+/// impulsive), so the rebound is the same at every speed.
 /// `inward` is the cushion's normal, into the table; `impulse` is the total P.
 Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
                           double& impulse);
