@@ -17,8 +17,7 @@ std::optional<std::string> readAll(std::istream& in, std::string& why) {
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > limits::kMaxInputBytes) {
-      why = "larger than " + std::to_string(limits::kMaxInputBytes >> 20) +
-            " MiB, more than any scene or script needs";
+      why = inputTooLarge();
       return std::nullopt;
     }
   }
@@ -31,16 +30,29 @@ std::optional<std::string> readAll(std::istream& in, std::string& why) {
 
 }  // namespace
 
-std::optional<std::string> readInput(const std::string& path, std::istream& stdin_stream,
-                                     std::string& why) {
-  if (path == "-") return readAll(stdin_stream, why);
+std::string inputTooLarge() {
+  return "larger than " + std::to_string(limits::kMaxInputBytes >> 20) +
+         " MiB, more than any scene or script needs";
+}
+
+std::istream* openInput(const std::string& path, std::istream& stdin_stream, std::ifstream& file,
+                        std::string& why) {
+  if (path == "-") return &stdin_stream;
   errno = 0;
-  std::ifstream file(path, std::ios::binary);
+  file.open(path, std::ios::binary);
   if (!file) {
     why = std::string("cannot open: ") + (errno ? std::strerror(errno) : "open failed");
-    return std::nullopt;
+    return nullptr;
   }
-  return readAll(file, why);
+  return &file;
+}
+
+std::optional<std::string> readInput(const std::string& path, std::istream& stdin_stream,
+                                     std::string& why) {
+  std::ifstream file;
+  std::istream* source = openInput(path, stdin_stream, file, why);
+  if (!source) return std::nullopt;
+  return readAll(*source, why);
 }
 
 }  // namespace nineball::app

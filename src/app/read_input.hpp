@@ -1,5 +1,6 @@
 #pragma once
 
+#include <fstream>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -10,6 +11,14 @@ namespace nineball::app {
 /// `why`, when it cannot be read.
 std::optional<std::string> readInput(const std::string& path, std::istream& stdin_stream,
                                      std::string& why);
+
+/// The stream to read `path` from: `stdin_stream` for "-", else `file` opened on it; nothing,
+/// with the reason in `why`, when it cannot be opened.
+std::istream* openInput(const std::string& path, std::istream& stdin_stream, std::ifstream& file,
+                        std::string& why);
+
+/// Why an input over limits::kMaxInputBytes is refused.
+std::string inputTooLarge();
 
 /// How the path reads in a message: "<stdin>" for "-".
 inline std::string shownPath(const std::string& path) {

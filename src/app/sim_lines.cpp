@@ -1,9 +1,7 @@
 // `nineball sim --jsonl`: many scenes in one process, one per line, so that batch work pays
 // the start-up and the table's set-up once.
 #include <cerrno>
-#include <cmath>
 #include <cstring>
-#include <fstream>
 #include <istream>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -34,18 +32,14 @@ LineOutcome simulateLine(const std::string& line, long number) {
   auto refuse = [&](const std::string& why) {
     return LineOutcome{{{"error", why}, {"line", number}}, true, false};
   };
-  if (line.size() > limits::kMaxInputBytes) {
-    return refuse("larger than " + std::to_string(limits::kMaxInputBytes >> 20) +
-                  " MiB, more than any scene needs");
-  }
+  if (line.size() > limits::kMaxInputBytes) return refuse(inputTooLarge());
   auto parsed = io::parseScene(line);
   if (const auto* bad = std::get_if<io::ParseError>(&parsed)) return refuse(bad->message);
   const SimResult result = simulate(std::get<Scene>(parsed));
   if (!allFinite(result)) {
     return refuse("internal error: the simulation produced a non-finite number");
   }
-  const bool partial = result.end == SimEnd::MaxTime || result.end == SimEnd::Budget;
-  return {io::resultToJson(result), false, partial};
+  return {io::resultToJson(result), false, result.partial()};
 }
 
 }  // namespace
@@ -53,15 +47,11 @@ LineOutcome simulateLine(const std::string& line, long number) {
 int runSimLines(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
   const std::string prefix = "nineball sim: " + shownPath(options.scene_path) + ": ";
   std::ifstream file;
-  std::istream* source = &in;
-  if (options.scene_path != "-") {
-    errno = 0;
-    file.open(options.scene_path, std::ios::binary);
-    if (!file) {
-      err << prefix << "cannot open: " << (errno ? std::strerror(errno) : "open failed") << '\n';
-      return kExitBadInput;
-    }
-    source = &file;
+  std::string why;
+  std::istream* source = openInput(options.scene_path, in, file, why);
+  if (!source) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
   }
   long number = 0, refused = 0, partial = 0, results = 0;
   std::string line;

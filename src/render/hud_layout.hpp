@@ -68,7 +68,14 @@ struct HudLayout {
     const double r = length(d);
     if (r < tilt_inner - 0.05 * spin_radius || r > tilt_outer + 0.15 * spin_radius) return {};
     if (d.x > 0.1 * spin_radius || d.y > 0.1 * spin_radius) return {};
-    return std::atan2(std::max(-d.y, 0.0), std::max(-d.x, 0.0));
+    return tiltToward(px);
+  }
+
+  /// The elevation (rad, 0 to pi/2) of the ring's point in the direction of `px`: a drag past
+  /// either end of the ring holds the cue at that end.
+  double tiltToward(Vec2 px) const {
+    const Vec2 d = px - spin_centre;
+    return std::atan2(std::max(-d.y, 0.0), std::max(-d.x, 1e-9));
   }
 };
 

@@ -299,12 +299,9 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
     case Drag::Spin:
       setTipFromIcon(px, view);
       return;
-    case Drag::Tilt: {
-      // Past either end of the ring the cue stays at that end.
-      const Vec2 d = px - render::HudLayout::of(view).spin_centre;
-      session_.setElevation(std::atan2(std::max(-d.y, 0.0), std::max(-d.x, 1e-9)));
+    case Drag::Tilt:
+      session_.setElevation(render::HudLayout::of(view).tiltToward(px));
       return;
-    }
     case Drag::Cue: {
       const auto problem = session_.placementProblem(m);
       ui_.ghost = render::CueGhost{m, !problem, problem.value_or("")};
