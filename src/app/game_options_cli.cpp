@@ -1,5 +1,6 @@
 // The game window's options, parsed by nineball (which starts the window in nineball-game)
 // and by nineball-game alike, so that both refuse the same things in the same words.
+#include <cctype>
 #include <charconv>
 
 #include "app/cli_checks.hpp"
@@ -9,15 +10,42 @@
 namespace nineball::app {
 namespace {
 
-bool parseSize(const std::string& text, unsigned& w, unsigned& h) {
+// Smaller windows cannot hold the HUD's text; larger ones are beyond what GL textures hold.
+constexpr unsigned kMinWidth = 320, kMinHeight = 240, kMaxSide = 8192;
+
+// Reads WIDTHxHEIGHT; an empty answer when it is good, else what is wrong with it.
+std::string parseSize(const std::string& text, unsigned& w, unsigned& h) {
   const auto x = text.find('x');
-  if (x == std::string::npos) return false;
+  const std::string form =
+      "expected WIDTHxHEIGHT in pixels (e.g. 1280x800), found \"" + text + "\"";
+  if (x == std::string::npos) return form;
   const char* b = text.data();
   const char* e = b + text.size();
   const auto [wend, wec] = std::from_chars(b, b + x, w);
   const auto [hend, hec] = std::from_chars(b + x + 1, e, h);
-  return wec == std::errc() && hec == std::errc() && wend == b + x && hend == e && w >= 200 &&
-         h >= 150 && w <= 8192 && h <= 8192;
+  if (wec != std::errc() || hec != std::errc() || wend != b + x || hend != e) return form;
+  const std::string rule = " (the width must be " + std::to_string(kMinWidth) + "-" +
+                           std::to_string(kMaxSide) + " and the height " +
+                           std::to_string(kMinHeight) + "-" + std::to_string(kMaxSide) + ")";
+  if (w < kMinWidth) return "width " + std::to_string(w) + " is too small" + rule;
+  if (w > kMaxSide) return "width " + std::to_string(w) + " is too large" + rule;
+  if (h < kMinHeight) return "height " + std::to_string(h) + " is too small" + rule;
+  if (h > kMaxSide) return "height " + std::to_string(h) + " is too large" + rule;
+  return "";
+}
+
+// The picture formats SFML writes, by the file name's extension.
+std::string screenshotProblem(const std::string& name) {
+  if (name.empty()) return "needs a file name";
+  const auto dot = name.rfind('.');
+  std::string ext = dot == std::string::npos ? "" : name.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* ok : {"png", "jpg", "jpeg", "bmp", "tga"}) {
+    if (ext == ok) return "";
+  }
+  return "the file name must end in .png, .jpg, .jpeg, .bmp or .tga (the picture's format), "
+         "found \"" +
+         name + "\"";
 }
 
 }  // namespace
@@ -40,10 +68,9 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));
   opts.push_back(app.add_flag("--fullscreen", o.fullscreen, "Game window: start in full screen"));
   opts.push_back(
-      app.add_option("--screenshot", o.screenshot, "Draw the scene into this PNG file and exit")
-          ->check([](const std::string& name) {
-            return name.empty() ? std::string("needs a file name") : std::string();
-          }));
+      app.add_option("--screenshot", o.screenshot,
+                     "Draw the scene into this picture file (.png, .jpg, .bmp or .tga) and exit")
+          ->check(screenshotProblem));
   opts.push_back(app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
                                 "first frame; - reads standard input"));
@@ -55,9 +82,8 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option_function<std::string>(
       "--size",
       [&o](const std::string& s) {
-        if (!parseSize(s, o.width, o.height)) {
-          throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, found " + s);
-        }
+        const std::string problem = parseSize(s, o.width, o.height);
+        if (!problem.empty()) throw CLI::ValidationError("--size", problem);
         o.size_given = true;
       },
       "Window size in pixels, WIDTHxHEIGHT (default 1280x800)"));

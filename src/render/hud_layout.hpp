@@ -19,34 +19,52 @@ struct HudLayout {
   /// the left) to straight down (at the top), where a click tilts the cue.
   double tilt_inner = 0.0;
   double tilt_outer = 0.0;
-  PixelRect panel;         ///< a dialog over the table (help, push-out choice, game over)
-  PixelRect button_left;   ///< the dialog's first button
-  PixelRect button_right;  ///< the dialog's second button
-  double text_px = 12.0;   ///< the HUD's character size
+  PixelRect panel;                 ///< a dialog over the table (help, push-out choice, game over)
+  PixelRect button_left;           ///< the dialog's first button
+  PixelRect button_right;          ///< the dialog's second button
+  double text_px = 12.0;           ///< the HUD's character size
+  double spin_labels_right = 0.0;  ///< the right edge of the spin icon's labels (px)
 
-  /// The layout for a view (its size and scale) and the dialog shown. The push-out choice is
-  /// a strip near the top cushion that leaves the balls in sight; help is wide.
-  static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None) {
-    const bool compact = overlay == Overlay::PushOutChoice;
+  /// No text is drawn larger than needed below this size; a line that does not fit its room
+  /// shrinks instead, so small windows keep every line inside its place.
+  static constexpr double kMinTextPx = 10.0;
+  /// The room (m at the view's scale) left of the spin icon for its three labels.
+  static constexpr double kSpinLabelsWidth = 0.42;
+
+  /// The layout for a view (its size and scale) and the dialog shown. The push-out choice and
+  /// the rack's end are strips along one long cushion that leave the balls in sight: the one
+  /// away from `keep_clear` (a point on the table, m). Help is wide.
+  static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None,
+                      std::optional<Vec2> keep_clear = std::nullopt) {
+    const bool strip = overlay == Overlay::PushOutChoice || overlay == Overlay::GameOver;
     const bool wide = overlay == Overlay::Help;
     HudLayout h;
     const double s = view.scale();
     const PixelRect band = view.bottomBand();
     const double margin = 0.03 * s;
-    h.text_px = std::max(10.0, 0.048 * s);
+    h.text_px = std::max(kMinTextPx, 0.048 * s);
     h.power_bar = {band.left + margin, band.top + band.height * 0.36, 0.5 * s, 0.04 * s};
     h.spin_radius = 0.07 * s;
     h.spin_centre = {band.left + band.width - margin - h.spin_radius, band.top + band.height / 2.0};
     const double msg_left = h.power_bar.left + h.power_bar.width + 2.0 * margin;
     h.tilt_inner = 1.12 * h.spin_radius;
     h.tilt_outer = 1.42 * h.spin_radius;
-    const double msg_right = h.spin_centre.x - h.tilt_outer - 0.36 * s;  // spin labels
+    h.spin_labels_right = h.spin_centre.x - h.tilt_outer - 0.02 * s;
+    const double msg_right = h.spin_labels_right - std::max(kSpinLabelsWidth * s, 0.2 * band.width);
     h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left, band.height - 0.02 * s};
     const Vec2 c = view.toPixels({0.0, 0.0});
-    const double pw = (wide ? 2.0 : 1.3) * s;
-    const double ph = (compact ? 0.36 : wide ? 1.02 : 0.6) * s;
-    const double top =
-        compact ? view.toPixels({0.0, view.table().width / 2.0 - 0.04}).y : c.y - ph / 2.0;
+    const double pw = (wide ? 2.0 : strip ? 1.5 : 1.3) * s;
+    const double ph = (overlay == Overlay::PushOutChoice ? 0.36
+                       : overlay == Overlay::GameOver    ? 0.5
+                       : wide                            ? 1.02
+                                                         : 0.6) *
+                      s;
+    double top = c.y - ph / 2.0;
+    if (strip) {
+      const double edge = view.table().width / 2.0 - 0.04;
+      const bool upper_free = !keep_clear || keep_clear->y <= 0.0;
+      top = upper_free ? view.toPixels({0.0, edge}).y : view.toPixels({0.0, -edge}).y - ph;
+    }
     h.panel = {c.x - pw / 2.0, top, pw, ph};
     const double bw = 0.5 * s, bh = 0.085 * s, gap = 0.08 * s;
     const double by = h.panel.top + ph - bh - 0.04 * s;

@@ -2,6 +2,7 @@
 
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <string>
+#include <vector>
 
 #include "render/ball_painter.hpp"
 #include "render/fonts.hpp"
@@ -11,6 +12,13 @@
 
 namespace nineball::render {
 
+/// A line of text as drawn: its glyphs' box and the room it was given (pixels).
+struct DrawnText {
+  std::string text;
+  PixelRect box;
+  PixelRect room;
+};
+
 /// The players' corners, the ball on, the power gauge, the spin icon, the messages and the
 /// dialogs.
 class HudPainter {
@@ -18,21 +26,28 @@ class HudPainter {
   explicit HudPainter(const Fonts& fonts) : fonts_(fonts), balls_(fonts.bold) {}
 
   void draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
+  /// Every line of text the last draw put on screen, for checks that nothing spills.
+  const std::vector<DrawnText>& drawnTexts() const { return drawn_; }
 
  private:
   enum class Align { Left, Centre, Right };
   /// Draws one line of text with its top-left (Left), top-centre or top-right at `at`,
-  /// smaller if it would be wider than `max_width` pixels (0: no limit).
-  void text(sf::RenderTarget& target, const std::string& s, Vec2 at, double size, sf::Color colour,
-            Align align = Align::Left, bool bold = false, double max_width = 0.0);
+  /// smaller if it would be wider than the room's width; returns its glyphs' box.
+  PixelRect text(sf::RenderTarget& target, const std::string& s, Vec2 at, double size,
+                 sf::Color colour, const PixelRect& room, Align align = Align::Left,
+                 bool bold = false);
+  /// How wide a line of regular text is at a size (px).
+  double widthOf(const std::string& s, double size) const;
   void drawPlayers(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud,
                    const HudLayout& layout);
   void drawBottom(sf::RenderTarget& target, const HudState& hud, const HudLayout& layout);
   void drawOverlay(sf::RenderTarget& target, const HudState& hud, const HudLayout& layout);
+  void drawTray(sf::RenderTarget& target, const HudState& hud, const PixelRect& room, double r);
 
   const Fonts& fonts_;
   BallPainter balls_;
   TriangleBatch batch_;
+  std::vector<DrawnText> drawn_;
 };
 
 }  // namespace nineball::render

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,11 +25,13 @@ enum class Overlay { None, Help, ConfirmQuit, PushOutChoice, GameOver };
 /// Everything the HUD shows, filled by the game each frame. No SFML.
 struct HudState {
   PlayerPanel players[2];
-  int ball_on = 0;      ///< 0 when none is left
-  std::string rules;    ///< "WPA rules", "Paper rules"
-  std::string mode;     ///< who plays: "2 players", "vs computer (medium)", and the key
-  std::string status;   ///< what the player to move does now
-  std::string message;  ///< what the last shot gave
+  int ball_on = 0;            ///< 0 when none is left
+  std::vector<int> on_table;  ///< object balls still on the table, lowest first
+  std::vector<int> pocketed;  ///< object balls down this rack, in the order they dropped
+  std::string rules;          ///< "WPA rules", "Paper rules"
+  std::string mode;           ///< who plays: "2 players", "vs computer (medium)", and the key
+  std::string status;         ///< what the player to move does now
+  std::string message;        ///< what the last shot gave
   Tone tone = Tone::Info;
   double power = 0.0;          ///< 0..1 of the gauge
   double speed = 0.0;          ///< m/s the cue ball will get
@@ -38,6 +41,8 @@ struct HudState {
   double max_elevation_deg = 60.0;
   bool push_out_declared = false;
   Overlay overlay = Overlay::None;
+  /// A point on the table (m) a dialog must not cover: the cue ball, when the choice is about it.
+  std::optional<Vec2> keep_clear;
   std::string overlay_title;
   std::vector<std::string> overlay_lines;
   std::string button_left;   ///< empty: no button

@@ -15,10 +15,12 @@ bool saveWindowPng(const sf::RenderWindow& window, const std::string& path, std:
   }
   texture.update(window);
   const sf::Image image = texture.copyToImage();
-  // SFML picks the format from the extension, so the temporary file ends in .png too; it
-  // reports no short write, so the file is read back before it takes the name asked for.
+  // SFML reports no short write, so the file is read back before it takes the name asked for.
+  // SFML picks the format from the extension, so the temporary file ends as the name does.
+  const auto dot = path.rfind('.');
+  const std::string ext = dot == std::string::npos ? ".png" : path.substr(dot);
   return writeFileAtomicallyWith(
-      path, ".png", [&image](const std::string& tmp) { return image.saveToFile(tmp); },
+      path, ext, [&image](const std::string& tmp) { return image.saveToFile(tmp); },
       [&image](const std::string& tmp) {
         sf::Image back;
         return back.loadFromFile(tmp) && back.getSize() == image.getSize();

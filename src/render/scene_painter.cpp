@@ -75,7 +75,24 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
                              frame.cue->heading_rad, frame.ball_radius, frame.cue->pull);
     }
   }
+  if (frame.cue && have_picture_) coverBands(target);
   hud_painter_.draw(target, view_, frame.hud);
+}
+
+void ScenePainter::coverBands(sf::RenderTarget& target) {
+  // The stick passes under the HUD's bands: they are painted again over it, from the picture.
+  const PixelRect top = view_.topBand(), bottom = view_.bottomBand();
+  const int w = static_cast<int>(table_picture_.getSize().x);
+  const int h = static_cast<int>(table_picture_.getSize().y);
+  const int top_end = static_cast<int>(std::ceil(top.top + top.height));
+  const int bottom_start = static_cast<int>(std::floor(bottom.top));
+  for (const sf::IntRect rect :
+       {sf::IntRect(0, 0, w, top_end), sf::IntRect(0, bottom_start, w, h - bottom_start)}) {
+    if (rect.height <= 0) continue;
+    sf::Sprite band(table_picture_.getTexture(), rect);
+    band.setPosition(0.0f, static_cast<float>(rect.top));
+    target.draw(band, sf::RenderStates(sf::BlendNone));
+  }
 }
 
 }  // namespace nineball::render

@@ -53,8 +53,12 @@ class ScenePainter {
   const ViewTransform& view() const { return view_; }
 
   void draw(sf::RenderTarget& target, const Frame& frame);
+  /// Every line of text the last frame's HUD drew.
+  const std::vector<DrawnText>& hudTexts() const { return hud_painter_.drawnTexts(); }
 
  private:
+  void coverBands(sf::RenderTarget& target);
+
   TableGeometry table_;
   const Fonts& fonts_;
   ViewTransform view_;

@@ -33,3 +33,35 @@ TEST(FileOutputCli, AnEmptyScreenshotNameIsRefusedWithoutAWindow) {
 
 }  // namespace
 }  // namespace nineball::testing
+
+namespace nineball::testing {
+namespace {
+
+TEST(GameOptionsCli, SizeErrorsNameTheRule) {
+  struct Case {
+    const char* size;
+    const char* says;
+  };
+  for (const Case& c :
+       {Case{"0x0", "width 0 is too small"}, Case{"100x100", "width 100 is too small"},
+        Case{"640x100", "height 100 is too small"}, Case{"99999x99999", "width 99999 is too large"},
+        Case{"800x9000", "height 9000 is too large"}, Case{"800", "expected WIDTHxHEIGHT"},
+        Case{"80x0x6", "expected WIDTHxHEIGHT"}}) {
+    const CliOutcome r = runNineball(std::string("--size ") + c.size);
+    EXPECT_EQ(r.status, 2) << c.size;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.size << ": " << r.err;
+    if (std::string(c.says).find("too") != std::string::npos) {
+      EXPECT_NE(r.err.find("the width must be 320-8192 and the height 240-8192"), std::string::npos)
+          << r.err;
+    }
+  }
+}
+
+TEST(GameOptionsCli, AScreenshotNameMustSayItsFormat) {
+  const CliOutcome r = runNineball("--screenshot shot.txt");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(".png, .jpg, .jpeg, .bmp or .tga"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace nineball::testing

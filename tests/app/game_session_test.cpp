@@ -203,3 +203,40 @@ TEST(TurnMessage, ListsBalls) {
   EXPECT_EQ(nineball::app::ballList({3, 5}), "the 3 and the 5");
   EXPECT_EQ(nineball::app::ballList({2, 3, 7}), "the 2, the 3 and the 7");
 }
+
+TEST(GameSession, PushOutKeyExplainsWhenNoneIsAllowed) {
+  MatchSetup setup;
+  GameSession s(setup);  // the break: no push-out yet
+  s.togglePushOut();
+  EXPECT_FALSE(s.pushOutDeclared());
+  EXPECT_NE(s.message().find("No push-out now"), std::string::npos) << s.message();
+  EXPECT_EQ(s.tone(), nineball::render::Tone::Warning);
+}
+
+TEST(GameSession, AScriptCannotGiveASpeedTheCueCannot) {
+  MatchSetup setup;
+  GameSession s(setup);
+  nineball::TurnInput turn;
+  turn.shot.speed = GameSession::kMaxSpeed + 0.5;
+  EXPECT_THROW(s.playTurn(turn), nineball::IllegalAction);
+  turn.shot.speed = GameSession::kMinSpeed / 2.0;
+  EXPECT_THROW(s.playTurn(turn), nineball::IllegalAction);
+  turn.shot.speed = GameSession::kMaxSpeed;
+  EXPECT_NO_THROW(s.playTurn(turn));
+}
+
+TEST(GameSession, TheTrayListsBallsInTheOrderTheyDropped) {
+  // A foul that pockets the 1: it stays down, the message says so, the tray holds it.
+  MatchSetup setup;
+  setup.physics.ball_restitution = 0.0;
+  const Vec2 cue{0.6, 0.0}, one{0.9, 0.3};
+  setup.balls = {BallState::at(0, cue), BallState::at(1, one), BallState::at(2, {-0.8, -0.3})};
+  GameSession s(setup);
+  s.setHeading(headingTo(cue, one));
+  s.setSpeed(4.0);
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(roll(s));
+  EXPECT_NE(s.message().find("The 1 went down and stays down."), std::string::npos) << s.message();
+  EXPECT_EQ(s.pocketedThisRack(), std::vector<int>{1});
+  EXPECT_EQ(s.match().rack().ballOn(), 2);
+}

@@ -1,5 +1,7 @@
 #include "app/game/frame_builder.hpp"
 
+#include <algorithm>
+
 #include "nineball/rules.hpp"
 
 namespace nineball::app {
@@ -11,7 +13,8 @@ const std::vector<std::string> kHelpLines = {
     "Mouse: point where to aim; press, drag back and let go to strike",
     "  (the further you drag, the harder the shot; right click cancels)",
     "Left / Right: turn the aim (Shift: finer)    Up / Down: power",
-    "Space: shoot    T / B: top / back spin    E / Q: raise / lower the cue",
+    "Space: shoot    E / Q: raise / lower the cue",
+    "T / B / L / R: top / back / left / right spin",
     "Click the cue-ball icon for side spin, the arc by it to tilt the cue (C: reset)",
     "The aim line is the ghost ball's: throw, squirt and swerve bend the real paths",
     "Ball in hand: drag the cue ball, or move it with W A S D",
@@ -73,6 +76,10 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
 
 }  // namespace
 
+std::optional<Vec2> dialogKeepClear(const GameSession& session) {
+  return session.cuePosition();
+}
+
 Overlay activeOverlay(const GameSession& session, const UiState& ui) {
   if (ui.confirm_quit) return Overlay::ConfirmQuit;
   if (ui.help) return Overlay::Help;
@@ -120,6 +127,11 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     hud.players[session.seatOf(p)].fouls = rack.consecutiveFouls(p);
   }
   hud.ball_on = rack.over() ? 0 : rack.ballOn();
+  for (const BallState& b : session.match().balls()) {
+    if (b.id != kCueBall && !b.pocket) hud.on_table.push_back(b.id);
+  }
+  std::sort(hud.on_table.begin(), hud.on_table.end());
+  hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
   hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
   hud.status = computer_turn ? computer.status(session) : session.status();
@@ -133,6 +145,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
   fillDialog(hud, session, activeOverlay(session, ui), computer);
+  hud.keep_clear = dialogKeepClear(session);
   return f;
 }
 

@@ -150,6 +150,12 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     case Key::B:
       session_.setTip(session_.tip() - Vec2{0.0, kSpinStep});
       break;
+    case Key::L:
+      session_.setTip(session_.tip() - Vec2{kSpinStep, 0.0});
+      break;
+    case Key::R:
+      session_.setTip(session_.tip() + Vec2{kSpinStep, 0.0});
+      break;
     case Key::E:
       session_.setElevation(session_.elevation() + degToRad(kElevationStepDeg));
       break;
@@ -260,7 +266,8 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   const bool computer_turn = computer_.controls(session_);
   if (computer_turn && overlay == Overlay::PushOutChoice) return;
   if (overlay != Overlay::None) {
-    const render::HudLayout layout = render::HudLayout::of(view, overlay);
+    const render::HudLayout layout =
+        render::HudLayout::of(view, overlay, dialogKeepClear(session_));
     if (inside(layout.button_left, px)) clickButton(true);
     if (inside(layout.button_right, px)) clickButton(false);
     return;

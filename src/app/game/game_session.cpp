@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "app/game/turn_message.hpp"
 #include "game/shot_summary.hpp"
@@ -16,6 +17,12 @@ constexpr double kMaxCatchUp = 0.25;
 constexpr double kMaxShotTime = 120.0;
 // Search step (m) for a free spot for the cue ball in hand.
 constexpr double kSpotSearchStep = 0.01;
+
+std::string formatSpeed(double mps) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", mps);
+  return s;
+}
 
 }  // namespace
 
@@ -60,7 +67,13 @@ bool GameSession::pushOutAvailable() const {
 }
 
 void GameSession::togglePushOut() {
-  if (!pushOutAvailable()) return;
+  if (!pushOutAvailable()) {
+    if (phase_ == Phase::Aiming) {
+      say("No push-out now: it may be played only on the shot just after the break.",
+          render::Tone::Warning);
+    }
+    return;
+  }
   push_out_ = !push_out_;
   say(push_out_ ? "Push-out declared: no foul for the wrong ball or no cushion; the opponent "
                   "then chooses who shoots."
@@ -105,6 +118,7 @@ void GameSession::startRack() {
     s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
   }
   match_ = std::make_unique<Match>(s);
+  pocketed_.clear();
   speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
   message_.clear();
   tone_ = render::Tone::Info;
@@ -238,6 +252,10 @@ void GameSession::finishShot() {
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   if (breaking_) speed_ = kShotSpeed;
   breaking_ = false;
+  for (int b : record.verdict.pocketed) {
+    const auto& spot = record.verdict.to_spot;
+    if (std::find(spot.begin(), spot.end(), b) == spot.end()) pocketed_.push_back(b);
+  }
   const auto& events = match_->world().events();
   const rules::ShotSummary summary = game::summarize(events);
   TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
@@ -271,6 +289,12 @@ void GameSession::rematch() {
 }
 
 void GameSession::playTurn(const TurnInput& turn) {
+  if (turn.kind != TurnInput::Kind::Decision &&
+      (turn.shot.speed < kMinSpeed || turn.shot.speed > kMaxSpeed)) {
+    throw IllegalAction("the cue gives " + formatSpeed(kMinSpeed) + " to " +
+                        formatSpeed(kMaxSpeed) + " m/s in the game, not " +
+                        formatSpeed(turn.shot.speed));
+  }
   const int ball_on = match_->rack().ballOn();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
   afterTurn(match_->play(turn), ball_on);

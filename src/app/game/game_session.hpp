@@ -65,6 +65,9 @@ class GameSession {
   /// Sets the tilt, held within 0 to kMaxElevationDeg.
   void setElevation(double radians);
 
+  /// The object balls pocketed this rack (and not spotted), in the order they dropped.
+  const std::vector<int>& pocketedThisRack() const { return pocketed_; }
+
   bool pushOutAvailable() const;
   bool pushOutDeclared() const { return push_out_; }
   void togglePushOut();
@@ -137,6 +140,7 @@ class GameSession {
   std::vector<BallState> current_;
   std::size_t events_seen_ = 0;
   double shot_start_ = 0.0;
+  std::vector<int> pocketed_;
   std::string message_;
   render::Tone tone_ = render::Tone::Info;
 };

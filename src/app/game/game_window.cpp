@@ -5,7 +5,9 @@
 #include <SFML/System/Err.hpp>
 #include <SFML/System/Sleep.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <ostream>
 #include <sstream>
 
@@ -103,6 +105,18 @@ void logFrameRate(const FrameTimer& moving, long frames) {
       1.0 / moving.quantile(0.95));
 }
 
+// For the tests that check that no text spills: each line drawn, its box and its room.
+void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>& texts,
+                   unsigned width, unsigned height) {
+  std::ofstream out(path);
+  out << "window 0 0 " << width << ' ' << height << '\n';
+  for (const render::DrawnText& t : texts) {
+    out << "text " << t.box.left << ' ' << t.box.top << ' ' << t.box.width << ' ' << t.box.height
+        << " room " << t.room.left << ' ' << t.room.top << ' ' << t.room.width << ' '
+        << t.room.height << " : " << t.text << '\n';
+  }
+}
+
 }  // namespace
 
 int runGame(const GameOptions& options_in, const GameStart& start, std::ostream& err) {
@@ -191,6 +205,9 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
         return kExitBadInput;
       }
       logger("game")->info("saved {} after {} frames", options.screenshot, frame);
+      if (const char* boxes = std::getenv("NINEBALL_HUD_TEXTS")) {
+        writeHudTexts(boxes, painter.hudTexts(), window.getSize().x, window.getSize().y);
+      }
       break;
     }
     WindowRequests& requests = input.requests();

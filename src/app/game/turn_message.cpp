@@ -36,6 +36,20 @@ rules::Foul underlyingFoul(const rules::ShotSummary& summary, int ball_on) {
   return rules::Foul::NoRail;
 }
 
+// The object balls pocketed on a foul stay down (but any the rules spot): the message says so,
+// or the ball on would change with no word why.
+std::string downOnFoul(const rules::Verdict& v) {
+  std::vector<int> stay;
+  for (int b : v.pocketed) {
+    if (std::find(v.to_spot.begin(), v.to_spot.end(), b) == v.to_spot.end()) stay.push_back(b);
+  }
+  if (stay.empty()) return "";
+  std::string list = ballList(stay);
+  list[0] = 'T';
+  return " " + list +
+         (stay.size() == 1 ? " went down and stays down." : " went down and stay down.");
+}
+
 }  // namespace
 
 std::string ballList(const std::vector<int>& balls) {
@@ -80,7 +94,8 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   }
   if (!v.legal()) {
     m.tone = render::Tone::Foul;
-    m.text = "Foul by " + shooter + ": " + foulReason(v.foul, summary, ball_on) + "." + spot_note;
+    m.text = "Foul by " + shooter + ": " + foulReason(v.foul, summary, ball_on) + "." +
+             downOnFoul(v) + spot_note;
     if (v.ball_in_hand) {
       m.text += " Ball in hand for " + next + ".";
     } else if (v.cue_to_head_spot) {
