@@ -74,6 +74,9 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
                                 "first frame; - reads standard input"));
+  opts.push_back(app.add_flag("--replay", o.replay,
+                              "Game window: after --script, replay its last shot from the physics "
+                              "(with --frames and --screenshot, a picture of the replay)"));
   opts.push_back(app.add_option_function<long>(
                         "--frames", [&o](long n) { o.frames = n; },
                         "Run N frames, then capture (--screenshot) or exit; without --script the "

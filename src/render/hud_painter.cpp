@@ -162,20 +162,21 @@ void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const P
   const double rr = r * scale, g = gap * scale;
   double x = room.left + (room.width - width * scale) / 2.0 + rr;
   const double cy = room.top + room.height * 0.62;
-  for (int id : hud.on_table) {
+  auto ball = [&](int id, const char* where) {
     balls_.drawOne(target, id, {x, cy}, rr);
+    drawn_.push_back({std::string(where) + " " + std::to_string(id),
+                      {x - rr, cy - rr, 2.0 * rr, 2.0 * rr},
+                      room});
     x += 2.0 * rr + g;
-  }
+  };
+  for (int id : hud.on_table) ball(id, "on table");
   x += rr * 0.5;
   batch_.clear();
   batch_.roundedRect(x - g, cy - rr - g, trough_w * scale, 2.0 * (rr + g), rr + g,
                      sf::Color(8, 10, 12, 220));
   batch_.draw(target);
   x += rr;
-  for (int id : hud.pocketed) {
-    balls_.drawOne(target, id, {x, cy}, rr);
-    x += 2.0 * rr + g;
-  }
+  for (int id : hud.pocketed) ball(id, "pocketed");
 }
 
 void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,

@@ -12,7 +12,8 @@
 
 namespace nineball::render {
 
-/// A line of text as drawn: its glyphs' box and the room it was given (pixels).
+/// A line of text as drawn, or a ball of the tray ("on table 3", "pocketed 5"): its box and the
+/// room it was given (pixels).
 struct DrawnText {
   std::string text;
   PixelRect box;
@@ -26,7 +27,8 @@ class HudPainter {
   explicit HudPainter(const Fonts& fonts) : fonts_(fonts), balls_(fonts.bold) {}
 
   void draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
-  /// Every line of text the last draw put on screen, for checks that nothing spills.
+  /// Every line of text and tray ball the last draw put on screen, for checks that nothing
+  /// spills or overlaps.
   const std::vector<DrawnText>& drawnTexts() const { return drawn_; }
 
  private:

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,13 +59,13 @@ struct XvfbRun {
 };
 
 // Runs the game binary under a fresh virtual display with the given arguments.
-XvfbRun runUnderXvfb(const std::string& args) {
+XvfbRun runUnderXvfb(const std::string& args, const std::string& env = "") {
   const std::string err_path = "/tmp/nineball-xvfb-err-" + std::to_string(getpid());
   // -a searches for a free display from a number of this run's own, so that two suites
   // started together do not race for the same one. Under LeakSanitizer the software GL
   // driver leaks a little from code it cannot name; such leaks do not fail the run, the
   // test looks for ours in the report instead (expectNoLeakOfOurs).
-  const std::string cmd = "LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" " +
+  const std::string cmd = env + " LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" " +
                           std::string("xvfb-run -a -n ") + std::to_string(200 + getpid() % 700) +
                           " -s '-screen 0 " + std::to_string(kWidth) + "x" +
                           std::to_string(kHeight) + "x24' " + quoted(NINEBALL_BINARY) +
@@ -330,6 +331,74 @@ TEST(GameWindow, ScreenshotsUnderXvfbShowThePhysics) {
     pic.expectBallColours();
     std::remove(png.c_str());
   }
+}
+
+// The HUD's own record of what it drew (NINEBALL_HUD_TEXTS): each tray ball's box by name.
+std::map<std::string, std::array<double, 4>> trayBoxes(const std::string& path) {
+  std::map<std::string, std::array<double, 4>> boxes;
+  std::istringstream in(slurp(path));
+  for (std::string line; std::getline(in, line);) {
+    const auto colon = line.find(" : ");
+    if (line.rfind("text ", 0) != 0 || colon == std::string::npos) continue;
+    const std::string name = line.substr(colon + 3);
+    if (name.rfind("on table ", 0) != 0 && name.rfind("pocketed ", 0) != 0) continue;
+    std::array<double, 4> b{};
+    std::istringstream(line.substr(5)) >> b[0] >> b[1] >> b[2] >> b[3];
+    boxes[name] = b;
+  }
+  return boxes;
+}
+
+TEST(GameWindow, TheReplayAndTheTrayOnScreen) {
+  ASSERT_TRUE(haveXvfbRun());
+  // A break that drops balls, then 20 frames of its replay.
+  const std::string script_path = "/tmp/nineball-test-replay-" + std::to_string(getpid());
+  const std::string script =
+      R"({"rules": "wpa", "seed": 3, "turns": [{"heading_deg": 0.4, "speed": 9}]})";
+  std::ofstream(script_path) << script;
+  const std::string png = tempPath("replay");
+  const std::string texts = png + ".txt";
+  const XvfbRun r = runUnderXvfb(
+      "--script " + quoted(script_path) + " --replay --frames 20 --screenshot " + quoted(png),
+      "NINEBALL_HUD_TEXTS=" + quoted(texts));
+  std::remove(script_path.c_str());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto parsed = nineball::io::parseMatchScript(script);
+  const auto& ms = std::get<nineball::io::MatchScript>(parsed);
+  nineball::app::GameSession session(ms.setup);
+  for (const TurnInput& t : ms.turns) session.playTurn(t);
+  const std::vector<int> pocketed = session.pocketedThisRack();
+  ASSERT_FALSE(pocketed.empty()) << "the script's break should drop a ball";
+  session.startReplay(false);
+  for (int frame = 0; frame < 20; ++frame) session.advance(1.0 / 60.0);
+  ASSERT_TRUE(session.replaying());
+  // The balls stand where the replay has them 20 frames in, not where the break ended.
+  Scene scene = sceneOf(session);
+  scene.stick.reset();
+  const Picture pic(png, scene);
+  ASSERT_TRUE(pic.loaded());
+  pic.expectBallColours();
+  bool moved = false;
+  const auto rest = physicsBalls(ms.setup, ms.turns);
+  for (const BallState& b : scene.balls) {
+    for (const BallState& e : rest) moved = moved || (b.id == e.id && b.pos != e.pos);
+  }
+  EXPECT_TRUE(moved);
+  // The tray: every pocketed ball drawn in it, in its colour, and every ball on the table.
+  const auto boxes = trayBoxes(texts);
+  for (const BallState& b : rest) {
+    if (b.id == nineball::kCueBall) continue;
+    const std::string name = (b.pocket ? "pocketed " : "on table ") + std::to_string(b.id);
+    const auto it = boxes.find(name);
+    ASSERT_NE(it, boxes.end()) << name;
+    const auto& box = it->second;
+    const Vec2 side{box[0] + box[2] * 0.5 + box[2] * 0.35, box[1] + box[3] * 0.5};
+    const Rgb want = nineball::render::ballColour(b.id);
+    EXPECT_TRUE(near(pic.at(side), want)) << name << ": " << show(pic.at(side));
+  }
+  EXPECT_EQ(boxes.size(), 9u);
+  std::remove(png.c_str());
+  std::remove(texts.c_str());
 }
 
 TEST(GameWindow, WithoutADisplaySaysSoInOneLine) {

@@ -19,7 +19,8 @@ const std::vector<std::string> kHelpLines = {
     "The aim line is the ghost ball's: throw, squirt and swerve bend the real paths",
     "Ball in hand: drag the cue ball, or move it with W A S D",
     "P: declare a push-out when offered; then S: play or P: pass",
-    "R: rematch after a rack    F1: full screen    F12: screenshot",
+    "V: replay the last shot (Shift+V: slowed)    R: rematch after a rack",
+    "F1: full screen    F12: screenshot",
     "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 
@@ -82,6 +83,7 @@ std::optional<Vec2> dialogKeepClear(const GameSession& session) {
 
 Overlay activeOverlay(const GameSession& session, const UiState& ui) {
   if (ui.confirm_quit) return Overlay::ConfirmQuit;
+  if (session.replaying()) return Overlay::None;  // the replay is watched whole
   if (ui.help) return Overlay::Help;
   if (session.phase() == Phase::PushOutChoice) return Overlay::PushOutChoice;
   if (session.phase() == Phase::GameOver) return Overlay::GameOver;
@@ -93,7 +95,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   render::Frame f;
   f.balls = session.ballsToDraw();
   f.ball_radius = session.match().world().physics().ball_radius;
-  const bool aiming = session.phase() == Phase::Aiming;
+  const bool aiming = session.phase() == Phase::Aiming && !session.replaying();
   const bool computer_turn = computer.controls(session);
   if (computer_turn) {
     if (aiming && computer.showsCue()) {
@@ -134,7 +136,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
   hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
-  hud.status = computer_turn ? computer.status(session) : session.status();
+  hud.status = computer_turn && !session.replaying() ? computer.status(session) : session.status();
   hud.message = session.message();
   hud.tone = session.tone();
   hud.power = session.power();

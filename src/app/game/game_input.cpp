@@ -91,6 +91,10 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   const Overlay overlay = activeOverlay(session_, ui_);
   if (key.code == Key::F1) requests_.toggle_fullscreen = true;
   if (key.code == Key::F12) requests_.screenshot = true;
+  if (session_.replaying()) {
+    if (key.code != Key::F1 && key.code != Key::F12) session_.stopReplay();
+    return;
+  }
   if (overlay == Overlay::ConfirmQuit) {
     if (key.code == Key::Y || key.code == Key::Enter) requests_.quit = true;
     if (key.code == Key::N || key.code == Key::Escape) ui_.confirm_quit = false;
@@ -115,6 +119,10 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   if (overlay == Overlay::Help) return;
   if (key.code == Key::O) {
     switchOpponent();
+    return;
+  }
+  if (key.code == Key::V && overlay != Overlay::ConfirmQuit && ui_.drag == Drag::None) {
+    session_.startReplay(key.shift);
     return;
   }
   if (computer_.controls(session_)) return;
@@ -186,7 +194,7 @@ void GameInput::switchOpponent() {
 
 void GameInput::update(double seconds) {
   for (auto& [key, held] : held_) held += seconds;
-  if (dialogOpen() || computer_.controls(session_)) return;
+  if (session_.replaying() || dialogOpen() || computer_.controls(session_)) return;
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   auto heldFor = [&](Key k) {
     const auto it = held_.find(k);
@@ -262,6 +270,10 @@ void GameInput::clickButton(bool left) {
 }
 
 void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
+  if (session_.replaying()) {
+    session_.stopReplay();
+    return;
+  }
   const Overlay overlay = activeOverlay(session_, ui_);
   const bool computer_turn = computer_.controls(session_);
   if (computer_turn && overlay == Overlay::PushOutChoice) return;

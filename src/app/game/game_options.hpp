@@ -16,6 +16,7 @@ struct GameOptions {
   std::string screenshot;          ///< draw, save this PNG and exit
   std::string script;              ///< a match script played before the first frame
   std::optional<long> frames;      ///< run this many frames, then capture (or exit)
+  bool replay = false;             ///< after the script, replay its last shot
   unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;
   bool size_given = false;  ///< --size was given (else the desktop may shrink it)

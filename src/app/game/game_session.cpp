@@ -33,6 +33,8 @@ GameSession::GameSession(const MatchSetup& setup)
   startRack();
 }
 
+GameSession::~GameSession() = default;
+
 int GameSession::seatOf(rules::Player p) const {
   // Player A breaks; the seats take turns at being A.
   const int a = rack_ % 2;
@@ -118,6 +120,9 @@ void GameSession::startRack() {
     s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
   }
   match_ = std::make_unique<Match>(s);
+  rack_setup_ = s;
+  rack_turns_.clear();
+  replay_.reset();
   pocketed_.clear();
   speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
   message_.clear();
@@ -196,6 +201,7 @@ bool GameSession::shoot(const TurnInput& given) {
     say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
     return false;
   }
+  rack_turns_.push_back(turn);
   heading_ = turn.shot.heading_rad;
   setSpeed(turn.shot.speed);
   tip_ = turn.shot.tip;
@@ -215,8 +221,29 @@ bool GameSession::shoot(const TurnInput& given) {
   return true;
 }
 
+bool GameSession::replayAvailable() const {
+  return phase_ != Phase::Rolling && ShotReplay::available(rack_turns_);
+}
+
+void GameSession::startReplay(bool slow) {
+  if (!replayAvailable()) {
+    say("No shot to replay yet in this rack.", render::Tone::Warning);
+    return;
+  }
+  replay_ = std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0);
+}
+
+void GameSession::stopReplay() {
+  replay_.reset();
+}
+
 std::vector<audio::Impact> GameSession::advance(double seconds) {
   std::vector<audio::Impact> impacts;
+  if (replay_) {
+    impacts = replay_->advance(seconds);
+    if (replay_->finished()) replay_.reset();
+    return impacts;
+  }
   if (phase_ != Phase::Rolling) return impacts;
   const int steps = clock_.advance(seconds);
   World& world = match_->world();
@@ -280,7 +307,9 @@ void GameSession::decide(bool shoot_now) {
   TurnInput turn;
   turn.kind = TurnInput::Kind::Decision;
   turn.shoot = shoot_now;
-  afterTurn(match_->play(turn), match_->rack().ballOn());
+  const TurnRecord record = match_->play(turn);
+  rack_turns_.push_back(turn);
+  afterTurn(record, match_->rack().ballOn());
 }
 
 void GameSession::rematch() {
@@ -297,10 +326,13 @@ void GameSession::playTurn(const TurnInput& turn) {
   }
   const int ball_on = match_->rack().ballOn();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
-  afterTurn(match_->play(turn), ball_on);
+  const TurnRecord record = match_->play(turn);
+  rack_turns_.push_back(turn);
+  afterTurn(record, ball_on);
 }
 
 std::vector<BallState> GameSession::ballsToDraw() const {
+  if (replay_) return replay_->balls();
   if (phase_ == Phase::Rolling) {
     std::vector<BallState> out = current_;
     const double a = clock_.alpha();
@@ -323,6 +355,10 @@ std::vector<BallState> GameSession::ballsToDraw() const {
 
 std::string GameSession::status() const {
   const std::string name = seatName(seatToMove());
+  if (replay_) {
+    return std::string(replay_->rate() < 1.0 ? "Slow replay" : "Replay") +
+           " of the last shot: any key returns";
+  }
   switch (phase_) {
     case Phase::Rolling:
       return name + " shoots...";

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/game/fixed_step_clock.hpp"
+#include "app/game/shot_replay.hpp"
 #include "audio/impact.hpp"
 #include "nineball/aim_guide.hpp"
 #include "nineball/match.hpp"
@@ -31,10 +32,12 @@ class GameSession {
   static constexpr double kMaxTip = 0.5;            ///< the tip's useful range, fraction of R
   static constexpr double kMaxElevationDeg = 60.0;  ///< the cue's tilt: swerve up to a masse
   static constexpr double kBreakSpeed = 10.0;       ///< m/s the break starts with
-  static constexpr double kShotSpeed = 3.0;  ///< m/s the first shot after the break starts with
+  static constexpr double kShotSpeed = 3.0;    ///< m/s the first shot after the break starts with
+  static constexpr double kSlowReplay = 0.25;  ///< play time per real second in a slow replay
 
   /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
   explicit GameSession(const MatchSetup& setup);
+  ~GameSession();
 
   const Match& match() const { return *match_; }
   Phase phase() const { return phase_; }
@@ -98,6 +101,17 @@ class GameSession {
   /// Throws IllegalAction.
   void playTurn(const TurnInput& turn);
 
+  /// True when the rack has a last shot to replay and nothing is rolling.
+  bool replayAvailable() const;
+  /// Replays the rack's last shot from the physics, at normal speed or a quarter of it.
+  void startReplay(bool slow);
+  void stopReplay();
+  bool replaying() const { return replay_ != nullptr; }
+  /// The turns of this rack so far, as played (the cue ball's placement filled in).
+  const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
+  /// The setup this rack began from (its seed and layout).
+  const MatchSetup& rackSetup() const { return rack_setup_; }
+
   /// Runs the physics for one frame's time in fixed steps; returns the sounds it made.
   std::vector<audio::Impact> advance(double seconds);
   /// The balls where the frame should draw them: between the last two steps while rolling,
@@ -122,7 +136,10 @@ class GameSession {
   void aimAtBallOn();
 
   MatchSetup setup_;
+  MatchSetup rack_setup_;
   std::unique_ptr<Match> match_;
+  std::vector<TurnInput> rack_turns_;
+  std::unique_ptr<ShotReplay> replay_;
   Phase phase_ = Phase::Aiming;
   std::string names_[2] = {"Player 1", "Player 2"};
   int racks_won_[2] = {0, 0};

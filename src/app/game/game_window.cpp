@@ -166,6 +166,7 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
   computer.setWaitForPlans(capture);
   const long frame_limit = options.frames.value_or(capture ? 1 : -1);
   if (options.frames && start.turns.empty()) session.shoot();  // the opening break, as a demo
+  if (options.replay) session.startReplay(false);
   logger("game")->info("window {}x{}, {}", window.getSize().x, window.getSize().y,
                        sounds ? "sound on" : "no sound");
 
@@ -192,7 +193,7 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
         capture ? kFixedFrame : std::min<double>(frame_clock.restart().asSeconds(), kMaxFrame);
     input.update(dt);
     // The computer waits while the help or the quit question is open, as a player would.
-    if (!ui.help && !ui.confirm_quit) computer.update(session, dt);
+    if (!ui.help && !ui.confirm_quit && !session.replaying()) computer.update(session, dt);
     const bool rolling = session.phase() == Phase::Rolling;
     const auto impacts = session.advance(dt);
     if (sounds && !impacts.empty()) sounds->play(impacts);
