@@ -1,6 +1,5 @@
 #include "app/game_launcher.hpp"
 
-#include <limits.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -8,20 +7,19 @@
 #include <iostream>
 #include <string>
 
+#include "app/executable_path.hpp"
 #include "app/exit_codes.hpp"
 
 namespace nineball::app {
 
 int launchGameWindow(char** argv, std::ostream& err) {
-  char self[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) {
-    err << "nineball: cannot start the game window: cannot find this program: "
-        << std::strerror(errno) << '\n';
+  std::string why;
+  const auto self = executablePath(why);
+  if (!self) {
+    err << "nineball: cannot start the game window: cannot find this program: " << why << '\n';
     return kExitInternal;
   }
-  std::string path(self, static_cast<std::size_t>(n));
-  path = path.substr(0, path.rfind('/') + 1) + "nineball-game";
+  const std::string path = self->substr(0, self->rfind('/') + 1) + "nineball-game";
   std::cout.flush();
   err.flush();
   execv(path.c_str(), argv);

@@ -10,6 +10,7 @@
 #include "app/game_launcher.hpp"
 #include "app/match_command.hpp"
 #include "app/plan_command.hpp"
+#include "app/resource_dir.hpp"
 #include "app/sim_command.hpp"
 #include "app/stress_command.hpp"
 #include "nineball/log.hpp"
@@ -27,6 +28,10 @@ int run(int argc, char** argv) {
   app.add_option("--log-level", log_level, "Log level on stderr")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
       ->capture_default_str();
+  // Hidden (a diagnostic, not a feature): where the icon and desktop files are found.
+  bool resource_dir = false;
+  app.add_flag("--resource-dir", resource_dir, "Print the resource folder found and exit")
+      ->group("");
 
   SimOptions sim_options;
   CLI::App* sim = addSimCommand(app, sim_options);
@@ -68,6 +73,7 @@ int run(int argc, char** argv) {
       }
     }
   }
+  if (resource_dir) return printResourceDir(std::cout, std::cerr);
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
   if (plan->parsed()) return runPlan(plan_options, std::cin, std::cout, std::cerr);

@@ -18,6 +18,8 @@
 #include "app/game/frame_timer.hpp"
 #include "app/game/game_input.hpp"
 #include "app/game/game_session.hpp"
+#include "app/game/window_icon.hpp"
+#include "app/game/window_placement.hpp"
 #include "audio/impact_sounds.hpp"
 #include "nineball/atomic_file.hpp"
 #include "nineball/log.hpp"
@@ -70,7 +72,10 @@ void openWindow(sf::RenderWindow& window, bool fullscreen, unsigned width, unsig
     window.create(sf::VideoMode::getDesktopMode(), kTitle, sf::Style::Fullscreen, settings);
   } else {
     window.create(sf::VideoMode(width, height), kTitle, sf::Style::Default, settings);
+    const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+    window.setPosition(centredOnDesktop(window.getSize(), {desktop.width, desktop.height}));
   }
+  setWindowIcon(window);
   window.setKeyRepeatEnabled(false);
   window.setVerticalSyncEnabled(vsync);
 }
