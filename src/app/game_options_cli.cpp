@@ -74,6 +74,9 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
                                 "first frame; - reads standard input"));
+  opts.push_back(app.add_flag("--practice", o.practice,
+                              "Game window: practice alone without rules (place, add and remove "
+                              "balls; undo or retry a shot)"));
   opts.push_back(app.add_flag("--replay", o.replay,
                               "Game window: after --script, replay its last shot from the physics "
                               "(with --frames and --screenshot, a picture of the replay)"));

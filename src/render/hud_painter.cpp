@@ -112,6 +112,7 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
   const double y = band.top + band.height / 2.0 - size * 0.95;
   for (int seat = 0; seat < 2; ++seat) {
     const PlayerPanel& p = hud.players[seat];
+    if (p.name.empty()) continue;  // practice: one player
     const bool left = seat == 0;
     const PixelRect room{left ? band.left + pad : band.left + band.width - side_w - pad, band.top,
                          side_w, band.height};
@@ -121,7 +122,7 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
     const std::string tail = p.to_move && !left ? " \u25C0" : "";
     text(target, marker + p.name + tail, {x, y}, size, p.to_move ? kAccent : kDim, room, align,
          true);
-    std::string line = "racks " + std::to_string(p.racks);
+    std::string line = p.detail.empty() ? "racks " + std::to_string(p.racks) : p.detail;
     if (p.fouls > 0) line += "   fouls in a row " + std::to_string(p.fouls);
     text(target, line, {x, y + size * 1.3}, layout.text_px * 0.85, p.fouls > 0 ? kFoul : kDim, room,
          align);

@@ -14,6 +14,7 @@ struct PlayerPanel {
   int racks = 0;         ///< racks won
   int fouls = 0;         ///< fouls in a row (three lose the rack)
   bool to_move = false;  ///< it is this player's turn
+  std::string detail;    ///< shown instead of the racks won when set (practice)
 };
 
 /// How a message reads: plain, a foul, a win, a refusal.

@@ -39,7 +39,7 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   if (frame.ghost) {
     const double r = view_.px(frame.ball_radius);
     const Vec2 c = view_.toPixels(frame.ghost->pos);
-    ball_painter_.drawOne(target, kCueBall, c, r, frame.ghost->legal ? 255 : 150);
+    ball_painter_.drawOne(target, frame.ghost->id, c, r, frame.ghost->legal ? 255 : 150);
     if (!frame.ghost->legal) {
       TriangleBatch cross;
       const double a = r * 0.75, w = std::max(2.0, r * 0.22);

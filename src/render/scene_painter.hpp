@@ -26,11 +26,12 @@ struct CuePose {
   double side = 0.0;  ///< the tip's side offset, fraction of R (right of the aim is positive)
 };
 
-/// The cue ball being moved by hand, wherever the pointer is.
+/// A ball being moved by hand (the cue ball in hand), wherever the pointer is.
 struct CueGhost {
   Vec2 pos;
   bool legal = true;
   std::string problem;  ///< why not, shown beside it
+  int id = kCueBall;    ///< the ball moved (practice moves any ball)
 };
 
 /// One picture of the game: what the window shows at one instant.

@@ -107,14 +107,14 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
         if (b.id == kCueBall) b.pos = *carried;
       }
     }
-  } else if (aiming && ui.drag != Drag::Cue) {
+  } else if (aiming && ui.drag != Drag::Cue && ui.drag != Drag::Ball) {
     f.guide = session.aimGuide();
     f.cue = render::CuePose{session.heading(), ui.pull, session.tip().x};
   }
-  if (ui.drag == Drag::Cue && ui.ghost) {
+  if ((ui.drag == Drag::Cue || ui.drag == Drag::Ball) && ui.ghost) {
     f.ghost = ui.ghost;
     for (BallState& b : f.balls) {
-      if (b.id == kCueBall) b.pocket = PocketId::TopLeft;  // drawn as the ghost instead
+      if (b.id == ui.ghost->id) b.pocket = PocketId::TopLeft;  // drawn as the ghost instead
     }
   }
 
@@ -136,6 +136,13 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
   hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
+  if (session.practice()) {
+    const std::size_t shots = session.practiceShots();
+    hud.players[0].detail = std::to_string(shots) + (shots == 1 ? " shot" : " shots") + " to undo";
+    hud.ball_on = 0;
+    hud.rules = "Practice: no rules";
+    hud.mode = "U undo   Y retry   1-9 add/remove";
+  }
   hud.status = computer_turn && !session.replaying() ? computer.status(session) : session.status();
   hud.message = session.message();
   hud.tone = session.tone();

@@ -136,6 +136,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     return;
   }
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
+  if (session_.practice() && practiceKey(key)) return;
   switch (key.code) {
     case Key::Space:
       session_.shoot();
@@ -182,8 +183,31 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   }
 }
 
+bool GameInput::practiceKey(const sf::Event::KeyEvent& key) {
+  const int code = static_cast<int>(key.code);
+  for (auto [first, last] : {std::pair{Key::Num1, Key::Num9}, {Key::Numpad1, Key::Numpad9}}) {
+    if (code >= static_cast<int>(first) && code <= static_cast<int>(last)) {
+      session_.toggleBall(1 + code - static_cast<int>(first), ui_.pointer);
+      return true;
+    }
+  }
+  if (key.code == Key::U || key.code == Key::BackSpace) {
+    session_.undoShot();
+    return true;
+  }
+  if (key.code == Key::Y) {
+    session_.retryShot();
+    return true;
+  }
+  return false;
+}
+
 void GameInput::switchOpponent() {
   if (ui_.drag != Drag::None) return;
+  if (session_.practice()) {
+    session_.say("Practice is played alone: pick an opponent in a game from the menu.");
+    return;
+  }
   const Opponent next = nextOpponent(computer_.opponent());
   computer_.setOpponent(session_, next);
   if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word
@@ -298,6 +322,13 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   }
   const Vec2 m = view.toWorld(px);
   const double r = session_.match().world().physics().ball_radius;
+  if (session_.practice()) {
+    if (const auto id = session_.ballAt(m)) {
+      ui_.drag = Drag::Ball;
+      ui_.ghost = render::CueGhost{m, true, "", *id};
+      return;
+    }
+  }
   if (session_.cueInHand() && length(m - session_.cuePosition()) <= 1.6 * r) {
     ui_.drag = Drag::Cue;
     ui_.ghost = render::CueGhost{session_.cuePosition(), true, ""};
@@ -314,7 +345,14 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
 
 void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
   const Vec2 m = view.toWorld(px);
+  ui_.pointer = m;
   switch (ui_.drag) {
+    case Drag::Ball: {
+      const int id = ui_.ghost ? ui_.ghost->id : kCueBall;
+      const auto problem = session_.ballPlacementProblem(id, m);
+      ui_.ghost = render::CueGhost{m, !problem, problem.value_or(""), id};
+      return;
+    }
     case Drag::Spin:
       setTipFromIcon(px, view);
       return;
@@ -350,6 +388,9 @@ void GameInput::mouseReleased() {
   }
   if (drag == Drag::Cue) {
     if (ui_.ghost) session_.placeCue(ui_.ghost->pos);
+    ui_.ghost.reset();
+  } else if (drag == Drag::Ball) {
+    if (ui_.ghost) session_.moveBall(ui_.ghost->id, ui_.ghost->pos);
     ui_.ghost.reset();
   } else if (drag == Drag::Power) {
     const bool strike = ui_.pull >= kMinPull;

@@ -42,6 +42,8 @@ class GameInput {
   void moveCueBy(Vec2 d);
   bool dialogOpen() const;
   void switchOpponent();
+  /// Practice's own keys (1-9, U, Backspace, Y); true when the key was one of them.
+  bool practiceKey(const sf::Event::KeyEvent& key);
 
   GameSession& session_;
   UiState& ui_;

@@ -17,6 +17,7 @@ struct GameOptions {
   std::string script;              ///< a match script played before the first frame
   std::optional<long> frames;      ///< run this many frames, then capture (or exit)
   bool replay = false;             ///< after the script, replay its last shot
+  bool practice = false;           ///< practice mode: no rules, any ball anywhere, undo
   unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;
   bool size_given = false;  ///< --size was given (else the desktop may shrink it)

@@ -1,6 +1,7 @@
 #include "app/game/game_session.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -26,11 +27,112 @@ std::string formatSpeed(double mps) {
 
 }  // namespace
 
-GameSession::GameSession(const MatchSetup& setup)
+GameSession::GameSession(const MatchSetup& setup, bool practice)
     : setup_(setup),
       clock_(setup.step.dt(),
              std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * setup.step.hz)))) {
+  if (practice) {
+    const Match racked(setup);
+    practice_ = std::make_unique<PracticeTable>(
+        racked.world().table(), racked.world().physics().ball_radius, racked.balls());
+    names_[0] = "Practice";
+    names_[1] = "";
+    rebuildPractice();
+    aimAtBallOn();
+    return;
+  }
   startRack();
+}
+
+void GameSession::rebuildPractice() {
+  // A fresh world of the position: no rules are judged, so none carry over.
+  MatchSetup s = setup_;
+  s.balls = practice_->layout();
+  match_ = std::make_unique<Match>(s);
+  current_ = previous_ = match_->balls();
+  pocketed_.clear();
+  for (int id = 1; id <= 9; ++id) {
+    if (!practice_->has(id)) pocketed_.push_back(id);
+  }
+  phase_ = Phase::Aiming;
+}
+
+std::optional<int> GameSession::ballAt(Vec2 pos) const {
+  const double r = match_->world().physics().ball_radius;
+  std::optional<int> best;
+  double best_d = 1.2 * r;
+  for (const BallState& b : current_) {
+    if (b.pocket) continue;
+    const double d = length(b.pos - pos);
+    if (d <= best_d) {
+      best = b.id;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+std::optional<std::string> GameSession::ballPlacementProblem(int id, Vec2 pos) const {
+  if (!practice_) return std::string("balls move by hand only in practice");
+  return practice_->placementProblem(id, pos);
+}
+
+bool GameSession::moveBall(int id, Vec2 pos) {
+  if (!practice_ || phase_ != Phase::Aiming) return false;
+  if (const auto problem = practice_->placementProblem(id, pos)) {
+    say("The ball cannot go there: " + *problem + ".", render::Tone::Warning);
+    return false;
+  }
+  practice_->place(id, pos);
+  rebuildPractice();
+  return true;
+}
+
+void GameSession::toggleBall(int id, Vec2 near) {
+  if (!practice_ || phase_ != Phase::Aiming || id == kCueBall) return;
+  if (practice_->has(id)) {
+    practice_->remove(id);
+    say("The " + std::to_string(id) + " is off the table (" + std::to_string(id) +
+        " puts it back).");
+  } else if (const auto spot = practice_->freeSpotNear(id, near)) {
+    practice_->place(id, *spot);
+    say("The " + std::to_string(id) + " is on the table: drag it where you want it.");
+  } else {
+    say("No room for the " + std::to_string(id) + ".", render::Tone::Warning);
+    return;
+  }
+  rebuildPractice();
+}
+
+void GameSession::restorePracticeShot(const PracticeShot& shot) {
+  rebuildPractice();
+  heading_ = shot.heading;
+  setSpeed(shot.speed);
+  tip_ = shot.tip;
+  elevation_ = shot.elevation;
+}
+
+void GameSession::undoShot() {
+  if (!practice_ || phase_ != Phase::Aiming) return;
+  const auto shot = practice_->undo();
+  if (!shot) {
+    say("Nothing to undo: no shot played yet.", render::Tone::Warning);
+    return;
+  }
+  restorePracticeShot(*shot);
+  say("Back to before the last shot (" + std::to_string(practice_->shotsRemembered()) +
+      " more to undo).");
+}
+
+void GameSession::retryShot() {
+  if (!practice_ || phase_ != Phase::Aiming) return;
+  const auto shot = practice_->retry();
+  if (!shot) {
+    say("Nothing to retry: no shot played yet.", render::Tone::Warning);
+    return;
+  }
+  restorePracticeShot(*shot);
+  say("The last shot set up again: same position, aim, power and spin.");
 }
 
 GameSession::~GameSession() = default;
@@ -65,12 +167,14 @@ void GameSession::setElevation(double radians) {
 }
 
 bool GameSession::pushOutAvailable() const {
-  return phase_ == Phase::Aiming && match_->rack().pushOutAvailable();
+  return !practice_ && phase_ == Phase::Aiming && match_->rack().pushOutAvailable();
 }
 
 void GameSession::togglePushOut() {
   if (!pushOutAvailable()) {
-    if (phase_ == Phase::Aiming) {
+    if (practice_) {
+      say("Practice has no rules, so no push-out: just shoot.", render::Tone::Warning);
+    } else if (phase_ == Phase::Aiming) {
       say("No push-out now: it may be played only on the shot just after the break.",
           render::Tone::Warning);
     }
@@ -83,7 +187,7 @@ void GameSession::togglePushOut() {
 }
 
 bool GameSession::cueInHand() const {
-  return phase_ == Phase::Aiming && match_->cueInHand();
+  return !practice_ && phase_ == Phase::Aiming && match_->cueInHand();
 }
 
 Vec2 GameSession::cuePosition() const {
@@ -188,6 +292,16 @@ bool GameSession::shoot() {
 bool GameSession::shoot(const TurnInput& given) {
   if (phase_ != Phase::Aiming || given.kind == TurnInput::Kind::Decision) return false;
   TurnInput turn = given;
+  if (practice_) {
+    turn.kind = TurnInput::Kind::Shot;
+    turn.cue.reset();
+    practice_->recordShot({practice_->layout(), turn.shot.heading_rad, turn.shot.speed,
+                           turn.shot.tip, turn.shot.elevation_rad});
+    rebuildPractice();
+    // The replay starts from this position: each practice shot is a rack of its own.
+    rack_setup_ = setup_;
+    rack_setup_.balls = practice_->layout();
+  }
   if (match_->cueInHand()) {
     if (!turn.cue) turn.cue = cue_spot_;
   } else {
@@ -201,6 +315,7 @@ bool GameSession::shoot(const TurnInput& given) {
     say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
     return false;
   }
+  if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
   rack_turns_.push_back(turn);
   heading_ = turn.shot.heading_rad;
   setSpeed(turn.shot.speed);
@@ -272,8 +387,26 @@ double GameSession::shotTime() const {
 }
 
 void GameSession::finishShot() {
+  if (practice_) {
+    finishPracticeShot();
+    return;
+  }
   const TurnRecord record = match_->finishShot();
   afterTurn(record, ball_on_at_shot_);
+}
+
+void GameSession::finishPracticeShot() {
+  const std::vector<BallState> after = match_->balls();
+  std::vector<int> down;
+  for (const BallState& b : after) {
+    if (b.pocket && b.id != kCueBall && practice_->has(b.id)) down.push_back(b.id);
+  }
+  const bool cue_back = practice_->settle(after);
+  rebuildPractice();
+  std::string text = down.empty() ? "Nothing down." : ballList(down) + " down.";
+  text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  if (cue_back) text += " The cue ball dropped: it is back where it was struck from.";
+  say(text + " U: undo, Y: retry.", cue_back ? render::Tone::Foul : render::Tone::Info);
 }
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
@@ -313,11 +446,13 @@ void GameSession::decide(bool shoot_now) {
 }
 
 void GameSession::rematch() {
+  if (practice_) return;
   ++rack_;
   startRack();
 }
 
 void GameSession::playTurn(const TurnInput& turn) {
+  if (practice_) throw IllegalAction("practice has no turns to play from a script");
   if (turn.kind != TurnInput::Kind::Decision &&
       (turn.shot.speed < kMinSpeed || turn.shot.speed > kMaxSpeed)) {
     throw IllegalAction("the cue gives " + formatSpeed(kMinSpeed) + " to " +
@@ -358,6 +493,11 @@ std::string GameSession::status() const {
   if (replay_) {
     return std::string(replay_->rate() < 1.0 ? "Slow replay" : "Replay") +
            " of the last shot: any key returns";
+  }
+  if (practice_) {
+    return phase_ == Phase::Rolling
+               ? "Practice shot..."
+               : "Practice: drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as ever";
   }
   switch (phase_) {
     case Phase::Rolling:

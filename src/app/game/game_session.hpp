@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/game/fixed_step_clock.hpp"
+#include "app/game/practice_table.hpp"
 #include "app/game/shot_replay.hpp"
 #include "audio/impact.hpp"
 #include "nineball/aim_guide.hpp"
@@ -36,8 +37,27 @@ class GameSession {
   static constexpr double kSlowReplay = 0.25;  ///< play time per real second in a slow replay
 
   /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
-  explicit GameSession(const MatchSetup& setup);
+  explicit GameSession(const MatchSetup& setup, bool practice = false);
   ~GameSession();
+
+  /// Practice mode: no rules and no turns; any ball placed anywhere, added or taken away; the
+  /// last shot undone or retried.
+  bool practice() const { return practice_ != nullptr; }
+  /// Practice: the shots played that undo can take back.
+  std::size_t practiceShots() const { return practice_ ? practice_->shotsRemembered() : 0; }
+  /// The ball under a point on the table (practice: the balls that may be moved), or nothing.
+  std::optional<int> ballAt(Vec2 pos) const;
+  /// Why ball `id` may not stand at `pos` now, or nothing (practice).
+  std::optional<std::string> ballPlacementProblem(int id, Vec2 pos) const;
+  /// Practice: moves a ball; false (and a message) when it does not fit there.
+  bool moveBall(int id, Vec2 pos);
+  /// Practice: takes ball `id` off the table, or puts it on (at `near`, or the nearest free
+  /// spot to it).
+  void toggleBall(int id, Vec2 near);
+  /// Practice: back to before the last shot, with its aim, power and spin.
+  void undoShot();
+  /// Practice: the last shot's position and cue again, to play it once more.
+  void retryShot();
 
   const Match& match() const { return *match_; }
   Phase phase() const { return phase_; }
@@ -131,6 +151,9 @@ class GameSession {
   void startRack();
   void startTurn();
   void finishShot();
+  void finishPracticeShot();
+  void rebuildPractice();
+  void restorePracticeShot(const PracticeShot& shot);
   void afterTurn(const TurnRecord& record, int ball_on_before);
   Vec2 freeCueSpot() const;
   void aimAtBallOn();
@@ -140,6 +163,7 @@ class GameSession {
   std::unique_ptr<Match> match_;
   std::vector<TurnInput> rack_turns_;
   std::unique_ptr<ShotReplay> replay_;
+  std::unique_ptr<PracticeTable> practice_;
   Phase phase_ = Phase::Aiming;
   std::string names_[2] = {"Player 1", "Player 2"};
   int racks_won_[2] = {0, 0};

@@ -125,9 +125,11 @@ void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>
 }  // namespace
 
 int runGame(const GameOptions& options_in, const GameStart& start, std::ostream& err) {
-  GameSession session(start.setup);
+  GameSession session(start.setup, options_in.practice);
   ComputerPlayer computer(start.setup.seed);
-  computer.setOpponent(session, opponentFromName(options_in.opponent).value_or(std::nullopt));
+  if (!options_in.practice) {
+    computer.setOpponent(session, opponentFromName(options_in.opponent).value_or(std::nullopt));
+  }
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
       session.playTurn(start.turns[i]);
