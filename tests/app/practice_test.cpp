@@ -5,19 +5,12 @@
 
 #include "app/game/game_session.hpp"
 #include "app/game/practice_table.hpp"
+#include "app/game_rolling.hpp"
 
 namespace nineball::app {
 namespace {
 
 constexpr double kR = 0.028575;
-
-bool roll(GameSession& s) {
-  for (int frame = 0; frame < 60 * 120; ++frame) {
-    s.advance(1.0 / 60.0);
-    if (s.phase() != Phase::Rolling) return true;
-  }
-  return false;
-}
 
 const BallState* find(const std::vector<BallState>& balls, int id) {
   for (const BallState& b : balls) {

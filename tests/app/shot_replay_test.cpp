@@ -4,14 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "app/game/game_session.hpp"
+#include "app/game_rolling.hpp"
 
 namespace nineball::app {
 namespace {
 
 void rollLive(GameSession& s) {
-  for (int frame = 0; frame < 60 * 120 && s.phase() == Phase::Rolling; ++frame) {
-    s.advance(1.0 / 60.0);
-  }
+  ASSERT_TRUE(roll(s));
 }
 
 int framesToFinish(ShotReplay& r) {

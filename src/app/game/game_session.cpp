@@ -49,7 +49,7 @@ void GameSession::rebuildPractice() {
   MatchSetup s = setup_;
   s.balls = practice_->layout();
   match_ = std::make_unique<Match>(s);
-  current_ = previous_ = match_->balls();
+  shot_.current = shot_.previous = match_->balls();
   pocketed_.clear();
   for (int id = 1; id <= 9; ++id) {
     if (!practice_->has(id)) pocketed_.push_back(id);
@@ -61,7 +61,7 @@ std::optional<int> GameSession::ballAt(Vec2 pos) const {
   const double r = match_->world().physics().ball_radius;
   std::optional<int> best;
   double best_d = 1.2 * r;
-  for (const BallState& b : current_) {
+  for (const BallState& b : shot_.current) {
     if (b.pocket) continue;
     const double d = length(b.pos - pos);
     if (d <= best_d) {
@@ -192,7 +192,7 @@ bool GameSession::cueInHand() const {
 
 Vec2 GameSession::cuePosition() const {
   if (cueInHand() && cue_spot_) return *cue_spot_;
-  for (const BallState& b : current_) {
+  for (const BallState& b : shot_.current) {
     if (b.id == kCueBall) return b.pos;
   }
   return {};
@@ -214,7 +214,8 @@ bool GameSession::placeCue(Vec2 pos) {
 
 AimGuide GameSession::aimGuide() const {
   const World& w = match_->world();
-  return computeAimGuide(w.table(), w.physics().ball_radius, current_, cuePosition(), heading_);
+  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(),
+                         heading_);
 }
 
 void GameSession::startRack() {
@@ -237,7 +238,7 @@ void GameSession::startRack() {
 }
 
 void GameSession::startTurn() {
-  current_ = previous_ = match_->balls();
+  shot_.current = shot_.previous = match_->balls();
   phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
   push_out_ = false;
   tip_ = {};
@@ -245,7 +246,7 @@ void GameSession::startTurn() {
   cue_spot_.reset();
   if (match_->cueInHand()) {
     std::optional<Vec2> on_table;
-    for (const BallState& b : current_) {
+    for (const BallState& b : shot_.current) {
       if (b.id == kCueBall && !b.pocket) on_table = b.pos;
     }
     cue_spot_ = on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot();
@@ -271,7 +272,7 @@ Vec2 GameSession::freeCueSpot() const {
 void GameSession::aimAtBallOn() {
   const int on = match_->rack().ballOn();
   const Vec2 cue = cuePosition();
-  for (const BallState& b : current_) {
+  for (const BallState& b : shot_.current) {
     if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
       heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
     }
@@ -329,9 +330,7 @@ bool GameSession::shoot(const TurnInput& given) {
       turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
   clock_.reset();
-  events_seen_ = 0;
-  shot_start_ = match_->world().time();
-  current_ = previous_ = match_->balls();
+  shot_.begin(*match_);
   message_.clear();
   return true;
 }
@@ -360,30 +359,12 @@ std::vector<audio::Impact> GameSession::advance(double seconds) {
     return impacts;
   }
   if (phase_ != Phase::Rolling) return impacts;
-  const int steps = clock_.advance(seconds);
-  World& world = match_->world();
-  for (int i = 0; i < steps; ++i) {
-    previous_ = current_;
-    world.step();
-    current_ = match_->balls();
-    const auto& events = world.events();
-    if (events.size() > events_seen_) {
-      const std::vector<Event> fresh(events.begin() + static_cast<long>(events_seen_),
-                                     events.end());
-      const auto more = audio::impactsFromEvents(fresh, previous_);
-      impacts.insert(impacts.end(), more.begin(), more.end());
-      events_seen_ = events.size();
-    }
-    if (world.atRest() || shotTime() > kMaxShotTime) {
-      finishShot();
-      break;
-    }
-  }
+  if (shot_.take(*match_, clock_.advance(seconds), kMaxShotTime, impacts)) finishShot();
   return impacts;
 }
 
 double GameSession::shotTime() const {
-  return match_->world().time() - shot_start_;
+  return match_->world().time() - shot_.start;
 }
 
 void GameSession::finishShot() {
@@ -428,7 +409,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   logger("game")->info("turn: {}", m.text);
   if (const auto winner = match_->rack().winner()) {
     ++racks_won_[seatOf(*winner)];
-    current_ = previous_ = match_->balls();
+    shot_.current = shot_.previous = match_->balls();
     phase_ = Phase::GameOver;
     return;
   }
@@ -468,15 +449,8 @@ void GameSession::playTurn(const TurnInput& turn) {
 
 std::vector<BallState> GameSession::ballsToDraw() const {
   if (replay_) return replay_->balls();
-  if (phase_ == Phase::Rolling) {
-    std::vector<BallState> out = current_;
-    const double a = clock_.alpha();
-    for (std::size_t i = 0; i < out.size() && i < previous_.size(); ++i) {
-      if (!out[i].pocket) out[i].pos = previous_[i].pos + (out[i].pos - previous_[i].pos) * a;
-    }
-    return out;
-  }
-  std::vector<BallState> out = current_;
+  if (phase_ == Phase::Rolling) return shot_.between(clock_.alpha());
+  std::vector<BallState> out = shot_.current;
   if (cueInHand() && cue_spot_) {
     for (BallState& b : out) {
       if (b.id == kCueBall) {

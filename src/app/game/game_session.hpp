@@ -8,6 +8,7 @@
 #include "app/game/fixed_step_clock.hpp"
 #include "app/game/practice_table.hpp"
 #include "app/game/shot_replay.hpp"
+#include "app/game/shot_steps.hpp"
 #include "audio/impact.hpp"
 #include "nineball/aim_guide.hpp"
 #include "nineball/match.hpp"
@@ -177,10 +178,7 @@ class GameSession {
   int ball_on_at_shot_ = 0;
   bool breaking_ = false;  // the shot rolling is the break
   FixedStepClock clock_;
-  std::vector<BallState> previous_;  // the state one step before current_
-  std::vector<BallState> current_;
-  std::size_t events_seen_ = 0;
-  double shot_start_ = 0.0;
+  ShotSteps shot_;
   std::vector<int> pocketed_;
   std::string message_;
   render::Tone tone_ = render::Tone::Info;

@@ -30,14 +30,13 @@ ShotReplay::ShotReplay(const MatchSetup& rack_setup, const std::vector<TurnInput
   const auto last = std::find_if(turns.rbegin(), turns.rend(), isShot);
   if (last == turns.rend()) {
     finished_ = true;
-    current_ = previous_ = match_->balls();
+    steps_.begin(*match_);
     return;
   }
   const auto shot = last.base() - 1;
   for (auto it = turns.begin(); it != shot; ++it) match_->play(*it);
   match_->beginShot(*shot);
-  start_ = match_->world().time();
-  current_ = previous_ = match_->balls();
+  steps_.begin(*match_);
 }
 
 ShotReplay::~ShotReplay() = default;
@@ -45,36 +44,15 @@ ShotReplay::~ShotReplay() = default;
 std::vector<audio::Impact> ShotReplay::advance(double seconds) {
   std::vector<audio::Impact> impacts;
   if (finished_) return impacts;
-  World& world = match_->world();
-  const int steps = clock_.advance(seconds * rate_);
-  for (int i = 0; i < steps; ++i) {
-    previous_ = current_;
-    world.step();
-    current_ = match_->balls();
-    const auto& events = world.events();
-    if (events.size() > events_seen_) {
-      const std::vector<Event> fresh(events.begin() + static_cast<long>(events_seen_),
-                                     events.end());
-      const auto more = audio::impactsFromEvents(fresh, previous_);
-      impacts.insert(impacts.end(), more.begin(), more.end());
-      events_seen_ = events.size();
-    }
-    if (world.atRest() || world.time() - start_ > kMaxShotTime) {
-      finished_ = true;
-      previous_ = current_;
-      break;
-    }
+  if (steps_.take(*match_, clock_.advance(seconds * rate_), kMaxShotTime, impacts)) {
+    finished_ = true;
+    steps_.previous = steps_.current;
   }
   return impacts;
 }
 
 std::vector<BallState> ShotReplay::balls() const {
-  std::vector<BallState> out = current_;
-  const double a = clock_.alpha();
-  for (std::size_t i = 0; i < out.size() && i < previous_.size(); ++i) {
-    if (!out[i].pocket) out[i].pos = previous_[i].pos + (out[i].pos - previous_[i].pos) * a;
-  }
-  return out;
+  return steps_.between(clock_.alpha());
 }
 
 }  // namespace nineball::app

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/game/fixed_step_clock.hpp"
+#include "app/game/shot_steps.hpp"
 #include "audio/impact.hpp"
 #include "nineball/match.hpp"
 
@@ -34,10 +35,7 @@ class ShotReplay {
   std::unique_ptr<Match> match_;
   double rate_;
   FixedStepClock clock_;
-  std::vector<BallState> previous_;
-  std::vector<BallState> current_;
-  std::size_t events_seen_ = 0;
-  double start_ = 0.0;
+  ShotSteps steps_;
   bool finished_ = false;
 };
 
