@@ -105,6 +105,7 @@ void GameSession::startRack() {
     s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
   }
   match_ = std::make_unique<Match>(s);
+  rack_turns_.clear();
   speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
   message_.clear();
   tone_ = render::Tone::Info;
@@ -182,6 +183,7 @@ bool GameSession::shoot(const TurnInput& given) {
     say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
     return false;
   }
+  rack_turns_.push_back(turn);
   heading_ = turn.shot.heading_rad;
   setSpeed(turn.shot.speed);
   tip_ = turn.shot.tip;
@@ -236,6 +238,7 @@ void GameSession::finishShot() {
 }
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
+  if (observer_) observer_(seatOf(record.shooter), record, breaking_);
   if (breaking_) speed_ = kShotSpeed;
   breaking_ = false;
   const auto& events = match_->world().events();
@@ -262,6 +265,7 @@ void GameSession::decide(bool shoot_now) {
   TurnInput turn;
   turn.kind = TurnInput::Kind::Decision;
   turn.shoot = shoot_now;
+  rack_turns_.push_back(turn);
   afterTurn(match_->play(turn), match_->rack().ballOn());
 }
 
@@ -273,7 +277,16 @@ void GameSession::rematch() {
 void GameSession::playTurn(const TurnInput& turn) {
   const int ball_on = match_->rack().ballOn();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
-  afterTurn(match_->play(turn), ball_on);
+  const TurnRecord record = match_->play(turn);
+  rack_turns_.push_back(turn);
+  afterTurn(record, ball_on);
+}
+
+void GameSession::resumeRack(int rack_index, int racks_won0, int racks_won1) {
+  rack_ = std::max(0, rack_index);
+  racks_won_[0] = racks_won0;
+  racks_won_[1] = racks_won1;
+  startRack();
 }
 
 std::vector<BallState> GameSession::ballsToDraw() const {

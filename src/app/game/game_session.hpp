@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,17 @@ class GameSession {
   explicit GameSession(const MatchSetup& setup);
 
   const Match& match() const { return *match_; }
+  const MatchSetup& setup() const { return setup_; }
+
+  /// The turns of the rack in play so far, as played (a save replays them).
+  const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
+  /// Racks again as rack `rack_index` of the session (its seed and breaker) with the score
+  /// given: where a saved rack resumes.
+  void resumeRack(int rack_index, int racks_won0, int racks_won1);
+  /// Called with each turn's record as the turn ends: the seat that played it and whether
+  /// it was the rack's break (the session statistics).
+  using TurnObserver = std::function<void(int seat, const TurnRecord& record, bool was_break)>;
+  void setTurnObserver(TurnObserver observer) { observer_ = std::move(observer); }
   Phase phase() const { return phase_; }
 
   /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
@@ -139,6 +151,8 @@ class GameSession {
   double shot_start_ = 0.0;
   std::string message_;
   render::Tone tone_ = render::Tone::Info;
+  std::vector<TurnInput> rack_turns_;
+  TurnObserver observer_;
 };
 
 }  // namespace nineball::app
