@@ -16,7 +16,7 @@ const std::vector<std::string> kHelpLines = {
     "The aim line is the ghost ball's: throw, squirt and swerve bend the real paths",
     "Ball in hand: drag the cue ball, or move it with W A S D",
     "P: declare a push-out when offered; then S: play or P: pass",
-    "R: rematch after a rack    F1: full screen    F12: screenshot",
+    "R: rematch    M: mute    F1: full screen    F2: settings    F12: screenshot",
     "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 
