@@ -40,7 +40,7 @@ constexpr double kMaxFrame = 0.25;
 // When nothing moves and no key is held, the window looks at its events this often (s) and
 // redraws only when one came, or at this interval (a window uncovered shows itself again).
 constexpr double kIdlePoll = 0.03;
-constexpr double kIdleRedraw = 0.5;
+constexpr double kIdleRedraw = 2.0;
 constexpr unsigned kAntialiasing = 0;
 
 // Sends SFML's error stream to the "sfml" logger, one line per message.
@@ -229,6 +229,9 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
       } else if (settings_menu) {
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F2) {
           settings_menu->key(MenuKey::Escape);
+        }
+        if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F12) {
+          input.requests().screenshot = true;
         }
         handleMenuEvent(*settings_menu, event, window.getSize().x, window.getSize().y);
         settings = settings_menu->settings();

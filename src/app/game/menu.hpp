@@ -30,7 +30,7 @@ class MenuModel {
   enum class Outcome { None, Play, Resume, Quit, Close };
 
   /// The start menu, its choices preset from `settings.last`; `resume` labels the saved
-  /// rack's entry ("Ann 2 - 1 Computer, rack 4") when there is one.
+  /// rack's entry ("Ann vs Computer: rack 4, racks 2-1") when there is one.
   MenuModel(const Settings& settings, std::optional<std::string> resume);
   /// The settings screen alone (from the game): Back or Esc closes it.
   static MenuModel settingsOnly(const Settings& settings);

@@ -10,7 +10,7 @@ namespace {
 // How long the menu sleeps between looks at the events (s), and how often it redraws
 // anyway (a window uncovered by another shows its picture again).
 constexpr float kPoll = 0.03f;
-constexpr float kRedraw = 0.5f;
+constexpr float kRedraw = 2.0f;
 
 std::optional<MenuKey> menuKey(sf::Keyboard::Key k) {
   switch (k) {

@@ -17,7 +17,7 @@ render::MenuPicture menuPicture(const MenuModel& model);
 bool handleMenuEvent(MenuModel& model, const sf::Event& event, double width, double height);
 
 /// Shows the menu until it has an outcome or the window closes (then Quit). Draws only when
-/// something changed (and twice a second), sleeping between looks at the events, so that an
+/// something changed (and every 2 s), sleeping between looks at the events, so that an
 /// idle menu costs next to no processor. `background` draws what is behind the panel;
 /// `resized` is told the window's new size.
 MenuModel::Outcome runMenuScreen(sf::RenderWindow& window, MenuModel& model,

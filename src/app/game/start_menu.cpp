@@ -20,9 +20,8 @@ void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
 
 std::string describeSavedRack(const SavedRack& rack) {
   const std::string p2 = rack.opponent ? std::string("Computer") : rack.names[1];
-  return rack.names[0] + " " + std::to_string(rack.racks_won[0]) + " - " +
-         std::to_string(rack.racks_won[1]) + " " + p2 + ", rack " +
-         std::to_string(rack.rack_index + 1);
+  return rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
+         ", racks " + std::to_string(rack.racks_won[0]) + "-" + std::to_string(rack.racks_won[1]);
 }
 
 void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {

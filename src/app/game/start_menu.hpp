@@ -21,7 +21,7 @@ struct StartMenuContext {
   std::function<render::Frame()> frame;  ///< the table behind the menu
 };
 
-/// "Ann 2 - 1 Computer, rack 4, 3 turns": the saved rack's entry in the menu.
+/// "Ann vs Computer: rack 4, racks 2-1": the saved rack's entry in the menu.
 std::string describeSavedRack(const SavedRack& rack);
 
 /// Draws the start menu once into the window's back buffer (for --menu --screenshot).
