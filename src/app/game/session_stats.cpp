@@ -42,10 +42,10 @@ void SessionStats::record(int seat, const TurnRecord& turn, bool was_break) {
 
 std::string SessionStats::line(int s) const {
   const PlayerStats& p = seats_[s];
-  std::string out = "pots " + std::to_string(p.pots) + "   fouls " + std::to_string(p.fouls) +
-                    "   breaks " + std::to_string(p.breaks);
+  std::string out = "pots " + std::to_string(p.pots) + "  fouls " + std::to_string(p.fouls) +
+                    "  breaks " + std::to_string(p.breaks);
   if (p.breaks > 0) out += " (" + std::to_string(p.break_balls) + " down)";
-  out += "   run-outs " + std::to_string(p.run_outs);
+  out += "  run-outs " + std::to_string(p.run_outs);
   return out;
 }
 

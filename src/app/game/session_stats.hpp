@@ -29,7 +29,7 @@ class SessionStats {
   void record(int seat, const TurnRecord& turn, bool was_break);
 
   const PlayerStats& seat(int s) const { return seats_[s]; }
-  /// "pots 5  fouls 1  breaks 2 (3 balls down)  run-outs 1", for the end-of-rack dialog.
+  /// "pots 5  fouls 1  breaks 2 (3 down)  run-outs 1", for the end-of-rack dialog.
   std::string line(int s) const;
 
  private:
