@@ -116,12 +116,11 @@ void logFrameRate(const FrameTimer& moving, long frames) {
 int runGame(const GameOptions& options_in, const GameStart& start, std::ostream& err) {
   GameSession session(start.setup);
   SessionStats stats;
-  const auto follow = [&stats](GameSession& s) {
-    s.setTurnObserver([&stats](int seat, const TurnRecord& record, bool was_break) {
-      stats.record(seat, record, was_break);
-    });
+  const GameSession::TurnObserver count = [&stats](int seat, const TurnRecord& record,
+                                                   bool was_break) {
+    stats.record(seat, record, was_break);
   };
-  follow(session);
+  session.setTurnObserver(count);
   ComputerPlayer computer(start.setup.seed);
   computer.setOpponent(session, opponentFromName(options_in.opponent).value_or(std::nullopt));
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
@@ -184,12 +183,11 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     return 0;
   }
   if (show_menu) {
-    if (!runStartMenu(menu, session, computer, settings)) return 0;
-    follow(session);
+    if (!runStartMenu(menu, session, computer, settings, count)) return 0;
   }
   const auto sounds = options.mute ? nullptr : audio::ImpactSounds::open();
   const auto applySound = [&] {
-    audio::ImpactSounds::setVolume(settings.muted ? 0.0 : settings.volume);
+    if (sounds) audio::ImpactSounds::setVolume(settings.muted ? 0.0 : settings.volume);
   };
   applySound();
   const auto saveSettingsNow = [&] {
@@ -232,6 +230,10 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
         }
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F12) {
           input.requests().screenshot = true;
+        }
+        // A key held when the settings opened is still let go in the game.
+        if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
+          input.handle(event, painter.view());
         }
         handleMenuEvent(*settings_menu, event, window.getSize().x, window.getSize().y);
         settings = settings_menu->settings();
@@ -331,7 +333,8 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
   }
   logFrameRate(moving, frame);
   if (keep_rack) {
-    // A rack in play is kept for the next start; a finished (or untouched) one is not.
+    // A rack in play is kept for the next start (a finished one was forgotten as it ended;
+    // a rack not yet broken leaves an older save alone).
     const std::string path = rackSavePath();
     if (session.phase() != Phase::GameOver && !session.rackTurns().empty()) {
       if (saveRack(saveOf(session, computer.opponent()), path, why)) {
@@ -339,8 +342,6 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
       } else {
         logger("game")->warn("rack not saved: {}", why);
       }
-    } else {
-      forgetRack(path);
     }
   }
   return 0;

@@ -32,7 +32,7 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
 }
 
 bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings) {
+                  Settings& settings, const GameSession::TurnObserver& observer) {
   const std::string rack_path = rackSavePath();
   const std::optional<SavedRack> saved = loadRack(rack_path);
   MenuModel model(settings, resumeLabel(saved));
@@ -52,6 +52,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     setup.seed = saved->seed;
     try {
       GameSession resumed(setup);
+      resumed.setTurnObserver(observer);
       replayRack(resumed, *saved);
       session = std::move(resumed);
       computer.setOpponent(session, saved->opponent);
@@ -71,6 +72,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   // the entry greyed until then (MenuModel::setPracticeAvailable).
   setup.rules = choice.rules;
   session = GameSession(setup);
+  session.setTurnObserver(observer);
   computer.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);
   if (!choice.opponent) session.setSeatName(1, choice.names[1]);

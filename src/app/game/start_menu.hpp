@@ -30,8 +30,9 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings);
 /// Shows the start menu until the player starts a game or quits (false). On a start,
 /// `session` becomes the game chosen (the saved rack replayed for Resume, which it then
 /// forgets if it does not replay), the computer takes Player 2's seat if chosen, the names
-/// are set, and `settings` (the last choice included) are saved.
+/// are set, and `settings` (the last choice included) are saved. The new session tells
+/// `observer` of its turns, the replayed ones included.
 bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings);
+                  Settings& settings, const GameSession::TurnObserver& observer);
 
 }  // namespace nineball::app
