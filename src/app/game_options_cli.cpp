@@ -67,6 +67,9 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                      ->capture_default_str());
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));
   opts.push_back(app.add_flag("--fullscreen", o.fullscreen, "Game window: start in full screen"));
+  opts.push_back(app.add_flag("--menu", o.menu,
+                              "Game window: show the start menu (shown anyway unless --screenshot, "
+                              "--script or --frames is given)"));
   opts.push_back(
       app.add_option("--screenshot", o.screenshot,
                      "Draw the scene into this picture file (.png, .jpg, .bmp or .tga) and exit")

@@ -76,6 +76,11 @@ std::unique_ptr<ImpactSounds> ImpactSounds::open() {
   return sounds;
 }
 
+void ImpactSounds::setVolume(double percent) {
+  const double f = std::clamp(percent, 0.0, 100.0) / 100.0;
+  sf::Listener::setGlobalVolume(static_cast<float>(kMasterVolume * f));
+}
+
 sf::SoundBuffer& ImpactSounds::buffer(ImpactKind kind) {
   switch (kind) {
     case ImpactKind::Cushion:

@@ -20,6 +20,8 @@ class ImpactSounds {
 
   /// Plays the loudest few of one frame's impacts.
   void play(std::vector<Impact> impacts);
+  /// How loud the sounds are, 0 (silent) to 100 % of their full loudness.
+  static void setVolume(double percent);
 
  private:
   ImpactSounds() = default;

@@ -58,10 +58,11 @@ void CuePainter::drawStick(sf::RenderTarget& target, const ViewTransform& view, 
 }
 
 void CuePainter::drawGuide(sf::RenderTarget& target, const ViewTransform& view,
-                           const AimGuide& guide, double r) {
+                           const AimGuide& guide, double r, double scale, bool bank) {
   batch_.clear();
   const double w = std::max(1.5, view.px(0.004));
-  const sf::Color path(255, 255, 255, 150);
+  const sf::Color path = bank ? sf::Color(190, 230, 255, 110) : sf::Color(255, 255, 255, 150);
+  const double guide_length = kGuideLength * scale;
   batch_.line(view.toPixels(guide.start), view.toPixels(guide.end), w, path);
   const Vec2 end = view.toPixels(guide.end);
   switch (guide.target) {
@@ -72,13 +73,13 @@ void CuePainter::drawGuide(sf::RenderTarget& target, const ViewTransform& view,
       const double along = std::clamp(dot(dir, guide.object_dir), 0.0, 1.0);
       const Vec2 object_centre = guide.end + guide.object_dir * (2.0 * r);
       const double object_len =
-          std::min(r + kGuideLength * along, length(guide.object_end - object_centre));
+          std::min(r + guide_length * along, length(guide.object_end - object_centre));
       batch_.line(view.toPixels(object_centre),
                   view.toPixels(object_centre + guide.object_dir * object_len), w,
                   sf::Color(255, 226, 90, 220));
       const double across = std::sqrt(std::max(0.0, 1.0 - along * along));
       if (length(guide.cue_dir) > 0.0) {
-        const double cue_len = std::min(kGuideLength * across, length(guide.cue_end - guide.end));
+        const double cue_len = std::min(guide_length * across, length(guide.cue_end - guide.end));
         batch_.line(end, view.toPixels(guide.end + guide.cue_dir * cue_len), w,
                     sf::Color(150, 210, 255, 200));
       }

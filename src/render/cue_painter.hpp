@@ -15,9 +15,10 @@ class CuePainter {
   void drawStick(sf::RenderTarget& target, const ViewTransform& view, Vec2 cue, double heading_rad,
                  double r, double pull);
   /// The path to the first ball or cushion, the ghost ball, the object ball's line and the
-  /// cue ball's tangent line.
+  /// cue ball's tangent line. `scale` lengthens or shortens the lines after the contact (the
+  /// aim-guide setting); a `bank` guide (the path on from a cushion) is drawn fainter.
   void drawGuide(sf::RenderTarget& target, const ViewTransform& view, const AimGuide& guide,
-                 double r);
+                 double r, double scale = 1.0, bool bank = false);
 
  private:
   TriangleBatch batch_;

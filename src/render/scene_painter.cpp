@@ -34,7 +34,12 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
     table_painter_.draw(target);
   }
   // The guide goes under the balls: the balls hide its ends, the lines stay visible.
-  if (frame.guide) cue_painter_.drawGuide(target, view_, *frame.guide, frame.ball_radius);
+  if (frame.guide) {
+    cue_painter_.drawGuide(target, view_, *frame.guide, frame.ball_radius, frame.guide_scale);
+  }
+  if (frame.bank) {
+    cue_painter_.drawGuide(target, view_, *frame.bank, frame.ball_radius, frame.guide_scale, true);
+  }
   ball_painter_.draw(target, view_, frame.balls, frame.ball_radius);
   if (frame.ghost) {
     const double r = view_.px(frame.ball_radius);

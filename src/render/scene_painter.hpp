@@ -39,6 +39,8 @@ struct Frame {
   std::vector<BallState> balls;  ///< where to draw each ball (pocketed ones are skipped)
   double ball_radius = 0.028575;
   std::optional<AimGuide> guide;
+  double guide_scale = 1.0;      ///< the guide's lines after the contact, times normal
+  std::optional<AimGuide> bank;  ///< the path on from the first cushion (a setting)
   std::optional<CuePose> cue;
   std::optional<CueGhost> ghost;
   HudState hud;

@@ -20,7 +20,7 @@ const std::vector<std::string> kHelpLines = {
     "Ball in hand: drag the cue ball, or move it with W A S D",
     "P: declare a push-out when offered; then S: play or P: pass",
     "V: replay the last shot (Shift+V: slowed)    R: rematch after a rack",
-    "F1: full screen    F12: screenshot",
+    "M: mute    F1: full screen    F2: settings    F12: screenshot",
     "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 

@@ -31,6 +31,8 @@ class GameInput {
   void update(double seconds);
 
   WindowRequests& requests() { return requests_; }
+  /// True while a key is down (its repeat moves the aim, the power or the cue ball).
+  bool keysHeld() const { return !held_.empty(); }
 
  private:
   void keyPressed(const sf::Event::KeyEvent& key);

@@ -21,6 +21,7 @@ struct GameOptions {
   unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;
   bool size_given = false;  ///< --size was given (else the desktop may shrink it)
+  bool menu = false;        ///< show the start menu even with --screenshot / --frames
 };
 
 }  // namespace nineball::app

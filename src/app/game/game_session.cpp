@@ -136,6 +136,8 @@ void GameSession::retryShot() {
 }
 
 GameSession::~GameSession() = default;
+GameSession::GameSession(GameSession&&) noexcept = default;
+GameSession& GameSession::operator=(GameSession&&) noexcept = default;
 
 int GameSession::seatOf(rules::Player p) const {
   // Player A breaks; the seats take turns at being A.
@@ -391,6 +393,7 @@ void GameSession::finishPracticeShot() {
 }
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
+  if (observer_) observer_(seatOf(record.shooter), record, breaking_);
   if (breaking_) speed_ = kShotSpeed;
   breaking_ = false;
   for (int b : record.verdict.pocketed) {
@@ -445,6 +448,13 @@ void GameSession::playTurn(const TurnInput& turn) {
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
   afterTurn(record, ball_on);
+}
+
+void GameSession::resumeRack(int rack_index, int racks_won0, int racks_won1) {
+  rack_ = std::max(0, rack_index);
+  racks_won_[0] = racks_won0;
+  racks_won_[1] = racks_won1;
+  startRack();
 }
 
 std::vector<BallState> GameSession::ballsToDraw() const {

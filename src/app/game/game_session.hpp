@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +41,8 @@ class GameSession {
   /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
   explicit GameSession(const MatchSetup& setup, bool practice = false);
   ~GameSession();
+  GameSession(GameSession&&) noexcept;
+  GameSession& operator=(GameSession&&) noexcept;
 
   /// Practice mode: no rules and no turns; any ball placed anywhere, added or taken away; the
   /// last shot undone or retried.
@@ -61,6 +64,18 @@ class GameSession {
   void retryShot();
 
   const Match& match() const { return *match_; }
+  const MatchSetup& setup() const { return setup_; }
+
+  /// The turns of the rack in play so far, as played, the cue ball's placement filled in (a
+  /// save and a replay play them again). In practice, the last shot alone.
+  const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
+  /// Racks again as rack `rack_index` of the session (its seed and breaker) with the score
+  /// given: where a saved rack resumes.
+  void resumeRack(int rack_index, int racks_won0, int racks_won1);
+  /// Called with each turn's record as the turn ends: the seat that played it and whether
+  /// it was the rack's break (the session statistics).
+  using TurnObserver = std::function<void(int seat, const TurnRecord& record, bool was_break)>;
+  void setTurnObserver(TurnObserver observer) { observer_ = std::move(observer); }
   Phase phase() const { return phase_; }
 
   /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
@@ -128,8 +143,6 @@ class GameSession {
   void startReplay(bool slow);
   void stopReplay();
   bool replaying() const { return replay_ != nullptr; }
-  /// The turns of this rack so far, as played (the cue ball's placement filled in).
-  const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
   /// The setup this rack began from (its seed and layout).
   const MatchSetup& rackSetup() const { return rack_setup_; }
 
@@ -182,6 +195,7 @@ class GameSession {
   std::vector<int> pocketed_;
   std::string message_;
   render::Tone tone_ = render::Tone::Info;
+  TurnObserver observer_;
 };
 
 }  // namespace nineball::app

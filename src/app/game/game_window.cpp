@@ -18,10 +18,16 @@
 #include "app/game/frame_timer.hpp"
 #include "app/game/game_input.hpp"
 #include "app/game/game_session.hpp"
+#include "app/game/menu_screen.hpp"
+#include "app/game/rack_save.hpp"
+#include "app/game/session_stats.hpp"
+#include "app/game/settings.hpp"
+#include "app/game/start_menu.hpp"
 #include "app/game/window_icon.hpp"
 #include "app/game/window_placement.hpp"
 #include "audio/impact_sounds.hpp"
 #include "nineball/atomic_file.hpp"
+#include "nineball/bank_guide.hpp"
 #include "nineball/log.hpp"
 #include "render/fonts.hpp"
 #include "render/png_capture.hpp"
@@ -35,8 +41,10 @@ constexpr const char* kTitle = "nineball";
 constexpr double kFixedFrame = 1.0 / 60.0;
 // A frame longer than this (a stall, a dragged window) counts as this long.
 constexpr double kMaxFrame = 0.25;
-// Without vertical sync, an interactive window sleeps so as not to exceed this rate.
-constexpr double kMaxFps = 240.0;
+// When nothing moves and no key is held, the window looks at its events this often (s) and
+// redraws only when one came, or at this interval (a window uncovered shows itself again).
+constexpr double kIdlePoll = 0.03;
+constexpr double kIdleRedraw = 2.0;
 constexpr unsigned kAntialiasing = 0;
 
 // Sends SFML's error stream to the "sfml" logger, one line per message.
@@ -126,6 +134,12 @@ void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>
 
 int runGame(const GameOptions& options_in, const GameStart& start, std::ostream& err) {
   GameSession session(start.setup, options_in.practice);
+  SessionStats stats;
+  const GameSession::TurnObserver count = [&stats](int seat, const TurnRecord& record,
+                                                   bool was_break) {
+    stats.record(seat, record, was_break);
+  };
+  session.setTurnObserver(count);
   ComputerPlayer computer(start.setup.seed);
   if (!options_in.practice) {
     computer.setOpponent(session, opponentFromName(options_in.opponent).value_or(std::nullopt));
@@ -160,14 +174,51 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     return kExitBadInput;
   }
   const bool benchmark = !capture && options.frames.has_value();
+  const bool interactive = !capture && !benchmark;
+  // The start menu, the settings file and the saved rack belong to a game a person starts;
+  // screenshots and scripts (the tests) see none of them unless --menu asks.
+  const bool show_menu = options.menu || (interactive && options.script.empty());
+  const bool keep_rack = interactive && options.script.empty();
+  Settings settings = show_menu ? loadSettings(settingsPath()) : Settings{};
+  // An opponent or rules asked for on the command line preset the menu.
+  if (options.opponent != "human") {
+    settings.last.opponent = opponentFromName(options.opponent).value_or(std::nullopt);
+  }
+  if (options.rules != "wpa") settings.last.rules = start.setup.rules;
   if (!capture) fitDesktop(options);
   bool fullscreen = options.fullscreen && !capture;
   sf::RenderWindow window;
-  openWindow(window, fullscreen, options.width, options.height, !capture && !benchmark);
+  openWindow(window, fullscreen, options.width, options.height, interactive);
   render::ScenePainter painter(session.match().world().table(), *fonts);
   painter.resize(window.getSize().x, window.getSize().y);
-  const auto sounds = options.mute ? nullptr : audio::ImpactSounds::open();
   UiState ui;
+  render::MenuPainter menu_painter(*fonts);
+  StartMenuContext menu{window, painter, menu_painter,
+                        [&] { return buildFrame(session, ui, computer); }};
+  if (show_menu && capture) {
+    drawStartMenu(menu, settings);
+    if (!render::saveWindowPng(window, options.screenshot, why)) {
+      err << "nineball: --screenshot: " << why << '\n';
+      return kExitBadInput;
+    }
+    return 0;
+  }
+  if (show_menu) {
+    if (!runStartMenu(menu, session, computer, settings, count)) return 0;
+  }
+  const auto sounds = options.mute ? nullptr : audio::ImpactSounds::open();
+  const auto applySound = [&] {
+    if (sounds) audio::ImpactSounds::setVolume(settings.muted ? 0.0 : settings.volume);
+  };
+  applySound();
+  const auto saveSettingsNow = [&] {
+    if (!show_menu) return;
+    std::string whynot;
+    if (!saveSettings(settings, settingsPath(), whynot)) {
+      logger("game")->warn("settings not saved: {}", whynot);
+    }
+  };
+  std::optional<MenuModel> settings_menu;  // F2: the settings over the game
   GameInput input(session, ui, computer);
   // A picture taken after N fixed frames must not depend on how fast the planner was.
   computer.setWaitForPlans(capture);
@@ -180,10 +231,14 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
   FrameTimer moving;
   sf::Clock frame_clock;
   sf::Clock display_clock;
+  sf::Clock since_draw;
+  int forgotten_rack = 0;
   long frame = 0;
   while (window.isOpen()) {
     sf::Event event;
+    bool changed = frame == 0;
     while (window.pollEvent(event)) {
+      changed = true;
       if (event.type == sf::Event::Closed) {
         window.close();
       } else if (event.type == sf::Event::Resized) {
@@ -191,20 +246,77 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
         const float h = static_cast<float>(event.size.height);
         window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
         painter.resize(w, h);
+      } else if (settings_menu) {
+        if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F2) {
+          settings_menu->key(MenuKey::Escape);
+        }
+        if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F12) {
+          input.requests().screenshot = true;
+        }
+        // A key held when the settings opened is still let go in the game.
+        if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
+          input.handle(event, painter.view());
+        }
+        handleMenuEvent(*settings_menu, event, window.getSize().x, window.getSize().y);
+        settings = settings_menu->settings();
+        applySound();
+        if (settings_menu->outcome() != MenuModel::Outcome::None) {
+          settings_menu.reset();
+          saveSettingsNow();
+        }
+      } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F2 &&
+                 ui.drag == Drag::None) {
+        settings_menu = MenuModel::settingsOnly(settings);
+      } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::M) {
+        settings.muted = !settings.muted;
+        applySound();
+        saveSettingsNow();
+        session.say(settings.muted ? "Sound off (M turns it on)." : "Sound on (M mutes it).");
       } else {
         input.handle(event, painter.view());
       }
     }
     if (!window.isOpen()) break;
+    // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
+    // instead of drawing the same picture again (the idle window costs next to nothing).
+    const bool still = session.phase() != Phase::Rolling && !computer.controls(session) &&
+                       !input.keysHeld() && ui.drag == Drag::None;
+    if (interactive && still && !changed && since_draw.getElapsedTime().asSeconds() < kIdleRedraw) {
+      sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
+      frame_clock.restart();
+      continue;
+    }
     const double dt =
         capture ? kFixedFrame : std::min<double>(frame_clock.restart().asSeconds(), kMaxFrame);
     input.update(dt);
     // The computer waits while the help or the quit question is open, as a player would.
-    if (!ui.help && !ui.confirm_quit && !session.replaying()) computer.update(session, dt);
+    if (!ui.help && !ui.confirm_quit && !settings_menu && !session.replaying()) {
+      computer.update(session, dt);
+    }
     const bool rolling = session.phase() == Phase::Rolling;
     const auto impacts = session.advance(dt);
+    if (keep_rack && session.phase() == Phase::GameOver && forgotten_rack != session.rackNumber()) {
+      forgetRack(rackSavePath());  // a finished rack has nothing to resume
+      forgotten_rack = session.rackNumber();
+    }
     if (sounds && !impacts.empty()) sounds->play(impacts);
-    painter.draw(window, buildFrame(session, ui, computer));
+    render::Frame picture = buildFrame(session, ui, computer);
+    picture.guide_scale = guideLengthFactor(settings.guide);
+    if (settings.bank_line && picture.guide) {
+      picture.bank = bankGuide(session.match().world().table(), picture.ball_radius, picture.balls,
+                               *picture.guide);
+    }
+    if (picture.hud.overlay == render::Overlay::GameOver) {
+      for (int seat = 0; seat < 2; ++seat) {
+        picture.hud.overlay_lines.push_back(session.seatName(seat) + ": " + stats.line(seat));
+      }
+    }
+    painter.draw(window, picture);
+    if (settings_menu) {
+      menu_painter.draw(window, window.getSize().x, window.getSize().y,
+                        menuPicture(*settings_menu));
+    }
+    since_draw.restart();
     ++frame;
 
     if (capture && frame >= frame_limit) {
@@ -241,12 +353,24 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
                                             static_cast<float>(window.getSize().y))));
       painter.resize(window.getSize().x, window.getSize().y);
     }
-    if (!capture && !benchmark) {
-      const double spare = 1.0 / kMaxFps - frame_clock.getElapsedTime().asSeconds();
+    if (interactive && settings.frame_cap > 0) {
+      const double spare = 1.0 / settings.frame_cap - frame_clock.getElapsedTime().asSeconds();
       if (spare > 0.0) sf::sleep(sf::seconds(static_cast<float>(spare)));
     }
   }
   logFrameRate(moving, frame);
+  if (keep_rack && !session.practice()) {
+    // A rack in play is kept for the next start (a finished one was forgotten as it ended;
+    // a rack not yet broken leaves an older save alone).
+    const std::string path = rackSavePath();
+    if (session.phase() != Phase::GameOver && !session.rackTurns().empty()) {
+      if (saveRack(saveOf(session, computer.opponent()), path, why)) {
+        logger("game")->info("rack saved to {}", path);
+      } else {
+        logger("game")->warn("rack not saved: {}", why);
+      }
+    }
+  }
   return 0;
 }
 

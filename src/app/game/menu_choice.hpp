@@ -1,0 +1,30 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "app/game/opponent.hpp"
+#include "nineball/rules.hpp"
+
+namespace nineball::app {
+
+/// The games the start menu offers.
+enum class GameMode {
+  NineBall,  ///< a match of nine-ball, rack after rack
+  Practice,  ///< TODO: practice mode (another branch builds it); the menu shows it greyed
+};
+
+/// What the start menu settled: the game, who plays Player 2, the rules, the names, or the
+/// saved rack to resume. No SFML; also kept in the settings as the last game chosen.
+struct MenuChoice {
+  GameMode mode = GameMode::NineBall;
+  Opponent opponent;  ///< nothing: a second person; else the computer at a level
+  rules::RuleSet rules = rules::RuleSet::Wpa;
+  std::array<std::string, 2> names = {"Player 1", "Player 2"};
+  bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)
+};
+
+/// "nine-ball", "practice".
+const char* gameModeName(GameMode mode);
+
+}  // namespace nineball::app
