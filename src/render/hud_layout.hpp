@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -51,7 +52,10 @@ struct HudLayout {
     h.tilt_outer = 1.42 * h.spin_radius;
     h.spin_labels_right = h.spin_centre.x - h.tilt_outer - 0.02 * s;
     const double msg_right = h.spin_labels_right - std::max(kSpinLabelsWidth * s, 0.2 * band.width);
-    h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left, band.height - 0.02 * s};
+    // A narrow window's letterbox below the table gives a long message its second line.
+    const double below = view.heightPx() - band.top - 0.01 * s;
+    h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left,
+                 std::clamp(below, band.height - 0.02 * s, 2.0 * band.height)};
     const Vec2 c = view.toPixels({0.0, 0.0});
     const double pw = (wide ? 2.0 : strip ? 1.5 : 1.3) * s;
     const double ph = (overlay == Overlay::PushOutChoice ? 0.36

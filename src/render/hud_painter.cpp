@@ -255,7 +255,9 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
   if (split == std::string::npos) {
     text(target, hud.message, at, size, toneColour(hud.tone), m);
   } else {
-    const double small_size = size * 0.8;
+    // Two lines in the room left under the status line, as large as fit (up to 0.8 of one).
+    const double room_left = m.top + m.height - at.y;
+    const double small_size = std::min(size * 0.8, room_left / 2.5);
     text(target, hud.message.substr(0, split), at, small_size, toneColour(hud.tone), m);
     text(target, hud.message.substr(split + 1), at + Vec2{0.0, small_size * 1.2}, small_size,
          toneColour(hud.tone), m);

@@ -92,7 +92,7 @@ const char* const kRackWon =
 
 TEST(HudText, FitsItsRoomAtEveryWindowSize) {
   ASSERT_EQ(std::system("command -v xvfb-run >/dev/null 2>&1"), 0) << "needs xvfb-run";
-  for (const char* size : {"640x480", "800x600", "1126x704", "3840x2160"}) {
+  for (const char* size : {"500x700", "640x480", "800x600", "1126x704", "3840x2160"}) {
     for (const auto& [name, script] :
          {std::pair{"a foul with a ball down", kFoulWithBallsDown},
           std::pair{"the push-out choice", kPushOutChoice}, std::pair{"the rack won", kRackWon}}) {

@@ -67,3 +67,71 @@ TEST(TiltRing, OnlyTheRingTilts) {
 
 }  // namespace
 }  // namespace nineball::app
+
+namespace nineball::app {
+namespace {
+
+sf::Event key(sf::Keyboard::Key code, bool shift = false) {
+  sf::Event e{};
+  e.type = sf::Event::KeyPressed;
+  e.key.code = code;
+  e.key.shift = shift;
+  return e;
+}
+
+sf::Event release(sf::Keyboard::Key code) {
+  sf::Event e = key(code);
+  e.type = sf::Event::KeyReleased;
+  return e;
+}
+
+TEST(SpinKeys, LAndRGiveSideSpinTAndBTopAndBackCCentres) {
+  GameSession s{MatchSetup{}};
+  UiState ui;
+  ComputerPlayer computer(1);
+  GameInput input(s, ui, computer);
+  const render::ViewTransform view(s.match().world().table().def, 1280, 800);
+  auto press = [&](sf::Keyboard::Key k) {
+    input.handle(key(k), view);
+    input.handle(release(k), view);
+  };
+  press(sf::Keyboard::L);
+  press(sf::Keyboard::L);
+  EXPECT_NEAR(s.tip().x, -0.2, 1e-12);
+  press(sf::Keyboard::R);
+  EXPECT_NEAR(s.tip().x, -0.1, 1e-12);
+  press(sf::Keyboard::T);
+  EXPECT_NEAR(s.tip().y, 0.1, 1e-12);
+  press(sf::Keyboard::B);
+  press(sf::Keyboard::B);
+  EXPECT_NEAR(s.tip().y, -0.1, 1e-12);
+  for (int i = 0; i < 20; ++i) press(sf::Keyboard::R);
+  EXPECT_LE(length(s.tip()), s.maxTip());  // held inside the useful range
+  EXPECT_GT(s.tip().x, 0.0);
+  press(sf::Keyboard::C);
+  EXPECT_EQ(s.tip(), Vec2{});
+}
+
+TEST(ReplayKey, VReplaysTheLastShotAndAnyKeyReturns) {
+  GameSession s{MatchSetup{}};
+  UiState ui;
+  ComputerPlayer computer(1);
+  GameInput input(s, ui, computer);
+  const render::ViewTransform view(s.match().world().table().def, 1280, 800);
+  input.handle(key(sf::Keyboard::V), view);
+  input.handle(release(sf::Keyboard::V), view);
+  EXPECT_FALSE(s.replaying());  // nothing to replay before the break
+  ASSERT_TRUE(s.shoot());
+  for (int i = 0; i < 60 * 120 && s.phase() == Phase::Rolling; ++i) s.advance(1.0 / 60.0);
+  input.handle(key(sf::Keyboard::V, true), view);
+  input.handle(release(sf::Keyboard::V), view);
+  ASSERT_TRUE(s.replaying());
+  EXPECT_NE(s.status().find("Slow replay"), std::string::npos);
+  const double heading = s.heading();
+  input.handle(key(sf::Keyboard::Left), view);  // returns, and does not aim
+  EXPECT_FALSE(s.replaying());
+  EXPECT_EQ(s.heading(), heading);
+}
+
+}  // namespace
+}  // namespace nineball::app
