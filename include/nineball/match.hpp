@@ -57,6 +57,7 @@ struct TurnRecord {
   int ball_on = 0;                  ///< the ball on after the turn
   std::optional<rules::Call> call;  ///< the shot's call, when it had one
   rules::Decision answered = rules::Decision::None;  ///< for a decision: the choice it made
+  bool shoot = true;  ///< for a decision: shoot / play on (true), or pass / rerack (false)
 };
 
 /// A rack of nine-, eight- or ten-ball played through the real physics: the table, the balls, the

@@ -204,6 +204,7 @@ TurnRecord Match::play(const TurnInput& turn) {
     rec.kind = TurnInput::Kind::Decision;
     rec.shooter = rack_.shooter();
     rec.answered = rack_.pendingDecision();
+    rec.shoot = turn.shoot;
     rack_.decide(turn.shoot);
     if (rack_.isBreak()) rerack();
     rec.verdict.shooter = rec.shooter;

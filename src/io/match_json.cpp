@@ -189,9 +189,8 @@ ordered_json groupJson(const std::optional<rules::Group>& g) {
 }
 
 const char* decisionWord(const TurnRecord& t) {
-  const bool shoot = t.verdict.next == t.shooter;
-  if (t.answered == rules::Decision::RerackOrPlayOn) return shoot ? "play-on" : "rerack";
-  return shoot ? "shoot" : "pass";
+  if (t.answered == rules::Decision::RerackOrPlayOn) return t.shoot ? "play-on" : "rerack";
+  return t.shoot ? "shoot" : "pass";
 }
 
 }  // namespace

@@ -94,3 +94,18 @@ TEST(MatchCliGames, NineBallResultsGainNoNewKeys) {
   EXPECT_FALSE(t.contains("call_breach"));
   EXPECT_FALSE(t.contains("call"));
 }
+
+TEST(MatchCliGames, EightBallIllegalBreakThenRerack) {
+  const CliOutcome r = runMatch(R"({"game": "eight-ball", "turns": [
+      {"heading_deg": 0, "speed": 0.6}, {"decision": "rerack"},
+      {"heading_deg": 0, "speed": 10}]})");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto turns = nlohmann::json::parse(r.out)["turns"];
+  ASSERT_EQ(turns.size(), 3u);
+  EXPECT_EQ(turns[0]["foul"], "bad-break");
+  EXPECT_EQ(turns[0]["next"], "B");
+  EXPECT_EQ(turns[1]["decision"], "rerack");
+  EXPECT_EQ(turns[1]["shooter"], "B");
+  EXPECT_EQ(turns[2]["shooter"], "B");  // the chooser breaks the new rack
+  EXPECT_TRUE(turns[1]["groups"]["A"].is_null());
+}
