@@ -99,11 +99,11 @@ struct Verdict {
   Player shooter = Player::A;
   Foul foul = Foul::None;
   bool legal() const { return foul == Foul::None; }
-  std::vector<int> pocketed;        ///< object balls that went down on the shot
-  std::vector<int> to_spot;         ///< balls to put back on the foot spot (the 9 on a foul)
-  Player next = Player::A;          ///< who shoots (or decides) next
-  bool ball_in_hand = false;        ///< next shooter places the cue ball anywhere
-  bool cue_to_head_spot = false;    ///< paper rules: after a scratch the cue ball goes there
+  std::vector<int> pocketed;      ///< object balls that went down on the shot
+  std::vector<int> to_spot;       ///< balls to put back on the foot spot (the game ball: see rules)
+  Player next = Player::A;        ///< who shoots (or decides) next
+  bool ball_in_hand = false;      ///< next shooter places the cue ball anywhere
+  bool cue_to_head_spot = false;  ///< paper rules: after a scratch the cue ball goes there
   bool push_out_available = false;  ///< the next shot may be declared a push-out
   bool awaiting_decision = false;   ///< `decision` is not None: `next` chooses first
   Decision decision = Decision::None;
