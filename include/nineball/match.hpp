@@ -25,8 +25,9 @@ class IllegalAction : public std::runtime_error {
 
 /// How a rack starts.
 struct MatchSetup {
-  rules::RuleSet rules = rules::RuleSet::Wpa;
-  std::uint64_t seed = 1;  ///< places balls 2-8 in the rack
+  rules::Game game = rules::Game::NineBall;
+  rules::RuleSet rules = rules::RuleSet::Wpa;  ///< Paper: nine-ball only
+  std::uint64_t seed = 1;                      ///< places the rack's free balls
   TableDef table;
   PhysicsParams physics;
   StepParams step;
@@ -41,19 +42,26 @@ struct TurnInput {
   Kind kind = Kind::Shot;
   Shot shot;
   std::optional<Vec2> cue;  ///< where to place the cue ball (ball in hand, or the break)
-  bool shoot = true;        ///< Decision: shoot (true) or pass the shot back (false)
+  /// The called ball and pocket: needed when Rack::callRequired() (ten-ball after the break,
+  /// eight-ball on the 8); a push-out needs none.
+  std::optional<rules::Call> call;
+  /// Decision: shoot / play on (true), or pass the shot back / re-rack (false).
+  bool shoot = true;
 };
 
 /// What a turn gave.
 struct TurnRecord {
   rules::Player shooter = rules::Player::A;
   TurnInput::Kind kind = TurnInput::Kind::Shot;
-  rules::Verdict verdict;  ///< for a decision: no foul, next = who shoots now
-  int ball_on = 0;         ///< the ball on after the turn
+  rules::Verdict verdict;           ///< for a decision: no foul, next = who shoots now
+  int ball_on = 0;                  ///< the ball on after the turn
+  std::optional<rules::Call> call;  ///< the shot's call, when it had one
+  rules::Decision answered = rules::Decision::None;  ///< for a decision: the choice it made
+  bool shoot = true;  ///< for a decision: shoot / play on (true), or pass / rerack (false)
 };
 
-/// A rack of nine-ball played through the real physics: the table, the balls, the rules.
-/// Headless and deterministic. A window drives it with beginShot / step / finishShot; a
+/// A rack of nine-, eight- or ten-ball played through the real physics: the table, the balls, the
+/// rules. Headless and deterministic. A window drives it with beginShot / step / finishShot; a
 /// script with play().
 class Match {
  public:
@@ -85,6 +93,7 @@ class Match {
 
  private:
   void placeCue(Vec2 pos);
+  void rerack();
   void spot(int ball);
   void returnCueToHeadSpot();
   Vec2 freeSpotOnLine(Vec2 from, Vec2 step_dir) const;
@@ -96,6 +105,7 @@ class Match {
   bool push_out_ = false;
   bool cue_pocketed_ = false;  // the cue ball is off the table, waiting to be placed
   int ball_on_at_start_ = 0;
+  std::optional<rules::Call> call_;  // of the shot rolling
 };
 
 }  // namespace nineball

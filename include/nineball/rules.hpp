@@ -4,20 +4,42 @@
 #include <string>
 #include <vector>
 
+#include "nineball/pocket_id.hpp"
+
 namespace nineball::rules {
+
+/// Which game is played.
+enum class Game { NineBall, EightBall, TenBall };
+
+/// "nine-ball", "eight-ball", "ten-ball".
+const char* gameName(Game g);
+std::optional<Game> gameFromName(const std::string& name);
 
 /// Which rules decide a shot.
 enum class RuleSet {
-  Wpa,    ///< World Pool-Billiard Association nine-ball
-  Paper,  ///< the seed paper's finite state machine ("The UseFSM method")
+  Wpa,    ///< World Pool-Billiard Association rules (every game)
+  Paper,  ///< the seed paper's finite state machine ("The UseFSM method"); nine-ball only
 };
 
 const char* ruleSetName(RuleSet r);
 std::optional<RuleSet> ruleSetFromName(const std::string& name);
 
-enum class Foul { None, Scratch, WrongBallFirst, NoContact, NoRail, BadBreak, ThreeFouls };
+enum class Foul {
+  None,
+  Scratch,
+  WrongBallFirst,
+  NoContact,
+  NoRail,
+  BadBreak,
+  ThreeFouls,
+  EightEarly,       ///< eight-ball: the 8 down before the shooter's group is cleared
+  WrongGroupFirst,  ///< eight-ball: the first ball hit is not one the shooter may hit
+  WrongPocket,      ///< the called ball dropped in another pocket
+  NoCall,           ///< a ball dropped that was not called (or nothing was called)
+};
 
-/// "scratch", "wrong-ball-first", "no-contact", "no-rail", "bad-break", "three-fouls".
+/// "scratch", "wrong-ball-first", "no-contact", "no-rail", "bad-break", "three-fouls",
+/// "eight-early", "wrong-group-first", "wrong-pocket", "no-call".
 const char* foulName(Foul f);
 
 enum class Player { A, B };
@@ -28,13 +50,48 @@ inline const char* playerName(Player p) {
   return p == Player::A ? "A" : "B";
 }
 
-/// What happened in one shot, as the physics events tell it.
+/// Eight-ball's groups: solids 1-7, stripes 9-15.
+enum class Group { Solids, Stripes };
+/// "solids", "stripes".
+const char* groupName(Group g);
+/// The group of an eight-ball object ball; nothing for the 8 (and for numbers past 15).
+std::optional<Group> groupOf(int ball);
+
+/// Who holds which group; both empty while the table is open.
+struct Groups {
+  std::optional<Group> a;
+  std::optional<Group> b;
+  std::optional<Group> of(Player p) const { return p == Player::A ? a : b; }
+  bool open() const { return !a; }
+  bool operator==(const Groups& o) const { return a == o.a && b == o.b; }
+};
+
+/// A called shot: this ball in that pocket.
+struct Call {
+  int ball = 0;
+  PocketId pocket = PocketId::TopLeft;
+  bool operator==(const Call& o) const { return ball == o.ball && pocket == o.pocket; }
+};
+
+/// What happened in one shot, as the physics events tell it, and what the shooter called.
 struct ShotSummary {
   std::optional<int> first_contact;  ///< first object ball the cue ball touched
   std::vector<int> pocketed;         ///< object balls pocketed, in the order they dropped
+  std::vector<PocketId> pockets;     ///< pockets[i]: where pocketed[i] dropped (may be short)
   bool cue_pocketed = false;
   bool rail_after_contact = false;  ///< some ball (cue included) met a cushion after contact
   int object_balls_to_rail = 0;     ///< distinct object balls that met a cushion
+  std::optional<Call> call;         ///< the shooter's call, when one was made
+
+  /// Where `ball` dropped; nothing when it did not drop or the pocket is unknown.
+  std::optional<PocketId> pocketOf(int ball) const;
+};
+
+/// A choice the next player must make before anyone shoots.
+enum class Decision {
+  None,
+  PlayOrPass,      ///< after a push-out or a ten-ball pot not as called: shoot, or pass back
+  RerackOrPlayOn,  ///< after an illegal eight-ball break: play the table as it lies, or re-rack
 };
 
 /// The rules' answer to a shot.
@@ -42,65 +99,107 @@ struct Verdict {
   Player shooter = Player::A;
   Foul foul = Foul::None;
   bool legal() const { return foul == Foul::None; }
-  std::vector<int> pocketed;        ///< object balls that went down on the shot
-  std::vector<int> to_spot;         ///< balls to put back on the foot spot (the 9 on a foul)
-  Player next = Player::A;          ///< who shoots next
-  bool ball_in_hand = false;        ///< next shooter places the cue ball anywhere
-  bool cue_to_head_spot = false;    ///< paper rules: after a scratch the cue ball goes there
+  std::vector<int> pocketed;      ///< object balls that went down on the shot
+  std::vector<int> to_spot;       ///< balls to put back on the foot spot (the game ball: see rules)
+  Player next = Player::A;        ///< who shoots (or decides) next
+  bool ball_in_hand = false;      ///< next shooter places the cue ball anywhere
+  bool cue_to_head_spot = false;  ///< paper rules: after a scratch the cue ball goes there
   bool push_out_available = false;  ///< the next shot may be declared a push-out
-  bool awaiting_decision = false;   ///< after a push-out: the opponent shoots or passes
+  bool awaiting_decision = false;   ///< `decision` is not None: `next` chooses first
+  Decision decision = Decision::None;
+  /// Ten-ball: a legal shot whose pot did not count as called (WrongPocket or NoCall). No
+  /// foul and no ball in hand, but the turn ends and the opponent may play or pass it back.
+  Foul call_breach = Foul::None;
+  Groups groups;  ///< eight-ball: who holds which group after the shot
   std::optional<Player> winner;
 };
 
+/// Everything a rack remembers between shots. The rule books read and update it.
+struct RackState {
+  std::vector<int> racked;    ///< the object balls at the start (sorted): a re-rack restores them
+  std::vector<int> on_table;  ///< object balls still on the table (sorted)
+  Player shooter = Player::A;
+  bool break_next = true;
+  bool ball_in_hand = false;
+  bool push_out_available = false;
+  Decision decision = Decision::None;
+  std::optional<Player> winner;
+  int fouls[2] = {0, 0};  ///< consecutive fouls of A and B
+  Groups groups;
+
+  bool has(int ball) const;
+  void remove(const std::vector<int>& balls);
+  int& foulCount(Player p) { return fouls[p == Player::A ? 0 : 1]; }
+};
+
+/// One game's rules (and rule set): stateless, so one shared instance serves every rack.
+/// Judging reads the state before the shot and updates what the game itself keeps (balls
+/// down, foul counts, groups); the Rack applies the rest of the verdict.
+class RuleBook {
+ public:
+  virtual ~RuleBook() = default;
+  virtual Game game() const = 0;
+  virtual RuleSet ruleSet() const = 0;
+  /// The balls the cue ball may hit first now (the break: any).
+  virtual std::vector<int> legalFirstBalls(const RackState& s) const = 0;
+  /// Whether the coming shot must carry a call (push-outs never need one).
+  virtual bool callRequired(const RackState& s) const = 0;
+  /// Judges one shot; `push_out` only when s.push_out_available.
+  virtual Verdict judge(RackState& s, const ShotSummary& shot, bool push_out) const = 0;
+};
+
+/// The rule book of a game. Throws std::invalid_argument for a pair that does not exist (the
+/// paper's rules are nine-ball's only).
+const RuleBook& ruleBook(Game game, RuleSet rules = RuleSet::Wpa);
+
 /// The rules of one rack as a pure state machine: shots in, verdicts out. It knows ball
-/// numbers and players, nothing of physics or drawing.
+/// numbers, pockets and players, nothing of physics or drawing. Any game; copyable.
 class Rack {
  public:
-  /// `object_balls` are the balls on the table at the start; `opening_break` says whether
-  /// the first shot is a break (a racked table) or an ordinary shot (a custom layout).
+  /// Nine-ball. `object_balls` are the balls on the table at the start; `opening_break` says
+  /// whether the first shot is a break (a racked table) or an ordinary shot (a custom layout).
   Rack(RuleSet rules, std::vector<int> object_balls, bool opening_break = true);
+  /// Any game. Throws std::invalid_argument for the paper's rules outside nine-ball.
+  Rack(Game game, RuleSet rules, std::vector<int> object_balls, bool opening_break = true);
 
-  RuleSet rules() const { return rules_; }
-  Player shooter() const { return shooter_; }
-  /// Lowest-numbered object ball still on the table (0 when none is left).
+  Game game() const { return book_->game(); }
+  RuleSet rules() const { return book_->ruleSet(); }
+  Player shooter() const { return s_.shooter; }
+  /// The balls the cue ball may legally hit first now.
+  std::vector<int> legalFirstBalls() const { return book_->legalFirstBalls(s_); }
+  /// Lowest of legalFirstBalls() (0 when none is left): in nine- and ten-ball the ball on.
   int ballOn() const;
-  const std::vector<int>& ballsOnTable() const { return on_table_; }
-  bool isBreak() const { return break_next_; }
-  bool ballInHand() const { return ball_in_hand_; }
-  bool pushOutAvailable() const { return push_out_available_; }
-  /// After a push-out the opponent must choose (decide) before anyone shoots.
-  bool awaitingDecision() const { return awaiting_decision_; }
-  bool over() const { return winner_.has_value(); }
-  std::optional<Player> winner() const { return winner_; }
-  int consecutiveFouls(Player p) const { return fouls_[p == Player::A ? 0 : 1]; }
+  const std::vector<int>& ballsOnTable() const { return s_.on_table; }
+  bool isBreak() const { return s_.break_next; }
+  bool ballInHand() const { return s_.ball_in_hand; }
+  bool pushOutAvailable() const { return s_.push_out_available; }
+  /// A choice is pending (pendingDecision() says which) before anyone shoots.
+  bool awaitingDecision() const { return s_.decision != Decision::None; }
+  Decision pendingDecision() const { return s_.decision; }
+  /// The next shot must carry a call (ten-ball after the break, eight-ball on the 8).
+  bool callRequired() const { return !over() && book_->callRequired(s_); }
+  Groups groups() const { return s_.groups; }
+  bool over() const { return s_.winner.has_value(); }
+  std::optional<Player> winner() const { return s_.winner; }
+  int consecutiveFouls(Player p) const { return s_.fouls[p == Player::A ? 0 : 1]; }
 
   /// Judges a shot. `push_out` declares it a push-out (only when pushOutAvailable()).
   /// Throws std::logic_error when the shot is not allowed now (game over, push-out not
   /// available, a decision pending).
   Verdict shoot(const ShotSummary& shot, bool push_out = false);
 
-  /// After a push-out: the player to move either shoots (`shoot` true) or passes the shot
-  /// back to the one who pushed out. Throws std::logic_error when no decision is pending.
+  /// The pending choice of the player to move. PlayOrPass: shoot (`shoot` true) or pass the
+  /// shot back. RerackOrPlayOn: play on (`shoot` true) or re-rack, after which isBreak() is
+  /// true again, every racked ball is back and the chooser breaks. Throws std::logic_error
+  /// when no decision is pending.
   void decide(bool shoot);
 
   /// Puts a spotted ball back on the table (the caller found the spot).
   void respot(int ball);
 
  private:
-  Verdict judgeWpa(const ShotSummary& shot, bool push_out);
-  Verdict judgePaper(const ShotSummary& shot);
-  void removePocketed(const std::vector<int>& balls);
-  int& foulCount(Player p) { return fouls_[p == Player::A ? 0 : 1]; }
-
-  RuleSet rules_;
-  std::vector<int> on_table_;
-  Player shooter_ = Player::A;
-  bool break_next_ = true;
-  bool ball_in_hand_ = false;
-  bool push_out_available_ = false;
-  bool awaiting_decision_ = false;
-  std::optional<Player> winner_;
-  int fouls_[2] = {0, 0};
+  const RuleBook* book_;
+  RackState s_;
 };
 
 }  // namespace nineball::rules

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "nineball/pocket_id.hpp"
 #include "nineball/vec2.hpp"
 
 namespace nineball {
@@ -25,9 +26,6 @@ struct TableDef {
   /// "9ft", "8ft" or "7ft"; nothing for any other name.
   static std::optional<TableDef> named(const std::string& name);
 };
-
-enum class PocketId { TopLeft, TopSide, TopRight, BottomRight, BottomSide, BottomLeft };
-constexpr int kPocketCount = 6;
 
 /// "top-left", "top-side", ... (top = +y, right = +x).
 const char* pocketName(PocketId id);

@@ -31,7 +31,8 @@ std::uint64_t plannerSeed(std::uint64_t script_seed, rules::Player p) {
 
 CLI::App* addMatchCommand(CLI::App& app, MatchOptions& options) {
   CLI::App* cmd = app.add_subcommand(
-      "match", "Play a rack of nine-ball from a JSON script and print the result as JSON");
+      "match",
+      "Play a rack of nine-, eight- or ten-ball from a JSON script and print the result as JSON");
   cmd->add_option("script", options.script_path, "Script file, or - to read standard input")
       ->required();
   return cmd;

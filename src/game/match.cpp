@@ -29,7 +29,7 @@ std::vector<int> objectBalls(const std::vector<BallState>& balls) {
 Match::Match(const MatchSetup& setup)
     : setup_(setup),
       world_(std::make_unique<World>(setup.table, setup.physics, setup.step)),
-      rack_(setup.rules, {}, !setup.balls) {
+      rack_(setup.game, setup.rules, {}, !setup.balls) {
   std::vector<BallState> balls;
   if (setup.balls) {
     balls = *setup.balls;
@@ -38,7 +38,8 @@ Match::Match(const MatchSetup& setup)
     cue.id = kCueBall;
     cue.pos = {world_->table().headStringX(), 0.0};
     balls.push_back(cue);
-    for (const BallState& b : rackNineBall(setup.table, setup.physics.ball_radius, setup.seed)) {
+    for (const BallState& b :
+         rackFor(setup.game, setup.table, setup.physics.ball_radius, setup.seed)) {
       balls.push_back(b);
     }
   }
@@ -55,7 +56,7 @@ Match::Match(const MatchSetup& setup)
     cue.pocket = PocketId::TopLeft;  // off the table until placed
     world_->addBall(cue);
   }
-  rack_ = rules::Rack(setup.rules, objectBalls(balls), !setup.balls);
+  rack_ = rules::Rack(setup.game, setup.rules, objectBalls(balls), !setup.balls);
 }
 
 Match::~Match() = default;
@@ -113,6 +114,15 @@ void Match::spot(int ball) {
   rack_.respot(ball);
 }
 
+void Match::rerack() {
+  // The same rack as at the start (same seed), the cue ball back in hand on the head string.
+  for (const BallState& b :
+       rackFor(setup_.game, setup_.table, setup_.physics.ball_radius, setup_.seed)) {
+    world_->placeBall(b.id, b.pos);
+  }
+  placeCue({world_->table().headStringX(), 0.0});
+}
+
 void Match::returnCueToHeadSpot() {
   const Vec2 head{world_->table().headStringX(), 0.0};
   placeCue(freeSpotOnLine(head, {-1.0, 0.0}));
@@ -124,11 +134,30 @@ void Match::beginShot(const TurnInput& turn) {
   if (turn.kind == TurnInput::Kind::Decision) {
     throw IllegalAction("a decision is not a shot");
   }
+  if (rack_.pendingDecision() == rules::Decision::RerackOrPlayOn) {
+    throw IllegalAction("the illegal break waits for the opponent's decision (play on or rerack)");
+  }
   if (rack_.awaitingDecision()) {
-    throw IllegalAction("the push-out waits for the opponent's decision (shoot or pass)");
+    throw IllegalAction(rack_.game() != rules::Game::TenBall
+                            ? "the push-out waits for the opponent's decision (shoot or pass)"
+                            : "the turn waits for the opponent's decision (shoot or pass)");
   }
   const bool push_out = turn.kind == TurnInput::Kind::PushOut;
   if (push_out && !rack_.pushOutAvailable()) throw IllegalAction("no push-out is allowed now");
+  if (!push_out && rack_.callRequired() && !turn.call) {
+    throw IllegalAction(
+        std::string("every ") +
+        (rack_.game() == rules::Game::EightBall ? "shot at the 8" : "shot after the break") +
+        " in " + rules::gameName(rack_.game()) +
+        " is called: the turn needs \"call\": {\"ball\", \"pocket\"}");
+  }
+  if (turn.call && !rack_.isBreak()) {
+    const auto& on = rack_.ballsOnTable();
+    if (std::find(on.begin(), on.end(), turn.call->ball) == on.end()) {
+      throw IllegalAction("the called ball " + std::to_string(turn.call->ball) +
+                          " is not on the table");
+    }
+  }
   if (turn.cue) {
     if (!cueInHand()) throw IllegalAction("the cue ball is not in hand");
     if (auto problem = cuePlacementProblem(*turn.cue)) throw IllegalAction(*problem);
@@ -138,6 +167,7 @@ void Match::beginShot(const TurnInput& turn) {
   }
   ball_on_at_start_ = rack_.ballOn();
   push_out_ = push_out;
+  call_ = turn.call;
   world_->clearEvents();
   world_->strike(kCueBall, turn.shot);
   in_progress_ = true;
@@ -147,8 +177,10 @@ TurnRecord Match::finishShot() {
   if (!in_progress_) throw IllegalAction("no shot is rolling");
   if (!world_->atRest()) world_->runUntilRest();
   in_progress_ = false;
-  const rules::ShotSummary summary = game::summarize(world_->events());
+  rules::ShotSummary summary = game::summarize(world_->events());
+  summary.call = call_;
   TurnRecord rec;
+  rec.call = call_;
   rec.shooter = rack_.shooter();
   rec.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
   rec.verdict = rack_.shoot(summary, push_out_);
@@ -171,7 +203,10 @@ TurnRecord Match::play(const TurnInput& turn) {
     TurnRecord rec;
     rec.kind = TurnInput::Kind::Decision;
     rec.shooter = rack_.shooter();
+    rec.answered = rack_.pendingDecision();
+    rec.shoot = turn.shoot;
     rack_.decide(turn.shoot);
+    if (rack_.isBreak()) rerack();
     rec.verdict.shooter = rec.shooter;
     rec.verdict.next = rack_.shooter();
     rec.ball_on = rack_.ballOn();

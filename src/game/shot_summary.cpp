@@ -25,6 +25,7 @@ rules::ShotSummary summarize(const std::vector<Event>& events) {
           s.cue_pocketed = true;
         } else {
           s.pocketed.push_back(e.a);
+          s.pockets.push_back(e.pocket);
         }
         break;
       case EventType::AllAtRest:

@@ -8,7 +8,8 @@
 namespace nineball::game {
 
 /// Reads a shot's physics events the way the rules need them: the first object ball the cue
-/// ball touched, what dropped, which cushions were met and when.
+/// ball touched, what dropped and where, which cushions were met and when. The call
+/// is the shooter's, not the physics': the caller adds it.
 rules::ShotSummary summarize(const std::vector<Event>& events);
 
 }  // namespace nineball::game

@@ -17,22 +17,45 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
+// The highest ball number of any game (eight-ball's 15).
+constexpr int kHighestBall = 15;
+
+rules::Call parseCall(const json& v, const std::string& path) {
+  expectObject(v, path);
+  allowOnly(v, path, {"ball", "pocket"});
+  rules::Call call;
+  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, kHighestBall);
+  const std::string name = text(required(v, path, "pocket"), member(path, "pocket"));
+  const auto pocket = pocketFromName(name);
+  if (!pocket) {
+    refuse(member(path, "pocket"),
+           "unknown pocket " + quote(name) +
+               " (expected \"top-left\", \"top-side\", \"top-right\", \"bottom-right\", "
+               "\"bottom-side\" or \"bottom-left\")");
+  }
+  call.pocket = *pocket;
+  return call;
+}
+
 TurnInput parseTurn(const json& v, const std::string& path, double cue_mass) {
   expectObject(v, path);
   TurnInput turn;
   if (const json* d = optional(v, "decision")) {
     allowOnly(v, path, {"decision"});
     const std::string choice = text(*d, member(path, "decision"));
-    if (choice != "shoot" && choice != "pass") {
-      refuse(member(path, "decision"), "expected \"shoot\" or \"pass\", found " + quote(choice));
+    // "play-on" and "rerack" answer an illegal eight-ball break, as "shoot" and "pass" do.
+    const bool shoot = choice == "shoot" || choice == "play-on";
+    if (!shoot && choice != "pass" && choice != "rerack") {
+      refuse(member(path, "decision"),
+             "expected \"shoot\", \"pass\", \"play-on\" or \"rerack\", found " + quote(choice));
     }
     turn.kind = TurnInput::Kind::Decision;
-    turn.shoot = choice == "shoot";
+    turn.shoot = shoot;
     return turn;
   }
-  allowOnly(
-      v, path,
-      {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue", "push_out"});
+  allowOnly(v, path,
+            {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue",
+             "push_out", "call"});
   if (const json* p = optional(v, "push_out")) {
     if (!p->is_boolean())
       refuse(member(path, "push_out"), "expected true or false, found " + describe(*p));
@@ -46,6 +69,7 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass) {
     }
     turn.cue = Vec2{number((*c)[0], element(cpath, 0)), number((*c)[1], element(cpath, 1))};
   }
+  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"));
   return turn;
 }
 
@@ -82,17 +106,35 @@ void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
 
 MatchScript parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
-  allowOnly(doc, "", {"rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
+  allowOnly(doc, "",
+            {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
   MatchScript script;
+  MatchSetup& setup = script.setup;
+  if (const json* p = optional(doc, "game")) {
+    const std::string name = text(*p, "game");
+    const auto game = rules::gameFromName(name);
+    if (!game) {
+      refuse("game", "unknown game " + quote(name) +
+                         " (expected \"nine-ball\", \"eight-ball\" or \"ten-ball\")");
+    }
+    setup.game = *game;
+  }
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = script.players[0] || script.players[1];
-  MatchSetup& setup = script.setup;
+  if (computer_plays && setup.game != rules::Game::NineBall) {
+    refuse("players",
+           std::string("the computer plays nine-ball only, not ") + rules::gameName(setup.game));
+  }
   if (const json* p = optional(doc, "rules")) {
     const std::string name = text(*p, "rules");
     const auto rules = rules::ruleSetFromName(name);
     if (!rules)
       refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
     setup.rules = *rules;
+    if (setup.rules == rules::RuleSet::Paper && setup.game != rules::Game::NineBall) {
+      refuse("rules", std::string("the paper's rules are nine-ball's only, not ") +
+                          rules::gameName(setup.game) + "'s");
+    }
   }
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
@@ -119,11 +161,13 @@ MatchScript parseDocument(const json& doc) {
     // The rack the match would set up must fit the table like any given balls.
     check.balls = {BallState::at(
         kCueBall, {buildTable(setup.table, setup.physics.ball_radius).headStringX(), 0.0})};
-    for (const BallState& b : rackNineBall(setup.table, setup.physics.ball_radius, setup.seed)) {
+    for (const BallState& b :
+         rackFor(setup.game, setup.table, setup.physics.ball_radius, setup.seed)) {
       check.balls.push_back(b);
     }
     if (auto problem = validateScene(check)) {
-      refuse("table", "too small for the nine-ball rack and the cue ball (" + *problem + ")");
+      refuse("table", std::string("too small for the ") + rules::gameName(setup.game) +
+                          " rack and the cue ball (" + *problem + ")");
     }
   }
   static const json kNoTurns = json::array();
@@ -138,6 +182,15 @@ MatchScript parseDocument(const json& doc) {
 
 ordered_json winnerJson(const std::optional<rules::Player>& w) {
   return w ? ordered_json(rules::playerName(*w)) : ordered_json(nullptr);
+}
+
+ordered_json groupJson(const std::optional<rules::Group>& g) {
+  return g ? ordered_json(rules::groupName(*g)) : ordered_json(nullptr);
+}
+
+const char* decisionWord(const TurnRecord& t) {
+  if (t.answered == rules::Decision::RerackOrPlayOn) return t.shoot ? "play-on" : "rerack";
+  return t.shoot ? "shoot" : "pass";
 }
 
 }  // namespace
@@ -160,6 +213,7 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
                                          const std::vector<std::optional<ComputerTurn>>& computer) {
   ordered_json doc;
   ordered_json list = ordered_json::array();
+  rules::Groups groups;
   for (std::size_t i = 0; i < turns.size(); ++i) {
     const TurnRecord& t = turns[i];
     const rules::Verdict& v = t.verdict;
@@ -167,7 +221,7 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
     turn["shooter"] = rules::playerName(t.shooter);
     if (i < computer.size() && computer[i]) describeComputerTurn(*computer[i], turn);
     if (t.kind == TurnInput::Kind::Decision) {
-      turn["decision"] = v.next == t.shooter ? "shoot" : "pass";
+      turn["decision"] = decisionWord(t);
     } else if (t.kind == TurnInput::Kind::PushOut) {
       turn["push_out"] = true;
     }
@@ -178,6 +232,19 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
     turn["ball_on"] = t.ball_on;
     turn["ball_in_hand"] = v.ball_in_hand;
     turn["winner"] = winnerJson(v.winner);
+    if (t.call) {
+      turn["call"] = {{"ball", t.call->ball}, {"pocket", pocketName(t.call->pocket)}};
+    }
+    if (rack.game() == rules::Game::TenBall) {
+      turn["call_breach"] = v.call_breach == rules::Foul::None
+                                ? ordered_json(nullptr)
+                                : ordered_json(rules::foulName(v.call_breach));
+    }
+    if (rack.game() == rules::Game::EightBall) {
+      // A decision changes no group: it shows those of the shot before.
+      if (t.kind != TurnInput::Kind::Decision) groups = v.groups;
+      turn["groups"] = {{"A", groupJson(groups.a)}, {"B", groupJson(groups.b)}};
+    }
     list.push_back(turn);
   }
   doc["turns"] = list;

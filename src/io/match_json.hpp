@@ -34,14 +34,17 @@ struct ComputerTurn {
 
 using MatchScriptResult = std::variant<MatchScript, ParseError>;
 
-/// Parses `{"rules", "seed", "table", "physics", "step", "balls", "players", "turns"}`;
+/// Parses `{"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"}`;
+/// a turn may carry "call": {"ball", "pocket"};
 /// refusals name the field ("turns[2].speed: ...", "players.A: ..."). "turns" may be left out
 /// when a player is the computer.
 MatchScriptResult parseMatchScript(std::string_view text);
 
 /// The result document: {"turns": [...], "winner": null|"A"|"B", "balls": [...]}. A turn the
 /// computer played (`computer[i]` set) also carries "player": "ai:<level>" and, for a shot,
-/// "shot": {"heading_deg", "speed", "tip"} and "cue" when it placed the cue ball.
+/// "shot": {"heading_deg", "speed", "tip"} and "cue" when it placed the cue ball. A called
+/// shot echoes its "call"; ten-ball turns carry "call_breach" (null, "wrong-pocket" or
+/// "no-call"), eight-ball turns "groups": {"A", "B"} ("solids", "stripes" or null).
 nlohmann::ordered_json matchResultToJson(
     const std::vector<TurnRecord>& turns, const rules::Rack& rack,
     const std::vector<BallState>& balls,

@@ -262,3 +262,23 @@ TEST(PaperRules, AllBallsDownEndsTheGame) {
   ASSERT_TRUE(v.winner);
   EXPECT_EQ(*v.winner, Player::A);
 }
+
+TEST(NineBallRules, IsTheDefaultGameBehindTheOneInterface) {
+  Rack rack(RuleSet::Wpa, kFullRack);
+  EXPECT_EQ(rack.game(), nineball::rules::Game::NineBall);
+  EXPECT_STREQ(gameName(rack.game()), "nine-ball");
+  EXPECT_EQ(rack.legalFirstBalls(), std::vector<int>{1});
+  EXPECT_FALSE(rack.callRequired());
+  EXPECT_TRUE(rack.groups().open());
+  rack.shoot(breakShot(1, {}, 5));
+  const auto v = rack.shoot(ShotSummary{}, true);
+  EXPECT_EQ(v.decision, nineball::rules::Decision::PlayOrPass);
+  EXPECT_EQ(rack.pendingDecision(), nineball::rules::Decision::PlayOrPass);
+}
+
+TEST(NineBallRules, SameBookForEveryRack) {
+  using nineball::rules::Game;
+  EXPECT_EQ(&nineball::rules::ruleBook(Game::NineBall, RuleSet::Paper),
+            &nineball::rules::ruleBook(Game::NineBall, RuleSet::Paper));
+  EXPECT_EQ(nineball::rules::ruleBook(Game::TenBall).game(), Game::TenBall);
+}

@@ -22,6 +22,11 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
       return "no ball dropped on the break and fewer than four reached a cushion";
     case rules::Foul::ThreeFouls:
       return "a third foul in a row";
+    case rules::Foul::EightEarly:
+    case rules::Foul::WrongGroupFirst:
+    case rules::Foul::WrongPocket:
+    case rules::Foul::NoCall:
+      return rules::foulName(foul);  // eight- and ten-ball: the window plays nine-ball only
     case rules::Foul::None:
       break;
   }

@@ -1,0 +1,72 @@
+#include "nineball/rules.hpp"
+
+namespace nineball::rules {
+
+const char* gameName(Game g) {
+  switch (g) {
+    case Game::NineBall:
+      return "nine-ball";
+    case Game::EightBall:
+      return "eight-ball";
+    case Game::TenBall:
+      return "ten-ball";
+  }
+  return "?";
+}
+
+std::optional<Game> gameFromName(const std::string& name) {
+  for (Game g : {Game::NineBall, Game::EightBall, Game::TenBall}) {
+    if (name == gameName(g)) return g;
+  }
+  return std::nullopt;
+}
+
+const char* ruleSetName(RuleSet r) {
+  return r == RuleSet::Wpa ? "wpa" : "paper";
+}
+
+std::optional<RuleSet> ruleSetFromName(const std::string& name) {
+  if (name == "wpa") return RuleSet::Wpa;
+  if (name == "paper") return RuleSet::Paper;
+  return std::nullopt;
+}
+
+const char* foulName(Foul f) {
+  switch (f) {
+    case Foul::None:
+      return "none";
+    case Foul::Scratch:
+      return "scratch";
+    case Foul::WrongBallFirst:
+      return "wrong-ball-first";
+    case Foul::NoContact:
+      return "no-contact";
+    case Foul::NoRail:
+      return "no-rail";
+    case Foul::BadBreak:
+      return "bad-break";
+    case Foul::ThreeFouls:
+      return "three-fouls";
+    case Foul::EightEarly:
+      return "eight-early";
+    case Foul::WrongGroupFirst:
+      return "wrong-group-first";
+    case Foul::WrongPocket:
+      return "wrong-pocket";
+    case Foul::NoCall:
+      return "no-call";
+  }
+  return "?";
+}
+
+const char* groupName(Group g) {
+  return g == Group::Solids ? "solids" : "stripes";
+}
+
+std::optional<Group> groupOf(int ball) {
+  if (ball >= 1 && ball <= 7) return Group::Solids;
+  if (ball >= 9 && ball <= 15) return Group::Stripes;
+  return std::nullopt;
+}
+
+}  // namespace nineball::rules

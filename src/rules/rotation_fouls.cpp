@@ -1,0 +1,44 @@
+#include "rules/rotation_fouls.hpp"
+
+#include <algorithm>
+
+#include "rules/ball_list.hpp"
+
+namespace nineball::rules {
+namespace {
+
+// The fewest object balls a legal WPA break drives to a cushion when none is pocketed.
+constexpr int kBreakBallsToRail = 4;
+constexpr int kFoulsToLose = 3;
+
+}  // namespace
+
+Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector<int>& pocketed,
+                  int on, bool push_out) {
+  if (shot.cue_pocketed) return Foul::Scratch;
+  if (s.break_next) {
+    if (shot.first_contact != on) return Foul::BadBreak;
+    if (pocketed.empty() && shot.object_balls_to_rail < kBreakBallsToRail) return Foul::BadBreak;
+    return Foul::None;
+  }
+  if (push_out) return Foul::None;
+  if (!shot.first_contact) return Foul::NoContact;
+  if (*shot.first_contact != on) return Foul::WrongBallFirst;
+  if (pocketed.empty() && !shot.rail_after_contact) return Foul::NoRail;
+  return Foul::None;
+}
+
+void countFoul(RackState& s, Verdict& v) {
+  if (!v.legal()) {
+    if (++s.foulCount(s.shooter) >= kFoulsToLose) v.foul = Foul::ThreeFouls;
+  } else {
+    s.foulCount(s.shooter) = 0;
+  }
+}
+
+int rotationGameBall(const std::vector<int>& on_table, int wanted) {
+  if (contains(on_table, wanted) || on_table.empty()) return wanted;
+  return *std::max_element(on_table.begin(), on_table.end());
+}
+
+}  // namespace nineball::rules

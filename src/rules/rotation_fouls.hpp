@@ -1,0 +1,22 @@
+#pragma once
+
+#include "nineball/rules.hpp"
+
+namespace nineball::rules {
+
+// Nine-ball and ten-ball under WPA rules share their fouls: the lowest ball first, a pot or
+// a rail after contact, and on the break the lowest ball first and a pot or four to a rail.
+
+/// The foul of a rotation shot (None when legal). `on` is the lowest ball on the table.
+Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector<int>& pocketed,
+                  int on, bool push_out);
+
+/// Counts a foul, or clears the count after a legal shot; a third foul in a row turns the
+/// verdict's foul into ThreeFouls.
+void countFoul(RackState& s, Verdict& v);
+
+/// The ball that wins a rotation rack: `wanted` (the 9, the 10), or in a custom layout without
+/// it the highest number on the table.
+int rotationGameBall(const std::vector<int>& on_table, int wanted);
+
+}  // namespace nineball::rules
