@@ -21,10 +21,25 @@ bool finite(Vec2 v) {
 
 }  // namespace
 
+std::string traceTruncatedNote(const Trace& trace) {
+  double last = 0.0;
+  if (!trace.balls.empty() && trace.balls.front().size() > 0) last = trace.balls.front().t.back();
+  return "the trace ends at t = " + std::to_string(last) + " s: the run needed more than " +
+         std::to_string(limits::kMaxTraceSamples) + " samples (balls x instants)";
+}
+
 bool allFinite(const SimResult& r) {
   bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
   for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
   for (const Event& e : r.events) ok = ok && std::isfinite(e.t) && finite(e.va) && finite(e.vb);
+  if (!r.trace) return ok;
+  for (const BallTrace& b : r.trace->balls) {
+    for (std::size_t i = 0; i < b.size() && ok; ++i) {
+      ok = std::isfinite(b.t[i]) && finite(Vec2{b.x[i], b.y[i]}) &&
+           finite(Vec2{b.vx[i], b.vy[i]}) && std::isfinite(b.w[i].x) && std::isfinite(b.w[i].y) &&
+           std::isfinite(b.w[i].z);
+    }
+  }
   return ok;
 }
 
@@ -64,6 +79,9 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
   }
   out << io::resultToJson(result).dump(2) << '\n' << std::flush;
   if (!out) return kExitInternal;
+  if (result.trace && result.trace->truncated) {
+    err << prefix << traceTruncatedNote(*result.trace) << '\n';
+  }
   if (result.end == SimEnd::MaxTime) {
     err << prefix << "stopped at step.max_time (" << scene.step.max_time
         << " s of simulated time) with balls still moving: the result is partial\n";

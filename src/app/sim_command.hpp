@@ -10,12 +10,15 @@ namespace nineball::app {
 
 /// Options of `nineball sim`.
 struct SimOptions {
-  std::string scene_path;  ///< a file, or "-" for standard input
-  bool jsonl = false;      ///< one scene per line in, one result per line out
+  std::string scene_path;               ///< a file, or "-" for standard input
+  bool jsonl = false;                   ///< one scene per line in, one result per line out
 };
 
 /// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
 bool allFinite(const SimResult& r);
+
+/// The line on stderr for a trace cut at limits::kMaxTraceSamples.
+std::string traceTruncatedNote(const Trace& trace);
 
 /// Registers `sim SCENE` on the app; the options are filled in when the command line is parsed.
 CLI::App* addSimCommand(CLI::App& app, SimOptions& options);
