@@ -7,8 +7,10 @@
 
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
+#include "app/shot_svg.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
+#include "nineball/atomic_file.hpp"
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 
@@ -51,14 +53,27 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
   sim->add_flag("--jsonl", options.jsonl,
                 "One scene per line in, one result per line out (a bad line gets an error "
                 "object on its line and the rest go on)");
+  sim->add_option("--svg", options.svg_path,
+                  "Also draw the shot (table, paths, events) into this SVG file");
   return sim;
 }
 
 int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  std::string why;
+  if (options.svg_path) {
+    if (options.jsonl) {
+      err << "nineball sim: --svg draws one scene and cannot be used with --jsonl\n";
+      return kExitBadInput;
+    }
+    // Refused before the run, not after it.
+    if (!canWriteFile(*options.svg_path, why)) {
+      err << "nineball sim: --svg: " << why << '\n';
+      return kExitBadInput;
+    }
+  }
   if (options.jsonl) return runSimLines(options, in, out, err);
   const std::string shown = shownPath(options.scene_path);
   const std::string prefix = "nineball sim: " + shown + ": ";
-  std::string why;
   const auto text = readInput(options.scene_path, in, why);
   if (!text) {
     err << prefix << why << '\n';
@@ -72,7 +87,29 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
   const Scene& scene = std::get<Scene>(parsed);
   logger("app")->debug("{}: {} balls, {}", shown, scene.balls.size(),
                        scene.until ? "for " + std::to_string(*scene.until) + " s" : "until rest");
-  const SimResult result = simulate(scene);
+  SimResult result;
+  if (options.svg_path) {
+    // The picture traces at its own rate; the printed result keeps the scene's own trace.
+    Scene traced = scene;
+    traced.trace = TraceRequest{kShotSvgHz, false};
+    const SimResult pictured = simulate(traced);
+    if (!allFinite(pictured)) {
+      err << prefix << "internal error: the simulation produced a non-finite number\n";
+      return kExitInternal;
+    }
+    if (!writeFileAtomically(*options.svg_path, shotSvg(scene, pictured), why)) {
+      err << "nineball sim: --svg: " << why << '\n';
+      return kExitBadInput;
+    }
+    if (scene.trace) {
+      result = simulate(scene);
+    } else {
+      result = pictured;
+      result.trace.reset();
+    }
+  } else {
+    result = simulate(scene);
+  }
   if (!allFinite(result)) {
     err << prefix << "internal error: the simulation produced a non-finite number\n";
     return kExitInternal;
