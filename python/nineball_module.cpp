@@ -4,6 +4,7 @@
 // structure, with traces as numpy arrays when numpy is there.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <string>
 #include <thread>

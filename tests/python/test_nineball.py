@@ -2,6 +2,7 @@
 import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -153,3 +154,20 @@ def test_simulate_many_gives_the_same_results_on_any_thread_count():
     two = [without_wall_time(r) for r in nineball.simulate_many(scenes, threads=2)]
     assert one == two
     assert all(r == one[0] for r in one)
+
+
+def test_without_numpy_traces_are_lists():
+    code = (
+        "import sys, json\n"
+        "sys.modules['numpy'] = None  # import numpy now fails\n"
+        "import nineball\n"
+        "t = nineball.simulate(json.loads(sys.argv[1]))['trace']['0']\n"
+        "assert all(type(t[k]) is list for k in ('t', 'x', 'y', 'vx', 'vy', 'w', 'phase'))\n"
+        "assert len(t['w'][0]) == 3 and t['phase'][1] == 'sliding'\n"
+        "print(json.dumps(t))\n")
+    scene = stun(trace={"hz": 50})
+    run = subprocess.run([sys.executable, "-c", code, json.dumps(scene)], capture_output=True,
+                         text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    _, out, _ = cli(scene)
+    assert json.loads(run.stdout) == json.loads(out)["trace"]["0"]
