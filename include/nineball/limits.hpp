@@ -47,6 +47,13 @@ constexpr double kMaxSimTime = 3600.0;
 constexpr long kMaxEvents = 2'000'000;
 constexpr long kMaxPieces = 20'000'000;
 
+/// A trace's rate (samples per second per ball) and its size in all (balls x instants): at the
+/// bound a result is 196 MB of JSON (91 MB compact) and its run peaks under 1 GB of memory,
+/// whatever the run; a run that would need more keeps its earliest instants.
+constexpr double kMinTraceHz = 1.0;
+constexpr double kMaxTraceHz = 10000.0;
+constexpr std::size_t kMaxTraceSamples = 1'000'000;
+
 /// Input sizes: balls in a scene, bytes in a document, characters of a key quoted in a message.
 constexpr std::size_t kMaxBalls = 200;
 constexpr std::size_t kMaxInputBytes = 4u << 20;

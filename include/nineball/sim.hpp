@@ -8,6 +8,7 @@
 #include "nineball/params.hpp"
 #include "nineball/shot.hpp"
 #include "nineball/table.hpp"
+#include "nineball/trace.hpp"
 
 namespace nineball {
 
@@ -18,7 +19,8 @@ struct Scene {
   StepParams step;
   std::vector<BallState> balls;
   std::optional<Shot> shot;
-  std::optional<double> until;  ///< seconds; empty means "until rest"
+  std::optional<double> until;        ///< seconds; empty means "until rest"
+  std::optional<TraceRequest> trace;  ///< sample every ball's motion into SimResult::trace
 };
 
 /// How a run ended. Rest and Until are complete; MaxTime and Budget are partial results.
@@ -42,6 +44,7 @@ struct SimResult {
   std::vector<BallState> balls;
   std::vector<Event> events;
   SimEnd end = SimEnd::Rest;
+  std::optional<Trace> trace;  ///< when the scene asked for one
 
   /// True when the run stopped before its end (max_time or the work budget).
   bool partial() const { return end == SimEnd::MaxTime || end == SimEnd::Budget; }

@@ -12,6 +12,10 @@
 
 namespace nineball {
 
+namespace physics {
+class ArcLog;
+}
+
 /// The physics of one table: Box2D bodies for balls, cushions and pockets, advanced in fixed
 /// steps. Box2D stays behind this interface; everything here is SI.
 class World {
@@ -36,6 +40,11 @@ class World {
   /// Steps until every ball rests, at most StepParams::max_time; with `stop`, also until it
   /// says, after a step, that what has happened (events()) decides all the caller needs.
   void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {});
+
+  /// Keeps every arc each ball follows from here on, for a trace (call before addBall).
+  void logArcs();
+  /// The arcs kept since logArcs(), or null.
+  const physics::ArcLog* arcLog() const;
 
   bool atRest() const;
   /// True once the run has spent its work budget (limits::kMaxEvents events, kMaxPieces

@@ -7,8 +7,10 @@
 
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
+#include "app/shot_svg.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
+#include "nineball/atomic_file.hpp"
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 
@@ -21,10 +23,25 @@ bool finite(Vec2 v) {
 
 }  // namespace
 
+std::string traceTruncatedNote(const Trace& trace) {
+  double last = 0.0;
+  if (!trace.balls.empty() && trace.balls.front().size() > 0) last = trace.balls.front().t.back();
+  return "the trace ends at t = " + std::to_string(last) + " s: the run needed more than " +
+         std::to_string(limits::kMaxTraceSamples) + " samples (balls x instants)";
+}
+
 bool allFinite(const SimResult& r) {
   bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
   for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
   for (const Event& e : r.events) ok = ok && std::isfinite(e.t) && finite(e.va) && finite(e.vb);
+  if (!r.trace) return ok;
+  for (const BallTrace& b : r.trace->balls) {
+    for (std::size_t i = 0; i < b.size() && ok; ++i) {
+      ok = std::isfinite(b.t[i]) && finite(Vec2{b.x[i], b.y[i]}) &&
+           finite(Vec2{b.vx[i], b.vy[i]}) && std::isfinite(b.w[i].x) && std::isfinite(b.w[i].y) &&
+           std::isfinite(b.w[i].z);
+    }
+  }
   return ok;
 }
 
@@ -36,14 +53,27 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
   sim->add_flag("--jsonl", options.jsonl,
                 "One scene per line in, one result per line out (a bad line gets an error "
                 "object on its line and the rest go on)");
+  sim->add_option("--svg", options.svg_path,
+                  "Also draw the shot (table, paths, events) into this SVG file");
   return sim;
 }
 
 int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  std::string why;
+  if (options.svg_path) {
+    if (options.jsonl) {
+      err << "nineball sim: --svg draws one scene and cannot be used with --jsonl\n";
+      return kExitBadInput;
+    }
+    // Refused before the run, not after it.
+    if (!canWriteFile(*options.svg_path, why)) {
+      err << "nineball sim: --svg: " << why << '\n';
+      return kExitBadInput;
+    }
+  }
   if (options.jsonl) return runSimLines(options, in, out, err);
   const std::string shown = shownPath(options.scene_path);
   const std::string prefix = "nineball sim: " + shown + ": ";
-  std::string why;
   const auto text = readInput(options.scene_path, in, why);
   if (!text) {
     err << prefix << why << '\n';
@@ -57,13 +87,38 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
   const Scene& scene = std::get<Scene>(parsed);
   logger("app")->debug("{}: {} balls, {}", shown, scene.balls.size(),
                        scene.until ? "for " + std::to_string(*scene.until) + " s" : "until rest");
-  const SimResult result = simulate(scene);
+  SimResult result;
+  if (options.svg_path) {
+    // The picture traces at its own rate; the printed result keeps the scene's own trace.
+    Scene traced = scene;
+    traced.trace = TraceRequest{kShotSvgHz, false};
+    const SimResult pictured = simulate(traced);
+    if (!allFinite(pictured)) {
+      err << prefix << "internal error: the simulation produced a non-finite number\n";
+      return kExitInternal;
+    }
+    if (!writeFileAtomically(*options.svg_path, shotSvg(scene, pictured), why)) {
+      err << "nineball sim: --svg: " << why << '\n';
+      return kExitBadInput;
+    }
+    if (scene.trace) {
+      result = simulate(scene);
+    } else {
+      result = pictured;
+      result.trace.reset();
+    }
+  } else {
+    result = simulate(scene);
+  }
   if (!allFinite(result)) {
     err << prefix << "internal error: the simulation produced a non-finite number\n";
     return kExitInternal;
   }
   out << io::resultToJson(result).dump(2) << '\n' << std::flush;
   if (!out) return kExitInternal;
+  if (result.trace && result.trace->truncated) {
+    err << prefix << traceTruncatedNote(*result.trace) << '\n';
+  }
   if (result.end == SimEnd::MaxTime) {
     err << prefix << "stopped at step.max_time (" << scene.step.max_time
         << " s of simulated time) with balls still moving: the result is partial\n";

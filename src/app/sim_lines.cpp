@@ -26,11 +26,12 @@ struct LineOutcome {
   nlohmann::ordered_json json;
   bool refused = false;
   bool partial = false;
+  std::string note;  ///< a line for stderr about a result that stands (a trace cut short)
 };
 
 LineOutcome simulateLine(const std::string& line, long number) {
   auto refuse = [&](const std::string& why) {
-    return LineOutcome{{{"error", why}, {"line", number}}, true, false};
+    return LineOutcome{{{"error", why}, {"line", number}}, true, false, {}};
   };
   if (line.size() > limits::kMaxInputBytes) return refuse(inputTooLarge());
   auto parsed = io::parseScene(line);
@@ -39,7 +40,9 @@ LineOutcome simulateLine(const std::string& line, long number) {
   if (!allFinite(result)) {
     return refuse("internal error: the simulation produced a non-finite number");
   }
-  return {io::resultToJson(result), false, result.partial()};
+  std::string note;
+  if (result.trace && result.trace->truncated) note = traceTruncatedNote(*result.trace);
+  return {io::resultToJson(result), false, result.partial(), note};
 }
 
 }  // namespace
@@ -64,6 +67,7 @@ int runSimLines(const SimOptions& options, std::istream& in, std::ostream& out, 
       ++refused;
       err << prefix << "line " << number << ": " << o.json["error"].get<std::string>() << '\n';
     } else {
+      if (!o.note.empty()) err << prefix << "line " << number << ": " << o.note << '\n';
       ++results;
       partial += o.partial ? 1 : 0;
     }

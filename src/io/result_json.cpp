@@ -57,6 +57,26 @@ ordered_json eventToJson(const Event& event) {
   return j;
 }
 
+ordered_json traceToJson(const Trace& trace) {
+  ordered_json j = ordered_json::object();
+  for (const BallTrace& b : trace.balls) {
+    ordered_json w = ordered_json::array();
+    for (const Vec3& v : b.w) w.push_back(ordered_json::array({v.x, v.y, v.z}));
+    ordered_json phase = ordered_json::array();
+    for (TracePhase p : b.phase) phase.push_back(tracePhaseName(p));
+    ordered_json one;
+    one["t"] = b.t;
+    one["x"] = b.x;
+    one["y"] = b.y;
+    one["vx"] = b.vx;
+    one["vy"] = b.vy;
+    one["w"] = std::move(w);
+    one["phase"] = std::move(phase);
+    j[std::to_string(b.id)] = std::move(one);
+  }
+  return j;
+}
+
 ordered_json resultToJson(const SimResult& result) {
   ordered_json j;
   j["time"] = result.time;
@@ -68,6 +88,10 @@ ordered_json resultToJson(const SimResult& result) {
   for (const BallState& b : result.balls) j["balls"].push_back(ballToJson(b));
   j["events"] = ordered_json::array();
   for (const Event& e : result.events) j["events"].push_back(eventToJson(e));
+  if (result.trace) {
+    j["trace"] = traceToJson(*result.trace);
+    j["trace_truncated"] = result.trace->truncated;
+  }
   return j;
 }
 

@@ -7,8 +7,12 @@
 namespace nineball::io {
 
 /// The result document of `nineball sim` (design.md, "Headless interface"), keys in the
-/// design's order: {"time", "steps", "wall_ms", "balls", "events"}.
+/// design's order: {"time", "steps", "wall_ms", "end", "partial", "balls", "events"}, then
+/// {"trace", "trace_truncated"} when the scene asked for a trace.
 nlohmann::ordered_json resultToJson(const SimResult& result);
+
+/// {"<id>": {"t": [...], "x", "y", "vx", "vy", "w": [[wx, wy, wz], ...], "phase": [...]}, ...}.
+nlohmann::ordered_json traceToJson(const Trace& trace);
 
 /// {"id", "x", "y", "vx", "vy", "pocket": null | "top-left" | ...}.
 nlohmann::ordered_json ballToJson(const BallState& ball);

@@ -327,6 +327,39 @@ std::optional<double> parseUntil(const json& v) {
   return number(v, "until", Bounds::positive(kMaxUntil));
 }
 
+TraceRequest parseTrace(const json& v) {
+  const std::string path = "trace";
+  expectObject(v, path);
+  allowOnly(v, path, {"hz", "events_only"});
+  const json* hz = optional(v, "hz");
+  const json* events_only = optional(v, "events_only");
+  if (hz && events_only) {
+    refuse(path, "give either \"hz\" or \"events_only\", not both");
+  }
+  TraceRequest t;
+  if (hz) {
+    t.hz = number(*hz, "trace.hz");
+    if (!(t.hz >= limits::kMinTraceHz && t.hz <= limits::kMaxTraceHz)) {
+      refuse("trace.hz", "must be >= " + formatNumber(limits::kMinTraceHz) +
+                             " and <= " + formatNumber(limits::kMaxTraceHz) +
+                             " samples per second, found " + describe(*hz) +
+                             " (a trace holds at most " + std::to_string(limits::kMaxTraceSamples) +
+                             " samples, balls x instants, and ends early beyond that)");
+    }
+    return t;
+  }
+  if (events_only) {
+    if (!events_only->is_boolean() || !events_only->get<bool>()) {
+      refuse("trace.events_only",
+             "expected true (for samples at a rate give \"hz\" instead), found " +
+                 describe(*events_only));
+    }
+    t.events_only = true;
+    return t;
+  }
+  refuse(path, "needs \"hz\" (samples per second) or \"events_only\": true");
+}
+
 }  // namespace
 
 StepParams parseStep(const json& v) {
@@ -406,7 +439,7 @@ void refuseWhatNothingReads(const json& doc, const Scene& scene) {
 
 Scene parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
-  allowOnly(doc, "", {"table", "physics", "balls", "shot", "until", "step"});
+  allowOnly(doc, "", {"table", "physics", "balls", "shot", "until", "step", "trace"});
   Scene scene;
   if (const json* p = optional(doc, "table")) scene.table = parseTable(*p);
   if (const json* p = optional(doc, "physics")) scene.physics = parsePhysics(*p);
@@ -414,6 +447,7 @@ Scene parseDocument(const json& doc) {
   if (const json* p = optional(doc, "shot")) scene.shot = parseShot(*p, scene.balls, scene.physics);
   if (const json* p = optional(doc, "until")) scene.until = parseUntil(*p);
   if (const json* p = optional(doc, "step")) scene.step = parseStep(*p);
+  if (const json* p = optional(doc, "trace")) scene.trace = parseTrace(*p);
   refuseWhatNothingReads(doc, scene);
   if (auto problem = validateScene(scene)) throw ParseError{*problem};
   return scene;

@@ -8,6 +8,7 @@
 
 #include "nineball/limits.hpp"
 #include "nineball/world.hpp"
+#include "physics/arc_log.hpp"
 #include "reference/reference_engine.hpp"
 
 namespace nineball {
@@ -143,6 +144,7 @@ SimEnd simEnd(bool until, bool exhausted, bool at_rest) {
 SimResult simulate(const Scene& scene) {
   if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
   World world(scene.table, scene.physics, scene.step);
+  if (scene.trace) world.logArcs();
   for (const BallState& b : scene.balls) world.addBall(b);
   if (scene.shot) world.strike(kCueBall, *scene.shot);
 
@@ -166,6 +168,10 @@ SimResult simulate(const Scene& scene) {
     rest.type = EventType::AllAtRest;
     rest.t = 0.0;
     result.events.push_back(rest);
+  }
+  if (scene.trace) {
+    result.trace = physics::sampleTrace(*world.arcLog(), result.events, result.time, *scene.trace,
+                                        scene.physics);
   }
   return result;
 }

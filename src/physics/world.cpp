@@ -12,6 +12,7 @@
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
+#include "physics/arc_log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/box2d_clock.hpp"
 #include "physics/contact_recorder.hpp"
@@ -76,6 +77,7 @@ struct World::Impl {
   long resolved = 0;           // events resolved, for the work budget
   bool exhausted = false;      // the work budget ran out: nothing more moves
   bool contacts_stale = true;  // bodies added or moved by hand: sensors not yet updated
+  std::unique_ptr<physics::ArcLog> arc_log;  // every arc followed, when a trace is asked for
 
   Impl(const TableDef& t, const PhysicsParams& p, const StepParams& s)
       : table(buildTable(t, p.ball_radius)),
@@ -132,7 +134,14 @@ struct World::Impl {
     return s;
   }
 
-  void restart(Ball& b, const Kinematics& s) { b.arc = physics::beginArc(time, s, phys); }
+  void restart(Ball& b, const Kinematics& s) {
+    b.arc = physics::beginArc(time, s, phys);
+    logArc(b);
+  }
+
+  void logArc(const Ball& b) {
+    if (arc_log) arc_log->record(static_cast<std::size_t>(&b - balls.data()), b.arc);
+  }
 
   void createBody(std::size_t index, Vec2 pos) {
     Ball& b = balls[index];
@@ -408,6 +417,7 @@ struct World::Impl {
     b.pocket = pocket;
     world.DestroyBody(b.body);
     b.body = nullptr;
+    if (arc_log) arc_log->pocket(i, time, b.pos);
     Event e;
     e.type = EventType::Pocket;
     e.t = time;
@@ -458,6 +468,7 @@ struct World::Impl {
       case NextEvent::Kind::PhaseEnd:
         balls[e.i].arc = physics::nextArc(balls[e.i].arc, phys);
         balls[e.i].arc.start.p = position(balls[e.i]);
+        logArc(balls[e.i]);
         return;
       case NextEvent::Kind::Ball:
         ballContact(e.i, e.j);
@@ -543,10 +554,13 @@ void World::addBall(const BallState& ball) {
   b.arc = physics::beginArc(w.time, {ball.pos, ball.vel, ball.w}, w.phys);
   w.balls.push_back(b);
   w.recorder.resize(w.balls.size());
+  if (w.arc_log) w.arc_log->addBall(ball.id);
   if (ball.pocket) {
     w.balls.back().pocket = ball.pocket;
+    if (w.arc_log) w.arc_log->pocket(w.balls.size() - 1, w.time, ball.pos);
     return;
   }
+  w.logArc(w.balls.back());
   w.createBody(w.balls.size() - 1, ball.pos);
 }
 
@@ -616,6 +630,14 @@ void World::runUntilRest(const std::function<bool(const std::vector<Event>&)>& s
     logger("physics")->info("balls still moving after {} s of simulated time; stopped",
                             w.sp.max_time);
   }
+}
+
+void World::logArcs() {
+  impl_->arc_log = std::make_unique<physics::ArcLog>();
+}
+
+const physics::ArcLog* World::arcLog() const {
+  return impl_->arc_log.get();
 }
 
 bool World::exhausted() const {

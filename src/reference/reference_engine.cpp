@@ -7,6 +7,7 @@
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
+#include "physics/arc_log.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/models/ball_contact.hpp"
 #include "physics/models/cue.hpp"
@@ -40,6 +41,13 @@ class Run {
       ball.on_table = !b.pocket;
       ball.arc = physics::beginArc(0.0, {b.pos, b.vel, b.w}, p_);
       balls_.push_back(ball);
+      if (!scene.trace) continue;
+      log_.addBall(b.id);
+      if (b.pocket) {
+        log_.pocket(balls_.size() - 1, 0.0, b.pos);
+      } else {
+        logArc(balls_.back());
+      }
     }
   }
 
@@ -55,6 +63,7 @@ class Run {
       }
       const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
       b.arc = physics::beginArc(0.0, {b.arc.start.p, s.v, s.w}, p_);
+      logArc(b);
     }
   }
 
@@ -113,11 +122,21 @@ class Run {
   }
 
   double time() const { return t_; }
+  const physics::ArcLog& arcLog() const { return log_; }
 
  private:
   Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, t_, p_); }
 
-  void restart(Ball& b, const Kinematics& k) { b.arc = physics::beginArc(t_, k, p_); }
+  void restart(Ball& b, const Kinematics& k) {
+    b.arc = physics::beginArc(t_, k, p_);
+    logArc(b);
+  }
+
+  // Only balls the log knows (a trace was asked for) are logged.
+  void logArc(const Ball& b) {
+    const auto i = static_cast<std::size_t>(&b - balls_.data());
+    if (i < log_.ids().size()) log_.record(i, b.arc);
+  }
 
   void pushBallEvent(const Ball& a, const Ball& b, Vec2 va, Vec2 vb) {
     Event ev;
@@ -171,6 +190,7 @@ class Run {
         return;
       case NextEvent::Kind::PhaseEnd:
         a.arc = physics::nextArc(a.arc, p_);
+        logArc(a);
         return;
       case NextEvent::Kind::Ball: {
         Ball& b = balls_[e.j];
@@ -218,6 +238,7 @@ class Run {
         a.state.pos = now(a).p;
         a.state.pocket = e.pocket;
         a.on_table = false;
+        if (e.i < log_.ids().size()) log_.pocket(e.i, t_, a.state.pos);
         Event ev;
         ev.type = EventType::Pocket;
         ev.t = t_;
@@ -235,6 +256,7 @@ class Run {
   physics::JamCounter jams_;
   std::vector<Ball> balls_;
   std::vector<Event> events_;
+  physics::ArcLog log_;  // filled only when the scene asks for a trace
   long resolved_ = 0;
   bool exhausted_ = false;
   double t_ = 0.0;
@@ -261,6 +283,8 @@ SimResult simulate(const Scene& scene) {
     rest.type = EventType::AllAtRest;
     r.events.push_back(rest);
   }
+  if (scene.trace)
+    r.trace = physics::sampleTrace(run.arcLog(), r.events, r.time, *scene.trace, scene.physics);
   return r;
 }
 

@@ -1,52 +1,23 @@
 #pragma once
 
-#include <cstdint>
+#include "nineball/colours.hpp"
 
+// The colours live in nineball/colours.hpp, shared with the headless pictures; the painters
+// keep reading them by their render:: names.
 namespace nineball::render {
 
-/// A colour without SFML, shared by the painters and the pixel test.
-struct Rgb {
-  std::uint8_t r = 0;
-  std::uint8_t g = 0;
-  std::uint8_t b = 0;
-};
-
-/// The cloth (a classic green, far enough from the 6 ball's to tell them apart).
-constexpr Rgb kCloth{46, 139, 87};
-constexpr Rgb kCushion{28, 104, 62};
-constexpr Rgb kWood{96, 56, 30};
-constexpr Rgb kPocket{12, 12, 12};
-constexpr Rgb kDiamond{236, 228, 206};
-constexpr Rgb kBackground{22, 26, 30};
-constexpr Rgb kCueBallColour{246, 244, 232};
-constexpr Rgb kNumberDisc{250, 250, 245};
-
-/// The standard colour of a ball: 0 the cue ball; 1 yellow, 2 blue, 3 red, 4 purple, 5 orange,
-/// 6 green, 7 maroon, 8 black; 9-15 the stripes of 1-7 (drawn on white).
-inline Rgb ballColour(int id) {
-  constexpr Rgb kSolids[8] = {
-      {250, 196, 16},  // 1 yellow
-      {24, 64, 196},   // 2 blue
-      {214, 30, 36},   // 3 red
-      {104, 44, 150},  // 4 purple
-      {246, 118, 20},  // 5 orange
-      {0, 96, 44},     // 6 green
-      {128, 24, 36},   // 7 maroon
-      {18, 18, 18},    // 8 black
-  };
-  if (id <= 0) return kCueBallColour;
-  if (id <= 8) return kSolids[id - 1];
-  return kSolids[(id - 9) % 7];
-}
-
-/// Balls 9-15 are stripes: a coloured band on a white ball.
-inline bool isStripe(int id) {
-  return id >= 9;
-}
-
-/// The stripe's half height as a fraction of the radius.
-constexpr double kStripeHalfHeight = 0.55;
-/// The white disc that carries the number, as a fraction of the radius.
-constexpr double kNumberDiscRadius = 0.5;
+using nineball::ballColour;
+using nineball::isStripe;
+using nineball::kBackground;
+using nineball::kCloth;
+using nineball::kCueBallColour;
+using nineball::kCushion;
+using nineball::kDiamond;
+using nineball::kNumberDisc;
+using nineball::kNumberDiscRadius;
+using nineball::kPocket;
+using nineball::kStripeHalfHeight;
+using nineball::kWood;
+using nineball::Rgb;
 
 }  // namespace nineball::render

@@ -167,7 +167,24 @@ TEST(FuzzCli, EveryInputEndsWellOrIsRefusedCleanly) {
   std::uint64_t rng = 20261123;
   int ok = 0, partial = 0, refused = 0, off_table = 0;
   for (int i = 0; i < kScenes; ++i) {
-    const json scene = generate(rng);
+    json scene = generate(rng);
+    // A trace on one scene in three (its own numbers, so that the scenes stay the same): a
+    // rate, the events alone, or a bad one.
+    std::uint64_t trace_rng = 0x7ace + static_cast<std::uint64_t>(i);
+    switch (i % 3 == 1 ? splitmix64(trace_rng) % 8 : 8) {
+      case 0:
+        scene["trace"] = {{"events_only", true}};
+        break;
+      case 1:
+        scene["trace"] = {{"hz", 1e9}};
+        break;
+      case 8:
+        break;
+      default:
+        // Up to a tenth of the top rate: 20 s of many balls at 10 kHz prints hundreds of MB.
+        scene["trace"] = {{"hz", edgy(trace_rng, limits::kMinTraceHz, limits::kMaxTraceHz / 10)}};
+        break;
+    }
     std::string text = scene.dump();
     if (i % 50 == 7) text = text.substr(0, text.size() / 2);          // cut short
     if (i % 50 == 19) text += std::string(1, '\0') + "{\"junk\":1}";  // data after a NUL
@@ -199,6 +216,15 @@ TEST(FuzzCli, EveryInputEndsWellOrIsRefusedCleanly) {
       def.side_pocket = scene["table"]["side_pocket"];
     }
     const TableGeometry table = buildTable(def, r_ball);
+    if (scene.contains("trace")) {
+      ASSERT_TRUE(out.contains("trace")) << where;
+      for (const auto& [id, t] : out["trace"].items()) {
+        for (const char* key : {"t", "x", "y", "vx", "vy"}) {
+          ASSERT_EQ(t[key].size(), t["t"].size()) << where;
+          for (const json& v : t[key]) ASSERT_TRUE(v.is_number()) << id << " " << key << where;
+        }
+      }
+    }
     for (const json& b : out["balls"]) {
       ASSERT_TRUE(b["x"].is_number() && b["y"].is_number()) << where;
       if (!b["pocket"].is_null()) continue;

@@ -3,10 +3,14 @@
 # installed tree: only the two programs in bin, the icon, desktop entry and metainfo where
 # desktops look, a headless command that runs, the game launcher that finds nineball-game
 # beside it, and resources found in the prefix, not in the source tree the build came from.
-# Usage: installed_tree_test.sh CMAKE BUILD_DIR
+# With PYTHON and SITE (the Python module built), also the module in PREFIX/SITE, imported
+# from there.
+# Usage: installed_tree_test.sh CMAKE BUILD_DIR [PYTHON SITE]
 set -euo pipefail
 cmake=$1
 build=$2
+python=${3:-}
+site=${4:-}
 export LC_ALL=C
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/nineball_install_XXXXXX")
@@ -25,7 +29,18 @@ if ! "$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log" 2>&1; th
 fi
 
 top=$(cd "$prefix" && echo *)
-[[ $top == "bin share" ]] || fail "the prefix holds: $top (expected bin and share only)"
+if [[ -n $python ]]; then
+  [[ $top == "bin lib share" ]] || fail "the prefix holds: $top (expected bin, lib and share)"
+  modules=$(cd "$prefix/lib" && find . -type f | sort)
+  [[ $modules == ./${site#lib/}/nineball.*.so ]] ||
+    fail "lib holds: $modules (expected the Python module alone, in $site)"
+  out=$(PYTHONPATH="$prefix/$site" "$python" -c 'import nineball
+r = nineball.simulate({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0, "speed": 1}})
+print(nineball.__file__, r["end"])') || fail "the installed Python module did not run"
+  [[ $out == "$prefix/$site/nineball."*".so rest" ]] || fail "the Python module said: $out"
+else
+  [[ $top == "bin share" ]] || fail "the prefix holds: $top (expected bin and share only)"
+fi
 programs=$(cd "$prefix/bin" && echo *)
 [[ $programs == "nineball nineball-game" ]] ||
   fail "bin holds: $programs (expected nineball and nineball-game only: no tests, no benchmarks)"

@@ -1,0 +1,162 @@
+// The Python module `nineball`: a thin skin over the same scene parser, checks, engines and
+// result format as `nineball sim`. A scene goes dict -> JSON text -> the parser, so that a bad
+// one is refused with the command line's very message; the result comes back as the same
+// structure, with traces as numpy arrays when numpy is there.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "game/parallel_map.hpp"
+#include "io/result_json.hpp"
+#include "io/scene_json.hpp"
+#include "nineball/sim.hpp"
+
+namespace py = pybind11;
+
+namespace nineball::python {
+namespace {
+
+// JSON has no numpy scalars or arrays: they go as the numbers and lists they hold.
+py::object plain(py::handle o) {
+  if (py::hasattr(o, "tolist")) return o.attr("tolist")();
+  throw py::type_error(
+      "a scene holds only dicts, lists, strings, numbers, booleans and None, "
+      "found " +
+      py::str(py::type::of(o)).cast<std::string>());
+}
+
+// The scene as the command line would read it: a str is the JSON text itself.
+std::string sceneText(py::handle scene) {
+  if (py::isinstance<py::str>(scene)) return scene.cast<std::string>();
+  // Looked up on each call: a static Python object would outlive the interpreter.
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  return dumps(scene, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
+}
+
+Scene parse(py::handle scene, const std::string& where) {
+  io::SceneResult parsed = io::parseScene(sceneText(scene));
+  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    throw py::value_error(where + refused->message);
+  }
+  return std::get<Scene>(std::move(parsed));
+}
+
+py::object numpyOrNothing() {
+  try {
+    return py::module_::import("numpy");
+  } catch (const py::error_already_set&) {
+    return py::none();
+  }
+}
+
+py::object column(const std::vector<double>& v, bool arrays) {
+  if (!arrays) return py::cast(v);
+  return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+py::dict traceToPython(const Trace& trace) {
+  const py::object numpy = numpyOrNothing();
+  const bool arrays = !numpy.is_none();
+  py::dict out;
+  for (const BallTrace& b : trace.balls) {
+    py::dict one;
+    one["t"] = column(b.t, arrays);
+    one["x"] = column(b.x, arrays);
+    one["y"] = column(b.y, arrays);
+    one["vx"] = column(b.vx, arrays);
+    one["vy"] = column(b.vy, arrays);
+    py::list phase;
+    for (TracePhase p : b.phase) phase.append(tracePhaseName(p));
+    if (arrays) {
+      py::array_t<double> w({static_cast<py::ssize_t>(b.size()), py::ssize_t{3}});
+      auto cells = w.mutable_unchecked<2>();
+      for (std::size_t i = 0; i < b.size(); ++i) {
+        const auto row = static_cast<py::ssize_t>(i);
+        cells(row, 0) = b.w[i].x;
+        cells(row, 1) = b.w[i].y;
+        cells(row, 2) = b.w[i].z;
+      }
+      one["w"] = w;
+      one["phase"] = numpy.attr("array")(phase);
+    } else {
+      py::list rows;
+      for (const Vec3& v : b.w) {
+        py::list row;
+        row.append(v.x);
+        row.append(v.y);
+        row.append(v.z);
+        rows.append(row);
+      }
+      one["w"] = rows;
+      one["phase"] = phase;
+    }
+    out[py::str(std::to_string(b.id))] = one;
+  }
+  return out;
+}
+
+// The result document of `nineball sim`, as Python objects; the trace (which can be large)
+// goes straight from the samples, not through JSON text.
+py::object resultToPython(SimResult result) {
+  const py::object loads = py::module_::import("json").attr("loads");
+  std::optional<Trace> trace = std::move(result.trace);
+  result.trace.reset();
+  py::object doc = loads(io::resultToJson(result).dump());
+  if (trace) {
+    doc["trace"] = traceToPython(*trace);
+    doc["trace_truncated"] = trace->truncated;
+  }
+  return doc;
+}
+
+py::object simulateOne(py::handle scene) {
+  const Scene s = parse(scene, "");
+  SimResult r;
+  {
+    const py::gil_scoped_release unlocked;
+    r = simulate(s);
+  }
+  return resultToPython(std::move(r));
+}
+
+py::list simulateMany(const py::iterable& scenes, int threads) {
+  if (threads < 0) throw py::value_error("threads: must be >= 0 (0: one per core)");
+  std::vector<Scene> parsed;
+  std::size_t i = 0;
+  for (py::handle scene : scenes) {
+    parsed.push_back(parse(scene, "scenes[" + std::to_string(i) + "]: "));
+    ++i;
+  }
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<SimResult> results(parsed.size());
+  {
+    const py::gil_scoped_release unlocked;
+    ai::parallelFor(parsed.size(), threads > 0 ? threads : cores,
+                    [&](std::size_t k) { results[k] = simulate(parsed[k]); });
+  }
+  py::list out;
+  for (SimResult& r : results) out.append(resultToPython(std::move(r)));
+  return out;
+}
+
+}  // namespace
+}  // namespace nineball::python
+
+PYBIND11_MODULE(nineball, m) {
+  m.doc() =
+      "nineball: the pool table's physics, headless. simulate(scene) takes the scene of "
+      "`nineball sim` (a dict, or its JSON text) and returns the result as the command prints "
+      "it; traces come as numpy arrays when numpy is installed. A bad scene raises ValueError "
+      "with the command line's message.";
+  m.attr("__version__") = NINEBALL_VERSION;
+  m.def("simulate", &nineball::python::simulateOne, py::arg("scene"),
+        "Simulates one scene (a dict or JSON text) and returns the result dict.");
+  m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
+        "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "
+        "them on `threads` threads (0: one per core) with the GIL released; the results in "
+        "order.");
+}

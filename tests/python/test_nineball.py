@@ -1,0 +1,173 @@
+"""The Python module against the command line: same results, same refusals."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import nineball
+
+SOURCE = os.environ.get("NINEBALL_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BINARY = os.path.join(os.path.dirname(nineball.__file__), "..", "nineball")
+
+
+def stun(speed=2.0, engine="box2d", trace=None):
+    scene = {
+        "balls": [{"id": 0, "x": -0.6, "y": 0.0}, {"id": 1, "x": 0.0, "y": 0.03}],
+        "shot": {"heading_deg": 0, "speed": speed},
+        "step": {"engine": engine},
+    }
+    if trace is not None:
+        scene["trace"] = trace
+    return scene
+
+
+def cli(scene):
+    """What `nineball sim -` prints and says for the scene."""
+    run = subprocess.run([BINARY, "sim", "-"], input=json.dumps(scene), capture_output=True,
+                         text=True, check=False)
+    return run.returncode, run.stdout, run.stderr
+
+
+def without_wall_time(doc):
+    doc = dict(doc)
+    doc.pop("wall_ms")
+    return doc
+
+
+def test_simulate_returns_what_the_command_line_prints():
+    scene = stun()
+    status, out, _ = cli(scene)
+    assert status == 0
+    assert without_wall_time(nineball.simulate(scene)) == without_wall_time(json.loads(out))
+    # JSON text is a scene too.
+    assert without_wall_time(nineball.simulate(json.dumps(scene))) == without_wall_time(
+        json.loads(out))
+
+
+def test_traces_come_as_numpy_arrays_matching_the_json():
+    scene = stun(trace={"hz": 100})
+    r = nineball.simulate(scene)
+    _, out, _ = cli(scene)
+    expected = json.loads(out)["trace"]
+    assert set(r["trace"]) == {"0", "1"}
+    assert r["trace_truncated"] is False
+    for ball, t in r["trace"].items():
+        for key in ("t", "x", "y", "vx", "vy"):
+            assert isinstance(t[key], np.ndarray) and t[key].dtype == np.float64
+            np.testing.assert_array_equal(t[key], expected[ball][key])
+        assert t["w"].shape == (len(t["t"]), 3)
+        np.testing.assert_array_equal(t["w"], expected[ball]["w"])
+        assert list(t["phase"]) == expected[ball]["phase"]
+    assert r["trace"]["0"]["phase"][1] == "sliding"
+
+
+@pytest.mark.parametrize("scene, message", [
+    ({"balls": [{"id": 0, "x": "left", "y": 0}]}, "balls[0].x: expected a number"),
+    ({"balls": [], "colour": 1}, "colour: unknown field"),
+    (stun(trace={"hz": 0}), "trace.hz: must be >= 1"),
+    (stun(trace={"hz": 5, "events_only": True}), "trace: give either"),
+])
+def test_bad_scenes_raise_value_error_with_the_command_lines_message(scene, message):
+    with pytest.raises(ValueError) as refused:
+        nineball.simulate(scene)
+    status, out, err = cli(scene)
+    assert status == 2 and out == ""
+    assert str(refused.value).startswith(message)
+    assert err.strip() == "nineball sim: <stdin>: " + str(refused.value)
+
+
+def test_numpy_numbers_are_accepted_in_a_scene():
+    scene = stun()
+    scene["shot"]["speed"] = np.float32(2.0)
+    scene["balls"][1]["y"] = np.array([0.03])[0]
+    assert nineball.simulate(scene)["events"][0]["type"] == "ball"
+    with pytest.raises(TypeError):
+        nineball.simulate({"balls": [{"id": 0, "x": object(), "y": 0}]})
+
+
+def test_simulate_many_gives_each_result_in_order():
+    scenes = [stun(speed=s, engine=e) for s in (1.0, 2.0, 3.0) for e in ("box2d", "reference")]
+    many = nineball.simulate_many(scenes)
+    assert len(many) == len(scenes)
+    for scene, r in zip(scenes, many):
+        assert without_wall_time(r) == without_wall_time(nineball.simulate(scene))
+    assert nineball.simulate_many([], threads=1) == []
+
+
+def test_simulate_many_refuses_before_simulating_and_names_the_scene():
+    with pytest.raises(ValueError, match=r"^scenes\[1\]: balls: required field missing"):
+        nineball.simulate_many([stun(), {}])
+    with pytest.raises(ValueError, match="threads"):
+        nineball.simulate_many([stun()], threads=-1)
+
+
+def test_the_example_in_the_readme_runs(tmp_path, monkeypatch):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    with open(os.path.join(SOURCE, "README.md")) as f:
+        readme = f.read()
+    example = readme.split("```python\n", 1)[1].split("```", 1)[0]
+    os.symlink(os.path.join(SOURCE, "docs"), tmp_path / "docs")
+    monkeypatch.chdir(tmp_path)
+    exec(compile(example, "README.md", "exec"), {})
+    assert (tmp_path / "shot.png").stat().st_size > 1000
+
+
+def test_simulate_many_releases_the_gil():
+    import threading
+    import time
+
+    # Balls running to and fro between the short rails without friction for 100 s: long in
+    # C++, and handed over as JSON text so that no Python code runs while they are read.
+    scene = {"physics": {"preset": "paper", "cloth": "friction", "rolling_friction": 0.0,
+                         "ball_restitution": 1.0, "cushion_restitution": 1.0},
+             "balls": [{"id": i, "x": 0.1 * i, "y": -0.4 + 0.2 * i, "vx": 5.0} for i in range(5)],
+             "until": 100}
+    scenes = [json.dumps(scene)] * 3
+    done = threading.Event()
+
+    def count_until(deadline):
+        n = 0
+        while not done.is_set() and time.perf_counter() < deadline:
+            n += 1
+        return n
+
+    rate = count_until(time.perf_counter() + 0.05) / 0.05
+    # One simulation thread, so that a core is left for this one to count on.
+    worker = threading.Thread(target=lambda: (nineball.simulate_many(scenes, threads=1), done.set()))
+    start = time.perf_counter()
+    worker.start()
+    counted = count_until(start + 60.0)
+    took = time.perf_counter() - start
+    worker.join()
+    # Holding the GIL, the call would stop this loop for all but its first few milliseconds.
+    assert counted > 0.25 * rate * took, (counted, rate, took)
+
+
+def test_simulate_many_gives_the_same_results_on_any_thread_count():
+    with open(os.path.join(SOURCE, "docs", "break.json")) as f:
+        scenes = [json.load(f)] * 6
+    one = [without_wall_time(r) for r in nineball.simulate_many(scenes, threads=1)]
+    two = [without_wall_time(r) for r in nineball.simulate_many(scenes, threads=2)]
+    assert one == two
+    assert all(r == one[0] for r in one)
+
+
+def test_without_numpy_traces_are_lists():
+    code = (
+        "import sys, json\n"
+        "sys.modules['numpy'] = None  # import numpy now fails\n"
+        "import nineball\n"
+        "t = nineball.simulate(json.loads(sys.argv[1]))['trace']['0']\n"
+        "assert all(type(t[k]) is list for k in ('t', 'x', 'y', 'vx', 'vy', 'w', 'phase'))\n"
+        "assert len(t['w'][0]) == 3 and t['phase'][1] == 'sliding'\n"
+        "print(json.dumps(t))\n")
+    scene = stun(trace={"hz": 50})
+    run = subprocess.run([sys.executable, "-c", code, json.dumps(scene)], capture_output=True,
+                         text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    _, out, _ = cli(scene)
+    assert json.loads(run.stdout) == json.loads(out)["trace"]["0"]
