@@ -8,6 +8,9 @@
 #include "app/exit_codes.hpp"
 #include "app/game_command.hpp"
 #include "app/game_launcher.hpp"
+#ifdef NINEBALL_WINDOW
+#include "app/game/shot_png.hpp"
+#endif
 #include "app/match_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/resource_dir.hpp"
@@ -74,6 +77,14 @@ int run(int argc, char** argv) {
     }
   }
   if (resource_dir) return printResourceDir(std::cout, std::cerr);
+#ifdef NINEBALL_WINDOW
+  setShotPngWriter(&writeShotPng);
+#else
+  // Drawing with the game's renderer needs the display libraries: nineball-game has them.
+  if (sim->parsed() && sim_options.png_path && !sim_options.jsonl) {
+    return launchGameWindow(argv, std::cerr);
+  }
+#endif
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
   if (plan->parsed()) return runPlan(plan_options, std::cin, std::cout, std::cerr);

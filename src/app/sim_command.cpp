@@ -45,6 +45,18 @@ bool allFinite(const SimResult& r) {
   return ok;
 }
 
+namespace {
+ShotPngWriter g_png_writer = nullptr;
+}  // namespace
+
+void setShotPngWriter(ShotPngWriter writer) {
+  g_png_writer = writer;
+}
+
+bool haveShotPngWriter() {
+  return g_png_writer != nullptr;
+}
+
 CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
   CLI::App* sim =
       app.add_subcommand("sim", "Simulate a JSON scene and print the result as JSON on stdout");
@@ -55,21 +67,31 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& options) {
                 "object on its line and the rest go on)");
   sim->add_option("--svg", options.svg_path,
                   "Also draw the shot (table, paths, events) into this SVG file");
+  sim->add_option("--png", options.png_path,
+                  "Also draw the shot with the game's renderer into this PNG file (needs a "
+                  "display: xvfb-run -a nineball sim ...)");
   return sim;
 }
 
 int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
   std::string why;
-  if (options.svg_path) {
+  for (const auto& [flag, path] :
+       {std::pair{"--svg", &options.svg_path}, {"--png", &options.png_path}}) {
+    if (!*path) continue;
     if (options.jsonl) {
-      err << "nineball sim: --svg draws one scene and cannot be used with --jsonl\n";
+      err << "nineball sim: " << flag << " draws one scene and cannot be used with --jsonl\n";
       return kExitBadInput;
     }
     // Refused before the run, not after it.
-    if (!canWriteFile(*options.svg_path, why)) {
-      err << "nineball sim: --svg: " << why << '\n';
+    if (!canWriteFile(**path, why)) {
+      err << "nineball sim: " << flag << ": " << why << '\n';
       return kExitBadInput;
     }
+  }
+  if (options.png_path && !g_png_writer) {
+    err << "nineball sim: --png: this program has no renderer (run nineball, which starts "
+           "nineball-game for it)\n";
+    return kExitInternal;
   }
   if (options.jsonl) return runSimLines(options, in, out, err);
   const std::string shown = shownPath(options.scene_path);
@@ -88,7 +110,7 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
   logger("app")->debug("{}: {} balls, {}", shown, scene.balls.size(),
                        scene.until ? "for " + std::to_string(*scene.until) + " s" : "until rest");
   SimResult result;
-  if (options.svg_path) {
+  if (options.svg_path || options.png_path) {
     // The picture traces at its own rate; the printed result keeps the scene's own trace.
     Scene traced = scene;
     traced.trace = TraceRequest{kShotSvgHz, false};
@@ -97,8 +119,13 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
       err << prefix << "internal error: the simulation produced a non-finite number\n";
       return kExitInternal;
     }
-    if (!writeFileAtomically(*options.svg_path, shotSvg(scene, pictured), why)) {
+    if (options.svg_path &&
+        !writeFileAtomically(*options.svg_path, shotSvg(scene, pictured), why)) {
       err << "nineball sim: --svg: " << why << '\n';
+      return kExitBadInput;
+    }
+    if (options.png_path && !g_png_writer(scene, pictured, *options.png_path, why)) {
+      err << "nineball sim: --png: " << why << '\n';
       return kExitBadInput;
     }
     if (scene.trace) {

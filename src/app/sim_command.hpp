@@ -14,7 +14,16 @@ struct SimOptions {
   std::string scene_path;               ///< a file, or "-" for standard input
   bool jsonl = false;                   ///< one scene per line in, one result per line out
   std::optional<std::string> svg_path;  ///< also draw the shot into this SVG file
+  std::optional<std::string> png_path;  ///< also draw the shot with the game's renderer
 };
+
+/// Draws a traced shot into a PNG with the game's renderer; false with `why` when it cannot.
+using ShotPngWriter = bool (*)(const Scene& scene, const SimResult& traced, const std::string& path,
+                               std::string& why);
+/// The renderer `sim --png` uses. The headless `nineball` has none (it loads no display
+/// library) and hands such a command line to nineball-game, which registers one.
+void setShotPngWriter(ShotPngWriter writer);
+bool haveShotPngWriter();
 
 /// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
 bool allFinite(const SimResult& r);
