@@ -49,6 +49,19 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
     case Overlay::PushOutChoice: {
       const std::string name = session.seatName(session.seatToMove());
       hud.overlay_title = "Push-out: " + name + " chooses";
+      const rules::Rack& rack = session.match().rack();
+      if (rack.pendingDecision() == rules::Decision::RerackOrPlayOn) {
+        hud.overlay_title = "Illegal break: " + name + " chooses";
+        hud.overlay_lines = {"Play the table as it lies, or re-rack and break."};
+        hud.button_left = "Play on (S)";
+        hud.button_right = "Re-rack (P)";
+        break;
+      }
+      // Ten-ball: a pot not as called gives the same choice as a push-out.
+      if (!session.rackTurns().empty() &&
+          session.rackTurns().back().kind == TurnInput::Kind::Shot) {
+        hud.overlay_title = "Not as called: " + name + " chooses";
+      }
       if (computer_decides) {
         hud.overlay_lines = {"Thinking: play from here, or pass the shot back?"};
         break;

@@ -311,6 +311,7 @@ bool GameSession::shoot(const TurnInput& given) {
     turn.cue.reset();
   }
   ball_on_at_shot_ = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak();
   try {
     match_->beginShot(turn);
@@ -403,7 +404,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   const auto& events = match_->world().events();
   const rules::ShotSummary summary = game::summarize(events);
   TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
-                               seatName(seatOf(record.verdict.next)));
+                               seatName(seatOf(record.verdict.next)), groups_at_shot_);
   const bool miscue = record.kind != TurnInput::Kind::Decision &&
                       std::any_of(events.begin(), events.end(),
                                   [](const Event& e) { return e.type == EventType::Miscue; });
@@ -424,6 +425,7 @@ void GameSession::decide(bool shoot_now) {
   TurnInput turn;
   turn.kind = TurnInput::Kind::Decision;
   turn.shoot = shoot_now;
+  groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
   afterTurn(record, match_->rack().ballOn());
@@ -444,6 +446,7 @@ void GameSession::playTurn(const TurnInput& turn) {
                         formatSpeed(turn.shot.speed));
   }
   const int ball_on = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
@@ -487,6 +490,9 @@ std::string GameSession::status() const {
     case Phase::Rolling:
       return name + " shoots...";
     case Phase::PushOutChoice:
+      if (match_->rack().pendingDecision() == rules::Decision::RerackOrPlayOn) {
+        return name + ": play on as it lies (S) or re-rack and break (P)?";
+      }
       return name + ": play from here (S) or pass it back (P)?";
     case Phase::GameOver: {
       const auto winner = match_->rack().winner();

@@ -21,7 +21,8 @@ namespace nineball::app {
 enum class Phase {
   Aiming,         ///< the player to move aims (and places the cue ball when in hand)
   Rolling,        ///< a shot is on: the physics runs
-  PushOutChoice,  ///< after a push-out the opponent shoots or passes
+  PushOutChoice,  ///< a decision: after a push-out (or a ten-ball call breach) the player
+                  ///< shoots or passes; after an illegal eight-ball break, plays on or re-racks
   GameOver,       ///< the rack is won; a rematch racks again
 };
 
@@ -129,7 +130,8 @@ class GameSession {
   /// `turn.cue` when in hand (at the current spot if none is given); the aim, gauge and spin
   /// show it. False (and a message) when refused.
   bool shoot(const TurnInput& turn);
-  /// After the opponent's push-out: shoot from there (true) or pass the shot back.
+  /// After the opponent's push-out (or ten-ball call breach): shoot from there (true) or pass
+  /// the shot back. After an illegal eight-ball break: play on (true) or re-rack.
   void decide(bool shoot_now);
   /// Racks again after a game over; the other player breaks.
   void rematch();
@@ -189,7 +191,8 @@ class GameSession {
   bool push_out_ = false;
   std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
   int ball_on_at_shot_ = 0;
-  bool breaking_ = false;  // the shot rolling is the break
+  rules::Groups groups_at_shot_;  // eight-ball: the groups before the turn (its message)
+  bool breaking_ = false;         // the shot rolling is the break
   FixedStepClock clock_;
   ShotSteps shot_;
   std::vector<int> pocketed_;
