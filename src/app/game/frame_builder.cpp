@@ -131,6 +131,19 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   }
 
+  if (session.callRequired() && !computer_turn) {
+    render::CallMark mark;
+    for (const BallState& b : f.balls) {
+      if (b.id == session.callBall() && !b.pocket) mark.ball = b.pos;
+    }
+    if (const auto c = session.call()) {
+      for (const Pocket& p : session.match().world().table().pockets) {
+        if (p.id == c->pocket) mark.pocket = p.drop_centre;
+      }
+    }
+    f.call = mark;
+  }
+
   render::HudState& hud = f.hud;
   for (int seat = 0; seat < 2; ++seat) {
     hud.players[seat].name = session.seatName(seat);

@@ -178,6 +178,9 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     case Key::P:
       session_.togglePushOut();
       break;
+    case Key::K:
+      session_.callObvious();
+      break;
     default:
       break;
   }
@@ -403,6 +406,7 @@ void GameInput::mouseReleased() {
     ui_.pull = 0.0;
     if (!strike) {
       session_.setSpeed(ui_.speed_before_drag);
+      session_.clickCall(ui_.drag_anchor);  // a click calls a pocket (or a ten-ball ball)
     } else {
       session_.shoot();
     }

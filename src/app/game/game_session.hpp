@@ -124,6 +124,20 @@ class GameSession {
   /// The aim guide from the cue ball along the current heading.
   AimGuide aimGuide() const;
 
+  /// The coming shot must carry a call (ten-ball after the break, eight-ball on the 8) and
+  /// the player to move is aiming (a push-out needs none).
+  bool callRequired() const;
+  /// The ball being called: the one picked (ten-ball), else the ball on. 0 when no call is due.
+  int callBall() const;
+  /// The call made so far: set once a pocket is picked.
+  std::optional<rules::Call> call() const;
+  /// A click on the table while a call is due: picks the pocket near `pos`, or in ten-ball the
+  /// ball there. True when the click was taken as part of the call.
+  bool clickCall(Vec2 pos);
+  /// Calls the obvious shot: the aim guide's object ball (when it may be called), else the
+  /// ball on, into the pocket nearest its path.
+  void callObvious();
+
   /// Strikes with the current aim, power and spin; false (and a message) when refused.
   bool shoot();
   /// Strikes with exactly this shot or push-out (the computer's), placing the cue ball at
@@ -191,8 +205,10 @@ class GameSession {
   bool push_out_ = false;
   std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
   int ball_on_at_shot_ = 0;
-  rules::Groups groups_at_shot_;  // eight-ball: the groups before the turn (its message)
-  bool breaking_ = false;         // the shot rolling is the break
+  std::optional<int> call_ball_;         // ten-ball: the ball picked to call
+  std::optional<PocketId> call_pocket_;  // the pocket called
+  rules::Groups groups_at_shot_;         // eight-ball: the groups before the turn (its message)
+  bool breaking_ = false;                // the shot rolling is the break
   FixedStepClock clock_;
   ShotSteps shot_;
   std::vector<int> pocketed_;
