@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/game/game_help.hpp"
 #include "nineball/rules.hpp"
 
 namespace nineball::app {
@@ -21,7 +22,6 @@ const std::vector<std::string> kHelpLines = {
     "P: declare a push-out when offered; then S: play or P: pass",
     "V: replay the last shot (Shift+V: slowed)    R: rematch after a rack",
     "M: mute    F1: full screen    F2: settings    F12: screenshot",
-    "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 
 void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay,
@@ -33,11 +33,14 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
       hud.overlay_title = "How to play";
       hud.overlay_lines = kHelpLines;
       hud.overlay_lines.insert(
-          hud.overlay_lines.end() - 1,
+          hud.overlay_lines.end(),
           "O: 2 players, or vs computer easy / medium / hard (now: " +
               (computer.opponent() ? std::string("computer ") + ai::levelName(*computer.opponent())
                                    : std::string("2 players")) +
               ")");
+      for (const std::string& line : gameHelpLines(session.match().rack().game())) {
+        hud.overlay_lines.push_back(line);
+      }
       hud.button_right = "Close (H)";
       break;
     case Overlay::ConfirmQuit:
@@ -161,6 +164,16 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   std::sort(hud.on_table.begin(), hud.on_table.end());
   hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
+  if (rack.game() != rules::Game::NineBall) {
+    hud.rules = std::string(rules::gameName(rack.game())) + ", " + hud.rules;
+  }
+  if (rack.game() == rules::Game::EightBall) {
+    hud.split_groups = true;
+    for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+      render::PlayerPanel& panel = hud.players[session.seatOf(p)];
+      panel.detail = "racks " + std::to_string(panel.racks) + "   " + groupLabel(rack.groups(), p);
+    }
+  }
   hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
   if (session.practice()) {
     const std::size_t shots = session.practiceShots();
