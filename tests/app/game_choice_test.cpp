@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "app/game/computer_player.hpp"
+#include "app/game/frame_builder.hpp"
+#include "app/game/game_help.hpp"
 #include "app/game/game_session.hpp"
 #include "app/game/menu.hpp"
 #include "app/game/rack_save.hpp"
@@ -140,6 +142,35 @@ TEST(GameChoice, MessagesForTheNewDecisionsAndGroups) {
   const std::string illegal = describeTurn(e, {}, 1, "Ann", "Bob").text;
   EXPECT_NE(illegal.find("Illegal break"), std::string::npos) << illegal;
   EXPECT_NE(illegal.find("re-rack"), std::string::npos) << illegal;
+}
+
+TEST(GameChoice, TheHudShowsEightBallGroupsAndTheHelpTheGame) {
+  EXPECT_EQ(groupLabel({}, rules::Player::A), "open table");
+  const rules::Groups g{rules::Group::Stripes, rules::Group::Solids};
+  EXPECT_EQ(groupLabel(g, rules::Player::A), "stripes");
+  EXPECT_EQ(groupLabel(g, rules::Player::B), "solids");
+  MatchSetup setup;
+  setup.game = rules::Game::EightBall;
+  const GameSession s(setup);
+  const ComputerPlayer computer(1);
+  UiState ui;
+  ui.help = true;
+  const render::Frame f = buildFrame(s, ui, computer);
+  EXPECT_TRUE(f.hud.split_groups);
+  EXPECT_NE(f.hud.players[0].detail.find("open table"), std::string::npos);
+  EXPECT_NE(f.hud.rules.find("eight-ball"), std::string::npos);
+  ASSERT_FALSE(f.hud.overlay_lines.empty());
+  EXPECT_NE(f.hud.overlay_lines.back().find("K"), std::string::npos);
+  bool explained = false;
+  for (const std::string& line : f.hud.overlay_lines) {
+    if (line.rfind("Eight-ball:", 0) == 0) explained = true;
+  }
+  EXPECT_TRUE(explained);
+  // Nine-ball's help ends as before.
+  const GameSession nine{MatchSetup{}};
+  const render::Frame n = buildFrame(nine, ui, computer);
+  EXPECT_FALSE(n.hud.split_groups);
+  EXPECT_EQ(n.hud.overlay_lines.back(), "Rules: hit the lowest ball first; the 9 wins the rack");
 }
 
 }  // namespace
