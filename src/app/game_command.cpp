@@ -15,7 +15,25 @@ namespace nineball::app {
 
 int runGameCommand(const GameOptions& options, std::istream& in, std::ostream& err) {
   GameStart start;
+  start.setup.game = *rules::gameFromName(options.game);
   start.setup.rules = *rules::ruleSetFromName(options.rules);
+  if (start.setup.game != rules::Game::NineBall) {
+    if (start.setup.rules != rules::RuleSet::Wpa) {
+      err << "nineball: --rules " << options.rules << " is nine-ball's only; " << options.game
+          << " is played by the WPA rules\n";
+      return kExitBadInput;
+    }
+    if (options.opponent != "human") {
+      err << "nineball: --opponent " << options.opponent
+          << ": the computer plays nine-ball only so far; " << options.game
+          << " is for two people\n";
+      return kExitBadInput;
+    }
+    if (options.practice) {
+      err << "nineball: --practice has no rules, so no game: leave out --game\n";
+      return kExitBadInput;
+    }
+  }
   start.setup.seed = options.seed;
   if (!options.script.empty()) {
     start.script_name = shownPath(options.script);

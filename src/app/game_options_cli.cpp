@@ -52,6 +52,9 @@ std::string screenshotProblem(const std::string& name) {
 
 std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   std::vector<CLI::Option*> opts;
+  opts.push_back(app.add_option("--game", o.game, "Game window: the game played")
+                     ->check(CLI::IsMember({"nine-ball", "eight-ball", "ten-ball"}))
+                     ->capture_default_str());
   opts.push_back(app.add_option("--rules", o.rules, "Game window: rules of nine-ball")
                      ->check(CLI::IsMember({"wpa", "paper"}))
                      ->capture_default_str());

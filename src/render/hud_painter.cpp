@@ -150,6 +150,13 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
            {centre.left, band.top + band.height / 2.0, centre.width, band.height / 2.0}, r * 0.8);
 }
 
+namespace {
+// Eight-ball's tray groups: the solids, the 8, the stripes.
+int groupIndex(int ball) {
+  return ball < 8 ? 0 : ball == 8 ? 1 : 2;
+}
+}  // namespace
+
 void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const PixelRect& room,
                           double r) {
   if (hud.on_table.empty() && hud.pocketed.empty()) return;
@@ -158,7 +165,12 @@ void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const P
   const double gap = r * 0.35;
   // The trough holds every object ball of the rack, so it fills up as they drop.
   const double trough_w = (on + down) * (2.0 * r + gap) + gap;
-  const double width = on * (2.0 * r + gap) + r + trough_w;
+  // Eight-ball: the groups apart, the 8 between them.
+  int splits = 0;
+  for (std::size_t i = 1; hud.split_groups && i < on; ++i) {
+    if (groupIndex(hud.on_table[i]) != groupIndex(hud.on_table[i - 1])) ++splits;
+  }
+  const double width = on * (2.0 * r + gap) + splits * r + r + trough_w;
   const double scale = std::min(1.0, room.width / width);
   const double rr = r * scale, g = gap * scale;
   double x = room.left + (room.width - width * scale) / 2.0 + rr;
@@ -170,7 +182,13 @@ void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const P
                       room});
     x += 2.0 * rr + g;
   };
-  for (int id : hud.on_table) ball(id, "on table");
+  for (std::size_t i = 0; i < on; ++i) {
+    if (hud.split_groups && i > 0 &&
+        groupIndex(hud.on_table[i]) != groupIndex(hud.on_table[i - 1])) {
+      x += rr;
+    }
+    ball(hud.on_table[i], "on table");
+  }
   x += rr * 0.5;
   batch_.clear();
   batch_.roundedRect(x - g, cy - rr - g, trough_w * scale, 2.0 * (rr + g), rr + g,

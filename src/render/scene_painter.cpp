@@ -41,6 +41,7 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
     cue_painter_.drawGuide(target, view_, *frame.bank, frame.ball_radius, frame.guide_scale, true);
   }
   ball_painter_.draw(target, view_, frame.balls, frame.ball_radius);
+  if (frame.call) drawCall(target, view_, *frame.call, frame.ball_radius);
   if (frame.ghost) {
     const double r = view_.px(frame.ball_radius);
     const Vec2 c = view_.toPixels(frame.ghost->pos);

@@ -10,6 +10,7 @@
 #include "nineball/ball.hpp"
 #include "nineball/table.hpp"
 #include "render/ball_painter.hpp"
+#include "render/call_painter.hpp"
 #include "render/cue_painter.hpp"
 #include "render/fonts.hpp"
 #include "render/hud_painter.hpp"
@@ -43,6 +44,7 @@ struct Frame {
   std::optional<AimGuide> bank;  ///< the path on from the first cushion (a setting)
   std::optional<CuePose> cue;
   std::optional<CueGhost> ghost;
+  std::optional<CallMark> call;  ///< the shot being called (eight- and ten-ball)
   HudState hud;
 };
 

@@ -100,7 +100,10 @@ ComputerPlayer::~ComputerPlayer() {
   reapAbandoned(true);
 }
 
-void ComputerPlayer::setOpponent(GameSession& session, const Opponent& opponent) {
+void ComputerPlayer::setOpponent(GameSession& session, const Opponent& wanted) {
+  // The computer plays nine-ball only so far: in another game both seats are people.
+  const Opponent opponent =
+      session.setup().game == rules::Game::NineBall ? wanted : Opponent(std::nullopt);
   abandon();
   if (opponent != opponent_) planner_.reset();
   opponent_ = opponent;

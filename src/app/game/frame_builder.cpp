@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/game/game_help.hpp"
 #include "nineball/rules.hpp"
 
 namespace nineball::app {
@@ -21,7 +22,6 @@ const std::vector<std::string> kHelpLines = {
     "P: declare a push-out when offered; then S: play or P: pass",
     "V: replay the last shot (Shift+V: slowed)    R: rematch after a rack",
     "M: mute    F1: full screen    F2: settings    F12: screenshot",
-    "Rules: hit the lowest ball first; the 9 wins the rack",
 };
 
 void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay,
@@ -33,11 +33,14 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
       hud.overlay_title = "How to play";
       hud.overlay_lines = kHelpLines;
       hud.overlay_lines.insert(
-          hud.overlay_lines.end() - 1,
+          hud.overlay_lines.end(),
           "O: 2 players, or vs computer easy / medium / hard (now: " +
               (computer.opponent() ? std::string("computer ") + ai::levelName(*computer.opponent())
                                    : std::string("2 players")) +
               ")");
+      for (const std::string& line : gameHelpLines(session.match().rack().game())) {
+        hud.overlay_lines.push_back(line);
+      }
       hud.button_right = "Close (H)";
       break;
     case Overlay::ConfirmQuit:
@@ -49,6 +52,19 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
     case Overlay::PushOutChoice: {
       const std::string name = session.seatName(session.seatToMove());
       hud.overlay_title = "Push-out: " + name + " chooses";
+      const rules::Rack& rack = session.match().rack();
+      if (rack.pendingDecision() == rules::Decision::RerackOrPlayOn) {
+        hud.overlay_title = "Illegal break: " + name + " chooses";
+        hud.overlay_lines = {"Play the table as it lies, or re-rack and break."};
+        hud.button_left = "Play on (S)";
+        hud.button_right = "Re-rack (P)";
+        break;
+      }
+      // Ten-ball: a pot not as called gives the same choice as a push-out.
+      if (!session.rackTurns().empty() &&
+          session.rackTurns().back().kind == TurnInput::Kind::Shot) {
+        hud.overlay_title = "Not as called: " + name + " chooses";
+      }
       if (computer_decides) {
         hud.overlay_lines = {"Thinking: play from here, or pass the shot back?"};
         break;
@@ -118,6 +134,19 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   }
 
+  if (session.callRequired() && !computer_turn) {
+    render::CallMark mark;
+    for (const BallState& b : f.balls) {
+      if (b.id == session.callBall() && !b.pocket) mark.ball = b.pos;
+    }
+    if (const auto c = session.call()) {
+      for (const Pocket& p : session.match().world().table().pockets) {
+        if (p.id == c->pocket) mark.pocket = p.drop_centre;
+      }
+    }
+    f.call = mark;
+  }
+
   render::HudState& hud = f.hud;
   for (int seat = 0; seat < 2; ++seat) {
     hud.players[seat].name = session.seatName(seat);
@@ -135,6 +164,16 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   std::sort(hud.on_table.begin(), hud.on_table.end());
   hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
+  if (rack.game() != rules::Game::NineBall) {
+    hud.rules = std::string(rules::gameName(rack.game())) + ", " + hud.rules;
+  }
+  if (rack.game() == rules::Game::EightBall) {
+    hud.split_groups = true;
+    for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+      render::PlayerPanel& panel = hud.players[session.seatOf(p)];
+      panel.detail = "racks " + std::to_string(panel.racks) + "   " + groupLabel(rack.groups(), p);
+    }
+  }
   hud.mode = opponentLabel(computer.opponent()) + "   O: opponent";
   if (session.practice()) {
     const std::size_t shots = session.practiceShots();

@@ -178,6 +178,9 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     case Key::P:
       session_.togglePushOut();
       break;
+    case Key::K:
+      session_.callObvious();
+      break;
     default:
       break;
   }
@@ -206,6 +209,12 @@ void GameInput::switchOpponent() {
   if (ui_.drag != Drag::None) return;
   if (session_.practice()) {
     session_.say("Practice is played alone: pick an opponent in a game from the menu.");
+    return;
+  }
+  if (session_.setup().game != rules::Game::NineBall) {
+    session_.say(std::string("The computer plays nine-ball only so far: ") +
+                     rules::gameName(session_.setup().game) + " is for two players here.",
+                 render::Tone::Warning);
     return;
   }
   const Opponent next = nextOpponent(computer_.opponent());
@@ -397,6 +406,7 @@ void GameInput::mouseReleased() {
     ui_.pull = 0.0;
     if (!strike) {
       session_.setSpeed(ui_.speed_before_drag);
+      session_.clickCall(ui_.drag_anchor);  // a click calls a pocket (or a ten-ball ball)
     } else {
       session_.shoot();
     }

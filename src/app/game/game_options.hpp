@@ -8,7 +8,8 @@ namespace nineball::app {
 
 /// Options of the game window (`nineball` with no subcommand).
 struct GameOptions {
-  std::string rules = "wpa";       ///< wpa | paper
+  std::string game = "nine-ball";  ///< nine-ball | eight-ball | ten-ball
+  std::string rules = "wpa";       ///< wpa | paper (nine-ball only)
   std::uint64_t seed = 1;          ///< rack order of balls 2-8, and the computer's cueing errors
   std::string opponent = "human";  ///< Player 2: human | ai:easy | ai:medium | ai:hard
   bool mute = false;               ///< no sound at all

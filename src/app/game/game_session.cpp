@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/game/shot_call.hpp"
 #include "app/game/turn_message.hpp"
 #include "game/shot_summary.hpp"
 #include "nineball/log.hpp"
@@ -246,6 +247,8 @@ void GameSession::startTurn() {
   tip_ = {};
   elevation_ = 0.0;
   cue_spot_.reset();
+  call_ball_.reset();
+  call_pocket_.reset();
   if (match_->cueInHand()) {
     std::optional<Vec2> on_table;
     for (const BallState& b : shot_.current) {
@@ -289,6 +292,7 @@ bool GameSession::shoot() {
   turn.shot.speed = speed_;
   turn.shot.tip = tip_;
   turn.shot.elevation_rad = elevation_;
+  if (turn.kind == TurnInput::Kind::Shot) turn.call = call();
   return shoot(turn);
 }
 
@@ -305,12 +309,22 @@ bool GameSession::shoot(const TurnInput& given) {
     rack_setup_ = setup_;
     rack_setup_.balls = practice_->layout();
   }
+  if (!practice_ && turn.kind == TurnInput::Kind::Shot && match_->rack().callRequired() &&
+      !turn.call) {
+    say(std::string("Call the shot first: click the pocket for the ") + std::to_string(callBall()) +
+            (match_->rack().game() == rules::Game::TenBall ? " (click a ball first to call another)"
+                                                           : "") +
+            ", or press K to call the obvious shot.",
+        render::Tone::Warning);
+    return false;
+  }
   if (match_->cueInHand()) {
     if (!turn.cue) turn.cue = cue_spot_;
   } else {
     turn.cue.reset();
   }
   ball_on_at_shot_ = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak();
   try {
     match_->beginShot(turn);
@@ -335,6 +349,55 @@ bool GameSession::shoot(const TurnInput& given) {
   shot_.begin(*match_);
   message_.clear();
   return true;
+}
+
+bool GameSession::callRequired() const {
+  return !practice_ && phase_ == Phase::Aiming && !push_out_ && match_->rack().callRequired();
+}
+
+int GameSession::callBall() const {
+  if (!callRequired()) return 0;
+  return call_ball_.value_or(match_->rack().ballOn());
+}
+
+std::optional<rules::Call> GameSession::call() const {
+  if (!callRequired() || !call_pocket_) return std::nullopt;
+  return rules::Call{callBall(), *call_pocket_};
+}
+
+bool GameSession::clickCall(Vec2 pos) {
+  if (!callRequired()) return false;
+  const World& w = match_->world();
+  const double r = w.physics().ball_radius;
+  if (const auto pocket = pocketNear(w.table(), pos, 3.0 * r)) {
+    call_pocket_ = pocket;
+    say("Called: the " + std::to_string(callBall()) + " in the " + pocketName(*pocket) +
+        " pocket.");
+    return true;
+  }
+  if (match_->rack().game() != rules::Game::TenBall) return false;
+  const auto ball = ballAt(pos);
+  if (!ball || *ball == kCueBall) return false;
+  call_ball_ = *ball;
+  say("Calling the " + std::to_string(*ball) + ": now click its pocket.");
+  return true;
+}
+
+void GameSession::callObvious() {
+  if (!callRequired()) {
+    say(practice_ ? "Practice has no rules, so no calls." : "No call is needed for this shot.",
+        render::Tone::Warning);
+    return;
+  }
+  const rules::Rack& rack = match_->rack();
+  const std::vector<int> callable =
+      rack.game() == rules::Game::TenBall ? rack.ballsOnTable() : rack.legalFirstBalls();
+  const auto c =
+      obviousCall(match_->world().table(), shot_.current, aimGuide(), callBall(), callable);
+  if (!c) return;
+  call_ball_ = c->ball;
+  call_pocket_ = c->pocket;
+  say("Called: the " + std::to_string(c->ball) + " in the " + pocketName(c->pocket) + " pocket.");
 }
 
 bool GameSession::replayAvailable() const {
@@ -403,7 +466,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   const auto& events = match_->world().events();
   const rules::ShotSummary summary = game::summarize(events);
   TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
-                               seatName(seatOf(record.verdict.next)));
+                               seatName(seatOf(record.verdict.next)), groups_at_shot_);
   const bool miscue = record.kind != TurnInput::Kind::Decision &&
                       std::any_of(events.begin(), events.end(),
                                   [](const Event& e) { return e.type == EventType::Miscue; });
@@ -424,6 +487,7 @@ void GameSession::decide(bool shoot_now) {
   TurnInput turn;
   turn.kind = TurnInput::Kind::Decision;
   turn.shoot = shoot_now;
+  groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
   afterTurn(record, match_->rack().ballOn());
@@ -444,6 +508,7 @@ void GameSession::playTurn(const TurnInput& turn) {
                         formatSpeed(turn.shot.speed));
   }
   const int ball_on = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
@@ -487,6 +552,9 @@ std::string GameSession::status() const {
     case Phase::Rolling:
       return name + " shoots...";
     case Phase::PushOutChoice:
+      if (match_->rack().pendingDecision() == rules::Decision::RerackOrPlayOn) {
+        return name + ": play on as it lies (S) or re-rack and break (P)?";
+      }
       return name + ": play from here (S) or pass it back (P)?";
     case Phase::GameOver: {
       const auto winner = match_->rack().winner();
@@ -503,6 +571,11 @@ std::string GameSession::status() const {
     s += "shoot: ball in hand, drag the cue ball";
   } else {
     s += "shoot";
+  }
+  if (callRequired()) {
+    const auto c = call();
+    s += c ? " - called: " + std::to_string(c->ball) + " in " + pocketName(c->pocket)
+           : " - call the " + std::to_string(callBall()) + "'s pocket (click it, or K)";
   }
   if (pushOutAvailable()) s += push_out_ ? " - PUSH-OUT" : " - may push out (P)";
   return s;

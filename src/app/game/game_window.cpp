@@ -185,6 +185,7 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     settings.last.opponent = opponentFromName(options.opponent).value_or(std::nullopt);
   }
   if (options.rules != "wpa") settings.last.rules = start.setup.rules;
+  if (options.game != "nine-ball") settings.last.game = start.setup.game;
   if (!capture) fitDesktop(options);
   bool fullscreen = options.fullscreen && !capture;
   sf::RenderWindow window;

@@ -49,6 +49,13 @@ const char* levelLabel(ai::Level l) {
   return "Medium";
 }
 
+// "Eight-ball" for the menu.
+std::string gameLabel(rules::Game g) {
+  std::string s = rules::gameName(g);
+  s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
 std::string capLabel(int cap) {
   return cap == 0 ? "Unlimited (vsync)" : std::to_string(cap) + " fps";
 }
@@ -76,8 +83,8 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   }
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
-  for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Rules, Item::Name1,
-                 Item::Name2, Item::OpenSettings, Item::Quit}) {
+  for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
+                 Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
     v.push_back(i);
   }
   return v;
@@ -87,10 +94,14 @@ bool MenuModel::enabled(Item item) const {
   switch (item) {
     case Item::Practice:
       return true;
+    case Item::Versus:
+      return nineBall();  // the computer plays nine-ball only
     case Item::Level:
-      return computer_;
+      return computer_ && nineBall();
+    case Item::Rules:
+      return nineBall();  // the paper's rules are nine-ball's only
     case Item::Name2:
-      return !computer_;  // the computer's seat is called "Computer"
+      return !computer_ || !nineBall();  // the computer's seat is called "Computer"
     default:
       return true;
   }
@@ -106,29 +117,35 @@ MenuRow MenuModel::row(Item item) const {
       r.value = resume_.value_or("");
       break;
     case Item::Play:
-      r.label = "Play nine-ball";
+      r.label = std::string("Play ") + rules::gameName(settings_.last.game);
       break;
     case Item::Practice:
       r.label = "Practice";
       r.value = "no rules, any ball anywhere";
       break;
     case Item::Versus:
-      r = {Kind::Choice, "Opponent", computer_ ? "Computer" : "Human (2 players)", true, false};
+      r = {Kind::Choice, "Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
+           false};
+      if (!nineBall()) r.value = "Human (the computer plays nine-ball only)";
       break;
     case Item::Level:
-      r = {Kind::Choice, "Computer level", levelLabel(level_), computer_, false};
+      r = {Kind::Choice, "Computer level", levelLabel(level_), r.enabled, false};
+      break;
+    case Item::Game:
+      r = {Kind::Choice, "Game", gameLabel(settings_.last.game), true, false};
       break;
     case Item::Rules:
       r = {Kind::Choice, "Rules",
-           settings_.last.rules == rules::RuleSet::Wpa ? "WPA" : "Paper (the seed paper's)", true,
-           false};
+           settings_.last.rules == rules::RuleSet::Wpa ? "WPA" : "Paper (the seed paper's)",
+           r.enabled, false};
+      if (!nineBall()) r.value = "WPA (the paper's are nine-ball's only)";
       break;
     case Item::Name1:
     case Item::Name2: {
       const int seat = item == Item::Name1 ? 0 : 1;
       r.kind = Kind::Text;
       r.label = seat == 0 ? "Player 1 name" : "Player 2 name";
-      r.value = seat == 1 && computer_ ? "Computer" : settings_.last.names[seat];
+      r.value = seat == 1 && computer_ && nineBall() ? "Computer" : settings_.last.names[seat];
       r.editing = editing_ && items()[selected_] == item;
       break;
     }
@@ -172,6 +189,10 @@ std::vector<MenuRow> MenuModel::rows() const {
   return out;
 }
 
+bool MenuModel::nineBall() const {
+  return settings_.last.game == rules::Game::NineBall;
+}
+
 void MenuModel::selectFirst() {
   selected_ = 0;
   editing_ = false;
@@ -201,6 +222,10 @@ void MenuModel::change(Item item, int step) {
       level_ = static_cast<ai::Level>(l);
       break;
     }
+    case Item::Game:
+      settings_.last.game =
+          static_cast<rules::Game>((static_cast<int>(settings_.last.game) + step + 3) % 3);
+      break;
     case Item::Rules:
       settings_.last.rules =
           settings_.last.rules == rules::RuleSet::Wpa ? rules::RuleSet::Paper : rules::RuleSet::Wpa;
@@ -239,8 +264,8 @@ void MenuModel::activate(Item item) {
       break;
     case Item::Play:
     case Item::Practice:
-      settings_.last = choice();
       settings_.last.mode = item == Item::Practice ? GameMode::Practice : GameMode::NineBall;
+      settings_.last = choice();
       outcome_ = Outcome::Play;
       break;
     case Item::Name1:
@@ -337,7 +362,9 @@ void MenuModel::click(int i) {
 
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
-  c.opponent = computer_ ? Opponent(level_) : std::nullopt;
+  // The computer and the paper's rules play nine-ball only.
+  c.opponent = computer_ && c.game == rules::Game::NineBall ? Opponent(level_) : std::nullopt;
+  if (c.game != rules::Game::NineBall) c.rules = rules::RuleSet::Wpa;
   c.resume = outcome_ == Outcome::Resume;
   return c;
 }

@@ -61,6 +61,7 @@ class MenuModel {
     Practice,
     Versus,
     Level,
+    Game,
     Rules,
     Name1,
     Name2,
@@ -76,6 +77,7 @@ class MenuModel {
   std::vector<Item> items() const;
   MenuRow row(Item item) const;
   bool enabled(Item item) const;
+  bool nineBall() const;  ///< the game chosen is nine-ball
   void move(int step);
   void change(Item item, int step);
   void activate(Item item);

@@ -10,7 +10,7 @@ namespace nineball::app {
 
 /// The games the start menu offers.
 enum class GameMode {
-  NineBall,  ///< a match of nine-ball, rack after rack
+  NineBall,  ///< a match, rack after rack, of the game chosen (nine-, eight- or ten-ball)
   Practice,  ///< TODO: practice mode (another branch builds it); the menu shows it greyed
 };
 
@@ -18,7 +18,8 @@ enum class GameMode {
 /// saved rack to resume. No SFML; also kept in the settings as the last game chosen.
 struct MenuChoice {
   GameMode mode = GameMode::NineBall;
-  Opponent opponent;  ///< nothing: a second person; else the computer at a level
+  rules::Game game = rules::Game::NineBall;  ///< the game of a match (practice: none)
+  Opponent opponent;  ///< nothing: a second person; else the computer at a level (nine-ball)
   rules::RuleSet rules = rules::RuleSet::Wpa;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)

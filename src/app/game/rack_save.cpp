@@ -44,6 +44,11 @@ TurnInput turnFromJson(const nlohmann::json& t) {
   turn.shot.elevation_rad = t.at("elevation_rad").get<double>();
   if (t.contains("cue"))
     turn.cue = Vec2{t["cue"].at(0).get<double>(), t["cue"].at(1).get<double>()};
+  if (t.contains("call")) {
+    const auto pocket = pocketFromName(t["call"].at("pocket").get<std::string>());
+    if (!pocket) throw std::invalid_argument("unknown pocket in a call");
+    turn.call = rules::Call{t["call"].at("ball").get<int>(), *pocket};
+  }
   return turn;
 }
 
@@ -55,6 +60,7 @@ std::string rackSavePath() {
 
 SavedRack saveOf(const GameSession& session, const Opponent& opponent) {
   SavedRack r;
+  r.game = session.setup().game;
   r.rules = session.setup().rules;
   r.seed = session.setup().seed;
   r.rack_index = session.rackNumber() - 1;
@@ -68,6 +74,7 @@ SavedRack saveOf(const GameSession& session, const Opponent& opponent) {
 nlohmann::ordered_json rackToJson(const SavedRack& rack) {
   nlohmann::ordered_json j;
   j["version"] = kVersion;
+  j["game"] = rules::gameName(rack.game);
   j["rules"] = rules::ruleSetName(rack.rules);
   j["seed"] = rack.seed;
   j["rack"] = rack.rack_index;
@@ -87,6 +94,7 @@ nlohmann::ordered_json rackToJson(const SavedRack& rack) {
       o["tip"] = {t.shot.tip.x, t.shot.tip.y};
       o["elevation_rad"] = t.shot.elevation_rad;
       if (t.cue) o["cue"] = {t.cue->x, t.cue->y};
+      if (t.call) o["call"] = {{"ball", t.call->ball}, {"pocket", pocketName(t.call->pocket)}};
     }
     turns.push_back(o);
   }
@@ -108,6 +116,13 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
       return std::nullopt;
     }
     r.rules = *rules;
+    // Saves from before eight- and ten-ball came are nine-ball's.
+    const auto game = rules::gameFromName(j.value("game", std::string("nine-ball")));
+    if (!game) {
+      why = "unknown game";
+      return std::nullopt;
+    }
+    r.game = *game;
     r.opponent = *opponent;
     r.seed = j.at("seed").get<std::uint64_t>();
     r.rack_index = j.at("rack").get<int>();

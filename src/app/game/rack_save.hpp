@@ -17,6 +17,7 @@ class GameSession;
 /// players, and the turns of the rack so far. Replaying the turns through the physics gives
 /// the position again, bit for bit (the physics is deterministic). No SFML.
 struct SavedRack {
+  rules::Game game = rules::Game::NineBall;
   rules::RuleSet rules = rules::RuleSet::Wpa;
   std::uint64_t seed = 1;  ///< the session's seed (rack n racks with seed + n)
   int rack_index = 0;      ///< 0 for the session's first rack

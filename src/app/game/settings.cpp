@@ -51,8 +51,9 @@ double guideLengthFactor(GuideLength g) {
 
 bool Settings::operator==(const Settings& o) const {
   return volume == o.volume && muted == o.muted && guide == o.guide && bank_line == o.bank_line &&
-         frame_cap == o.frame_cap && last.mode == o.last.mode && last.opponent == o.last.opponent &&
-         last.rules == o.last.rules && last.names == o.last.names;
+         frame_cap == o.frame_cap && last.mode == o.last.mode && last.game == o.last.game &&
+         last.opponent == o.last.opponent && last.rules == o.last.rules &&
+         last.names == o.last.names;
 }
 
 std::string xdgFile(const char* env, const char* fallback, const char* file) {
@@ -75,7 +76,8 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
   j["aim_guide"] = guideLengthName(s.guide);
   j["bank_line"] = s.bank_line;
   j["frame_cap"] = s.frame_cap;
-  j["last"] = {{"game", gameModeName(s.last.mode)},
+  j["last"] = {{"game", s.last.mode == GameMode::Practice ? gameModeName(s.last.mode)
+                                                          : rules::gameName(s.last.game)},
                {"opponent", opponentName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
                {"names", {s.last.names[0], s.last.names[1]}}};
@@ -133,8 +135,11 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
   if (const auto* v = field(*last, "game")) {
     if (v->is_string() && *v == "practice") {
       s.last.mode = GameMode::Practice;
-    } else if (!(v->is_string() && *v == "nine-ball")) {
-      warn(warnings, "last.game: expected nine-ball or practice");
+    } else if (const auto g =
+                   v->is_string() ? rules::gameFromName(v->get<std::string>()) : std::nullopt) {
+      s.last.game = *g;
+    } else {
+      warn(warnings, "last.game: expected nine-ball, eight-ball, ten-ball or practice");
     }
   }
   if (const auto* v = field(*last, "opponent")) {

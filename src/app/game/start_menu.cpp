@@ -20,7 +20,9 @@ void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
 
 std::string describeSavedRack(const SavedRack& rack) {
   const std::string p2 = rack.opponent ? std::string("Computer") : rack.names[1];
-  return rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
+  const std::string game =
+      rack.game == rules::Game::NineBall ? "" : std::string(rules::gameName(rack.game)) + ", ";
+  return game + rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
          ", racks " + std::to_string(rack.racks_won[0]) + "-" + std::to_string(rack.racks_won[1]);
 }
 
@@ -48,6 +50,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
 
   MatchSetup setup = session.setup();
   if (outcome == MenuModel::Outcome::Resume && saved) {
+    setup.game = saved->game;
     setup.rules = saved->rules;
     setup.seed = saved->seed;
     try {
@@ -68,6 +71,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     }
   }
   const MenuChoice choice = model.choice();
+  setup.game = choice.mode == GameMode::Practice ? rules::Game::NineBall : choice.game;
   setup.rules = choice.rules;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);

@@ -23,10 +23,14 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
     case rules::Foul::ThreeFouls:
       return "a third foul in a row";
     case rules::Foul::EightEarly:
+      return "the 8 dropped before the shooter's group was cleared";
     case rules::Foul::WrongGroupFirst:
+      return "the cue ball hit the " + std::to_string(summary.first_contact.value_or(0)) +
+             " first, not a ball of the shooter's";
     case rules::Foul::WrongPocket:
+      return "the called ball dropped in another pocket than the one called";
     case rules::Foul::NoCall:
-      return rules::foulName(foul);  // eight- and ten-ball: the window plays nine-ball only
+      return "a ball dropped that was not called";
     case rules::Foul::None:
       break;
   }
@@ -67,10 +71,16 @@ std::string ballList(const std::vector<int>& balls) {
 }
 
 TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
-                         const std::string& shooter, const std::string& next) {
+                         const std::string& shooter, const std::string& next,
+                         const rules::Groups& groups_before) {
   const rules::Verdict& v = record.verdict;
   TurnMessage m;
   if (record.kind == TurnInput::Kind::Decision) {
+    if (record.answered == rules::Decision::RerackOrPlayOn) {
+      m.text = record.shoot ? shooter + " plays the table as it lies."
+                            : shooter + " has the balls re-racked and breaks.";
+      return m;
+    }
     m.text = v.next == record.shooter ? shooter + " plays from there."
                                       : shooter + " passes: " + next + " shoots.";
     return m;
@@ -85,6 +95,9 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
       m.text = "Third foul in a row by " + shooter + " (" +
                foulReason(underlyingFoul(summary, ball_on), summary, ball_on) + "): " + next +
                " wins the rack.";
+    } else if (!shooter_won && !v.legal()) {
+      m.text = "Foul with " + potted + " down (" + foulReason(v.foul, summary, ball_on) +
+               "): " + next + " wins the rack.";
     } else if (!shooter_won) {
       m.text = "Foul with " + potted + " down: " + next + " wins the rack.";
     } else {
@@ -95,6 +108,26 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   if (record.kind == TurnInput::Kind::PushOut) {
     m.text = shooter + " pushed out" + (potted.empty() ? "" : " (" + potted + " down)") + "." +
              spot_note + " " + next + ": play from here or pass it back.";
+    return m;
+  }
+  std::string groups_note;
+  if (groups_before.open() && !v.groups.open()) {
+    if (const auto g = v.groups.of(record.shooter)) {
+      const auto o = v.groups.of(rules::other(record.shooter));
+      groups_note = " " + shooter + " has the " + rules::groupName(*g) + ", " + next + " the " +
+                    (o ? rules::groupName(*o) : "others") + ".";
+    }
+  }
+  if (v.decision == rules::Decision::RerackOrPlayOn) {
+    m.tone = render::Tone::Foul;
+    m.text = "Illegal break by " + shooter + ": " + foulReason(v.foul, summary, ball_on) + "." +
+             downOnFoul(v) + spot_note + " " + next + ": play on as it lies, or re-rack.";
+    return m;
+  }
+  if (v.call_breach != rules::Foul::None) {
+    m.text = shooter + " pockets " + potted + " but not as called (" +
+             foulReason(v.call_breach, summary, ball_on) + "): the turn ends." + spot_note + " " +
+             next + ": play from there or pass it back.";
     return m;
   }
   if (!v.legal()) {
@@ -108,6 +141,7 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
     } else {
       m.text += " " + next + " to shoot.";
     }
+    m.text += groups_note;
     return m;
   }
   if (!potted.empty()) {
@@ -116,6 +150,7 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   } else {
     m.text = "Nothing down. " + next + " to shoot.";
   }
+  m.text += groups_note;
   return m;
 }
 
