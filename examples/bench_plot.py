@@ -35,11 +35,20 @@ def main():
         raise SystemExit("nineball bench wrote no rows")
 
     fig, ax = plt.subplots(figsize=(8, 5))
+    colours = {"pairwise": "tab:blue", "box2d": "tab:green"}
+    seen = set()
     for r in rows:
         x, y = float(r["break_wall_ms_median"]), max(float(r["worst_over_target"]), 1e-9)
         baseline = r["baseline"] == "1"
-        ax.plot(x, y, "s" if baseline else "o", color="tab:red" if baseline else "tab:blue")
-        ax.annotate(r["setting"], (x, y), fontsize=7, xytext=(4, 3), textcoords="offset points")
+        model = r["contacts"]
+        label = None if model in seen else f"contacts: {model}"
+        seen.add(model)
+        ax.plot(x, y, "s" if baseline else "o", label=label,
+                color="tab:red" if baseline else colours.get(model, "tab:gray"))
+        # Many settings: only the front and the baseline are named, or the names pile up.
+        if len(rows) <= 8 or baseline or r["pareto"] == "1":
+            ax.annotate(r["setting"], (x, y), fontsize=7, xytext=(4, 3),
+                        textcoords="offset points")
     front = sorted((float(r["break_wall_ms_median"]), max(float(r["worst_over_target"]), 1e-9))
                    for r in rows if r["pareto"] == "1")
     if len(front) > 1:
