@@ -76,4 +76,8 @@ std::optional<std::string> checkTable(const TableDef& def, double r);
 /// Builds the cushion loop and pockets. `ball_radius` sets how deep the pocket cups are.
 TableGeometry buildTable(const TableDef& def, double ball_radius);
 
+/// The cushion loop's points from a pocket's first jaw to its second: the jaw faces and the
+/// cup, as the pictures of the table draw them.
+std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket);
+
 }  // namespace nineball

@@ -67,21 +67,6 @@ std::string points(const View& v, const std::vector<Vec2>& metres) {
   return out;
 }
 
-// The cushion loop from a pocket's first jaw to its second: the jaw faces and the cup.
-std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket) {
-  std::vector<Vec2> out;
-  const auto& loop = table.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (loop[i] != pocket.jaw_a) continue;
-    for (std::size_t k = i; k < i + loop.size(); ++k) {
-      out.push_back(loop[k % loop.size()]);
-      if (loop[k % loop.size()] == pocket.jaw_b) break;
-    }
-    break;
-  }
-  return out;
-}
-
 double distanceToLine(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len = length(ab);

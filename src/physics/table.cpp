@@ -254,4 +254,18 @@ std::optional<PocketId> TableGeometry::pocketAt(Vec2 p) const {
   return std::nullopt;
 }
 
+std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket) {
+  std::vector<Vec2> out;
+  const auto& loop = table.cushion_loop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (loop[i] != pocket.jaw_a) continue;
+    for (std::size_t k = i; k < i + loop.size(); ++k) {
+      out.push_back(loop[k % loop.size()]);
+      if (loop[k % loop.size()] == pocket.jaw_b) break;
+    }
+    break;
+  }
+  return out;
+}
+
 }  // namespace nineball

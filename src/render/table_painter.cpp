@@ -14,21 +14,6 @@ constexpr double kPocketRim = 0.007;  // m
 constexpr Rgb kClothShade{34, 112, 68};
 constexpr Rgb kMarking{236, 244, 236};
 
-// The cushion loop's points from a pocket's first jaw to its second: the jaw faces and cup.
-std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket) {
-  std::vector<Vec2> out;
-  const auto& loop = table.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (loop[i] != pocket.jaw_a) continue;
-    for (std::size_t k = i; k < i + loop.size(); ++k) {
-      out.push_back(loop[k % loop.size()]);
-      if (loop[k % loop.size()] == pocket.jaw_b) break;
-    }
-    break;
-  }
-  return out;
-}
-
 std::vector<Vec2> toPixels(const ViewTransform& view, const std::vector<Vec2>& metres) {
   std::vector<Vec2> px;
   px.reserve(metres.size());

@@ -1,13 +1,12 @@
 #include "app/game/rack_save.hpp"
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "app/game/game_session.hpp"
 #include "app/game/settings.hpp"
-#include "nineball/atomic_file.hpp"
+#include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
@@ -143,17 +142,8 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
 }
 
 bool saveRack(const SavedRack& rack, const std::string& path, std::string& why) {
-  if (path.empty()) {
-    why = "neither XDG_STATE_HOME nor HOME is set";
-    return false;
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-  if (ec) {
-    why = "cannot make " + std::filesystem::path(path).parent_path().string() + ": " + ec.message();
-    return false;
-  }
-  return writeFileAtomically(path, rackToJson(rack).dump(1) + "\n", why);
+  return saveStateFile(path, rackToJson(rack).dump(1) + "\n",
+                       "neither XDG_STATE_HOME nor HOME is set", why);
 }
 
 std::optional<SavedRack> loadRack(const std::string& path) {

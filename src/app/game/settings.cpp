@@ -6,7 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "nineball/atomic_file.hpp"
+#include "app/game/state_file.hpp"
+#include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
@@ -199,17 +200,8 @@ Settings loadSettings(const std::string& path) {
 }
 
 bool saveSettings(const Settings& s, const std::string& path, std::string& why) {
-  if (path.empty()) {
-    why = "neither XDG_CONFIG_HOME nor HOME is set";
-    return false;
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-  if (ec) {
-    why = "cannot make " + std::filesystem::path(path).parent_path().string() + ": " + ec.message();
-    return false;
-  }
-  return writeFileAtomically(path, settingsToJson(s).dump(2) + "\n", why);
+  return saveStateFile(path, settingsToJson(s).dump(2) + "\n",
+                       "neither XDG_CONFIG_HOME nor HOME is set", why);
 }
 
 }  // namespace nineball::app
