@@ -88,9 +88,8 @@ void expectRack(rules::Game game, std::size_t balls) {
 }
 
 TEST(GameRackScreenshots, EightAndTenBallRacksShowEveryBallWhereThePhysicsPutsIt) {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "xvfb-run not installed";
-  }
+  ASSERT_EQ(std::system("command -v xvfb-run >/dev/null 2>&1"), 0)
+      << "xvfb-run not found: install xvfb and xauth (bash scripts/setup.sh)";
   expectRack(rules::Game::EightBall, 15);
   expectRack(rules::Game::TenBall, 10);
 }

@@ -97,7 +97,8 @@ void expectMenuFits(const std::filesystem::path& dir, unsigned w, unsigned h, in
 class MenuScreenshots : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run not installed";
+    ASSERT_TRUE(haveXvfbRun())
+        << "xvfb-run not found: install xvfb and xauth (bash scripts/setup.sh)";
     dir_ = std::filesystem::temp_directory_path() /
            ("nineball-menu-" + std::to_string(getpid()) + "-" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());

@@ -11,7 +11,7 @@ namespace nineball::app {
 /// The games the start menu offers.
 enum class GameMode {
   NineBall,  ///< a match, rack after rack, of the game chosen (nine-, eight- or ten-ball)
-  Practice,  ///< TODO: practice mode (another branch builds it); the menu shows it greyed
+  Practice,  ///< practice mode: no rules, any ball anywhere (GameSession's practice)
 };
 
 /// What the start menu settled: the game, who plays Player 2, the rules, the names, or the
