@@ -66,19 +66,23 @@ struct PlanInput {
 /// The position a match is in, for the player to move.
 PlanInput planInputFrom(const Match& match);
 
-/// What a planned shot means to do.
-enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety };
+/// What a planned shot means to do. A PushOut's turn has kind TurnInput::Kind::PushOut.
+enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety, PushOut };
 
-/// "break", "pot", "combination", "bank", "kick", "safety".
+/// "break", "pot", "combination", "bank", "kick", "safety", "push-out".
 const char* shotKindName(ShotKind kind);
 
 /// The planner's answer for one position.
 struct Plan {
-  /// The shot as intended (no execution noise): kind Shot, `cue` set when placing the ball.
+  /// The shot as intended (no execution noise): kind Shot (or PushOut), `cue` set when
+  /// placing the ball, `call` set when the rules need one (ten-ball after the break, eight-ball
+  /// on the 8): the target and its pocket, or for a safety the ball on and the pocket nearest
+  /// to it.
   TurnInput turn;
   ShotKind kind = ShotKind::Safety;
   int target = 0;                  ///< the ball meant to drop (pot, combination, bank)
   std::optional<PocketId> pocket;  ///< where it is meant to drop
+  int first = 0;                   ///< the ball the cue ball is meant to hit first (0: none)
   /// Expected worth of the outcome to the shooter, 0 (loses the rack) to 1 (wins it), averaged
   /// over the robustness check when there was one.
   double value = 0.0;
@@ -95,15 +99,16 @@ class Planner {
   /// The best shot found for the position, as intended. The rack must not be waiting for a
   /// decision after a push-out (see shootAfterPushOut).
   Plan plan(const PlanInput& in);
-  /// After the opponent's push-out (`in.rack` awaiting the decision): true to shoot, false to
-  /// pass the shot back. Shoots when its best shot is worth at least what the opponent would
-  /// get from the same position.
+  /// The pending decision of `in.rack` (after a push-out or a ten-ball call breach: true to
+  /// shoot, false to pass back; after an illegal eight-ball break: true to play on, false to
+  /// re-rack). Takes the table when its best shot from there is worth at least what the
+  /// opponent would get.
   bool shootAfterPushOut(const PlanInput& in);
   /// The plan as this level cues it: heading and speed with the level's noise, drawn from the
   /// planner's own seeded generator.
   TurnInput execute(const Plan& plan);
-  /// A whole turn of a match for the player to move: the decision after a push-out, or a
-  /// planned and executed shot. Never a push-out.
+  /// A whole turn of a match for the player to move: the pending decision, or a planned and
+  /// executed shot (a push-out when that is worth more than any shot).
   TurnInput turnFor(const Match& match);
 
   Level level() const { return level_; }

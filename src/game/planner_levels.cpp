@@ -35,6 +35,8 @@ const char* shotKindName(ShotKind kind) {
       return "kick";
     case ShotKind::Safety:
       return "safety";
+    case ShotKind::PushOut:
+      return "push-out";
   }
   return "?";
 }

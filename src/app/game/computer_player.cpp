@@ -75,6 +75,8 @@ std::string describePlan(const ai::Plan& plan, int ball_on) {
       return "bank " + target + pocket;
     case ai::ShotKind::Kick:
       return "kick at " + on + " off the cushion";
+    case ai::ShotKind::PushOut:
+      return "push out";
     case ai::ShotKind::Safety:
       break;
   }
