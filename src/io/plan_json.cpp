@@ -17,8 +17,19 @@ PlanScene parseDocument(json doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
   allowOnly(
       doc, "",
-      {"table", "physics", "balls", "shot", "until", "step", "rules", "ball_in_hand", "level"});
+      {"table", "physics", "balls", "shot", "until", "step", "game", "rules", "ball_in_hand",
+       "level"});
   PlanScene plan;
+  rules::Game game = rules::Game::NineBall;
+  if (const json* p = optional(doc, "game")) {
+    const std::string name = text(*p, "game");
+    const auto found = rules::gameFromName(name);
+    if (!found) {
+      refuse("game", "unknown game " + quote(name) +
+                         " (expected \"nine-ball\", \"eight-ball\" or \"ten-ball\")");
+    }
+    game = *found;
+  }
   rules::RuleSet rule_set = rules::RuleSet::Wpa;
   if (const json* p = optional(doc, "rules")) {
     const std::string name = text(*p, "rules");
@@ -26,6 +37,10 @@ PlanScene parseDocument(json doc) {
     if (!found)
       refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
     rule_set = *found;
+    if (rule_set == rules::RuleSet::Paper && game != rules::Game::NineBall) {
+      refuse("rules", std::string("the paper's rules are nine-ball's only, not ") +
+                          rules::gameName(game));
+    }
   }
   bool in_hand = false;
   if (const json* p = optional(doc, "ball_in_hand")) {
@@ -41,7 +56,7 @@ PlanScene parseDocument(json doc) {
     }
     plan.level = *found;
   }
-  for (const char* key : {"rules", "ball_in_hand", "level"}) doc.erase(key);
+  for (const char* key : {"game", "rules", "ball_in_hand", "level"}) doc.erase(key);
   SceneResult parsed = sceneFromJson(doc);
   if (const auto* refused = std::get_if<ParseError>(&parsed)) throw *refused;
   const Scene& scene = std::get<Scene>(parsed);
@@ -64,7 +79,16 @@ PlanScene parseDocument(json doc) {
   in.physics = scene.physics;
   in.step = scene.step;
   in.balls = scene.balls;
-  in.rack = rules::Rack(rule_set, object_balls, false);
+  if (game != rules::Game::NineBall) {
+    for (int id : object_balls) {
+      const int last = game == rules::Game::EightBall ? 15 : 10;
+      if (id > last) {
+        refuse("balls", std::string(rules::gameName(game)) + " has no ball " + std::to_string(id) +
+                            " (1-" + std::to_string(last) + ")");
+      }
+    }
+  }
+  in.rack = rules::Rack(game, rule_set, object_balls, false);
   in.cue_in_hand = in_hand;
   return plan;
 }
@@ -96,6 +120,9 @@ ordered_json planToJson(const ai::Plan& plan) {
   doc["speed"] = shot.speed;
   doc["tip"] = {shot.tip.x, shot.tip.y};
   if (plan.turn.cue) doc["cue"] = {plan.turn.cue->x, plan.turn.cue->y};
+  if (plan.turn.call) {
+    doc["call"] = {{"ball", plan.turn.call->ball}, {"pocket", pocketName(plan.turn.call->pocket)}};
+  }
   return doc;
 }
 
