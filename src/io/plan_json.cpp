@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_json.hpp"
@@ -15,33 +16,12 @@ using nlohmann::ordered_json;
 
 PlanScene parseDocument(json doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
-  allowOnly(
-      doc, "",
-      {"table", "physics", "balls", "shot", "until", "step", "game", "rules", "ball_in_hand",
-       "level"});
+  allowOnly(doc, "",
+            {"table", "physics", "balls", "shot", "until", "step", "game", "rules", "ball_in_hand",
+             "level"});
   PlanScene plan;
-  rules::Game game = rules::Game::NineBall;
-  if (const json* p = optional(doc, "game")) {
-    const std::string name = text(*p, "game");
-    const auto found = rules::gameFromName(name);
-    if (!found) {
-      refuse("game", "unknown game " + quote(name) +
-                         " (expected \"nine-ball\", \"eight-ball\" or \"ten-ball\")");
-    }
-    game = *found;
-  }
-  rules::RuleSet rule_set = rules::RuleSet::Wpa;
-  if (const json* p = optional(doc, "rules")) {
-    const std::string name = text(*p, "rules");
-    const auto found = rules::ruleSetFromName(name);
-    if (!found)
-      refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
-    rule_set = *found;
-    if (rule_set == rules::RuleSet::Paper && game != rules::Game::NineBall) {
-      refuse("rules", std::string("the paper's rules are nine-ball's only, not ") +
-                          rules::gameName(game));
-    }
-  }
+  const rules::Game game = gameField(doc);
+  const rules::RuleSet rule_set = rulesField(doc, game);
   bool in_hand = false;
   if (const json* p = optional(doc, "ball_in_hand")) {
     if (!p->is_boolean()) refuse("ball_in_hand", "expected true or false, found " + describe(*p));
