@@ -40,6 +40,8 @@ LookAhead lookAhead(const SearchContext& ctx, const Evaluator& eval, const Candi
   assignCalls(next_ctx, pots);
   double best = 0.0;
   for (const Candidate& p : pots) {
+    // The pots come easiest line first, and none can be worth more than its line's chance.
+    if (p.prior <= best) break;
     const double worth = next_eval.value(p);
     ++out.simulations;
     if (worth < kContinueBase) continue;
