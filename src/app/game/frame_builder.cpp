@@ -55,6 +55,10 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
       const rules::Rack& rack = session.match().rack();
       if (rack.pendingDecision() == rules::Decision::RerackOrPlayOn) {
         hud.overlay_title = "Illegal break: " + name + " chooses";
+        if (computer_decides) {
+          hud.overlay_lines = {"Thinking: play on as it lies, or re-rack and break?"};
+          break;
+        }
         hud.overlay_lines = {"Play the table as it lies, or re-rack and break."};
         hud.button_left = "Play on (S)";
         hud.button_right = "Re-rack (P)";
