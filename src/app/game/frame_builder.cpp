@@ -138,7 +138,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   }
 
-  if (session.callRequired() && !computer_turn) {
+  // The computer's call shows once made, as a person's; not the prompt while it thinks.
+  if (session.callRequired() && (!computer_turn || session.call())) {
     render::CallMark mark;
     for (const BallState& b : f.balls) {
       if (b.id == session.callBall() && !b.pocket) mark.ball = b.pos;
