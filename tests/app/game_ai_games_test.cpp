@@ -33,8 +33,14 @@ bool runUntil(ComputerPlayer& c, GameSession& s, Stage stage) {
   return false;
 }
 
-void finishTurn(ComputerPlayer& c, GameSession& s) {
-  for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) c.update(s, kFrame);
+// Runs the computer's frames until its turn is over; what the status line said on the way.
+std::set<std::string> finishTurn(ComputerPlayer& c, GameSession& s) {
+  std::set<std::string> said;
+  for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) {
+    c.update(s, kFrame);
+    if (c.controls(s)) said.insert(c.status(s));
+  }
+  return said;
 }
 
 // The computer always answers with `move`, whatever the position.
@@ -127,9 +133,12 @@ TEST(ComputerGames, AShotWithoutTheCallDueIsCalledTheObviousWay) {
   move.turn.shot.heading_rad = 0.3;
   move.turn.shot.speed = 1.5;
   thinkAlways(c, move);
+  ASSERT_TRUE(runUntil(c, s, Stage::Cueing));
+  EXPECT_TRUE(s.call().has_value());  // called once aimed, shown while the cue goes back
   finishTurn(c, s);
   ASSERT_EQ(s.phase(), Phase::Rolling) << s.message();
   EXPECT_TRUE(s.rackTurns().back().call.has_value());
+  EXPECT_EQ(s.rackTurns().back().shot.heading_rad, 0.3);  // its own shot, not the fallback's
 }
 
 TEST(ComputerGames, TheComputersPushOutIsDeclaredAndPlayedAsOne) {
@@ -231,9 +240,12 @@ void playSomeTurns(rules::Game game) {
   c.setOpponent(s, ai::Level::Easy);
   c.setWaitForPlans(true);
   int computer_turns = 0;
+  bool planned = false;
   for (int turn = 0; turn < 40 && computer_turns < 3 && s.phase() != Phase::GameOver; ++turn) {
     if (c.controls(s)) {
-      finishTurn(c, s);
+      for (const std::string& line : finishTurn(c, s)) {
+        planned = planned || line.rfind("Computer: ", 0) == 0;  // not the fallback's words
+      }
       ASSERT_FALSE(c.controls(s)) << "the computer's turn never ended: " << s.message();
       ASSERT_EQ(s.message().find("cannot play"), std::string::npos) << s.message();
       ++computer_turns;
@@ -244,9 +256,12 @@ void playSomeTurns(rules::Game game) {
       s.setSpeed(s.match().rack().isBreak() ? GameSession::kBreakSpeed : 2.0);
       ASSERT_TRUE(s.shoot()) << s.message();
     }
-    if (s.phase() == Phase::Rolling) ASSERT_TRUE(roll(s));
+    if (s.phase() == Phase::Rolling) {
+      ASSERT_TRUE(roll(s));
+    }
   }
   EXPECT_GT(computer_turns, 0);
+  EXPECT_TRUE(planned) << "the planner's own shot was never shown";
 }
 
 TEST(ComputerGames, ThePlannerPlaysEightBallTurns) {
