@@ -42,6 +42,11 @@ struct LevelSettings {
   int robust_steps = 0;               ///< heading errors tried each way, in half deviations
   double robust_aim_deg = 0.0;        ///< standard deviation of the heading error of that check
   double robust_speed = 0.0;          ///< standard deviation of its relative speed error
+  int lookahead_top = 0;              ///< best candidates whose next shot is simulated
+  int lookahead_lines = 0;            ///< ... the easiest pot lines of that next shot
+  std::vector<double> lookahead_speeds;  ///< ... at these speeds (m/s)
+  std::vector<Vec2> lookahead_tips;      ///< ... and tips
+  int push_out_headings = 0;          ///< directions tried for a push-out (0: never pushes out)
   double aim_noise_deg = 0.0;         ///< standard deviation of the executed heading
   double speed_noise = 0.0;           ///< standard deviation of the executed speed, relative
 

@@ -40,11 +40,29 @@ bool contains(const std::vector<int>& v, int x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
-void playPositions(const AiBenchOptions& o, ai::Level level, Tally& t) {
+// Whether the shot did what a position asks: in nine-ball the ball on dropped on a legal shot;
+// in ten-ball the same, as called; in eight-ball a ball dropped on a legal shot that keeps the
+// table (any ball of the group, or of either on the open table).
+bool madeIt(rules::Game game, const TurnRecord& r, int on) {
+  const rules::Verdict& v = r.verdict;
+  if (!v.legal()) return false;
+  switch (game) {
+    case rules::Game::NineBall:
+      return contains(v.pocketed, on);
+    case rules::Game::TenBall:
+      return contains(v.pocketed, on) && v.call_breach == rules::Foul::None;
+    case rules::Game::EightBall:
+      return !v.pocketed.empty() && (v.next == r.shooter || v.winner == r.shooter);
+  }
+  return false;
+}
+
+void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally& t) {
   for (int i = 0; i < o.positions; ++i) {
     const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
     MatchSetup setup;
-    setup.balls = randomPosition(seed, setup.table, setup.physics);
+    setup.game = game;
+    setup.balls = randomPosition(seed, setup.table, setup.physics, game);
     Match match(setup);
     const int on = match.rack().ballOn();
     ai::Planner planner(level, seed, o.threads);
@@ -53,24 +71,39 @@ void playPositions(const AiBenchOptions& o, ai::Level level, Tally& t) {
     if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank) ++t.attempted;
     Match as_planned(setup);
     const TurnRecord exact = as_planned.play(plan.turn);
-    if (exact.verdict.legal() && contains(exact.verdict.pocketed, on)) ++t.potted_as_planned;
+    if (madeIt(game, exact, on)) ++t.potted_as_planned;
     const TurnRecord r = match.play(planner.execute(plan));
     if (!r.verdict.legal()) ++t.fouls;
-    if (r.verdict.legal() && contains(r.verdict.pocketed, on)) ++t.potted;
+    if (madeIt(game, r, on)) ++t.potted;
     addPlanner(planner, t);
   }
 }
 
-void playRacks(const AiBenchOptions& o, ai::Level level, Tally& t, std::ostream& err) {
+// The player to move in a rack; during a decision, the one deciding.
+rules::Player toMove(const Match& match) {
+  return match.rack().shooter();
+}
+
+void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally& t,
+               std::ostream& err) {
   for (int i = 0; i < o.racks; ++i) {
     MatchSetup setup;
+    setup.game = game;
     setup.seed = o.seed + static_cast<std::uint64_t>(i);
     Match match(setup);
     ai::Planner planner(level, setup.seed, o.threads);
+    // The opponent only answers the breaker's push-outs and illegal breaks; when it passes the
+    // table back the visit goes on, when it takes the table the run is over.
+    ai::Planner opponent(level, setup.seed + 1, o.threads);
     int turns = 0;
     int pocketed = 0;
-    while (!match.rack().over() && match.rack().shooter() == rules::Player::A &&
-           turns < kMaxTurnsPerRack) {
+    while (!match.rack().over() && turns < kMaxTurnsPerRack) {
+      if (toMove(match) == rules::Player::B) {
+        if (!match.rack().awaitingDecision()) break;
+        match.play(opponent.turnFor(match));
+        if (toMove(match) == rules::Player::B) break;
+        continue;
+      }
       const TurnInput turn = planner.turnFor(match);
       t.think.push_back(planner.lastThinkSeconds());
       const TurnRecord r = match.play(turn);
@@ -103,6 +136,9 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   cmd->add_option("--level", options.level, "Level to measure")
       ->check(CLI::IsMember({"easy", "medium", "hard"}))
       ->capture_default_str();
+  cmd->add_option("--game", options.game, "Game to play")
+      ->check(CLI::IsMember({"nine-ball", "eight-ball", "ten-ball"}))
+      ->capture_default_str();
   cmd->add_option("--positions", options.positions, "Seeded positions to pot the ball on from")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
@@ -125,8 +161,13 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   }
   const auto started = std::chrono::steady_clock::now();
   Tally positions, racks;
-  playPositions(options, *level, positions);
-  playRacks(options, *level, racks, err);
+  const auto game = rules::gameFromName(options.game);
+  if (!game) {
+    err << "nineball ai-bench: --game: unknown game \"" << options.game << "\"\n";
+    return kExitBadInput;
+  }
+  playPositions(options, *game, *level, positions);
+  playRacks(options, *game, *level, racks, err);
   std::vector<double> think = positions.think;
   think.insert(think.end(), racks.think.begin(), racks.think.end());
   const long sims = positions.simulations + racks.simulations;
@@ -134,9 +175,13 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   out << std::fixed << std::setprecision(2);
-  out << "Computer opponent, level " << options.level << ", " << options.threads
+  out << "Computer opponent, " << options.game << ", level " << options.level << ", "
+      << options.threads
       << " threads, seeds from " << options.seed << "\n";
-  out << "positions: potted the ball on in " << positions.potted << " of " << options.positions
+  const char* aim = *game == rules::Game::EightBall ? "potted a ball and kept the table"
+                    : *game == rules::Game::TenBall ? "potted the ball on as called"
+                                                    : "potted the ball on";
+  out << "positions: " << aim << " in " << positions.potted << " of " << options.positions
       << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
       << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";
   out << "racks: ran out " << racks.runouts << " of " << options.racks << " from the break ("

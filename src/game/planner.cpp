@@ -10,6 +10,7 @@
 #include "game/planner_candidates.hpp"
 #include "game/planner_evaluate.hpp"
 #include "game/planner_geometry.hpp"
+#include "game/planner_lookahead.hpp"
 #include "game/planner_robust.hpp"
 #include "nineball/log.hpp"
 #include "nineball/random.hpp"
@@ -56,6 +57,28 @@ std::vector<std::size_t> ranking(const std::vector<Candidate>& cands,
   return order;
 }
 
+// Simulates the next shot after the best candidates that keep the table (position play by
+// simulation rather than geometry); their worth and gains are updated. Returns the shots taken.
+long lookFurther(const SearchContext& ctx, const Evaluator& eval,
+                 const std::vector<Candidate>& cands, std::vector<double>& values,
+                 std::vector<double>& gains, int threads) {
+  std::vector<std::size_t> picked;
+  for (std::size_t i : ranking(cands, values)) {
+    if (static_cast<int>(picked.size()) >= ctx.level.lookahead_top) break;
+    if (values[i] >= kContinueBase && values[i] < 1.0) picked.push_back(i);
+  }
+  std::vector<LookAhead> found(picked.size());
+  parallelFor(picked.size(), threads,
+              [&](std::size_t k) { found[k] = lookAhead(ctx, eval, cands[picked[k]]); });
+  long sims = 0;
+  for (std::size_t k = 0; k < picked.size(); ++k) {
+    gains[picked[k]] = found[k].value - values[picked[k]];
+    values[picked[k]] = found[k].value;
+    sims += found[k].simulations;
+  }
+  return sims;
+}
+
 }  // namespace
 
 PlanInput planInputFrom(const Match& match) {
@@ -81,7 +104,7 @@ Plan Planner::plan(const PlanInput& in) {
   const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
   const Evaluator eval(in, table,
                        std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg));
-  const SearchContext ctx{in, table, settings_, in.physics.ball_radius, in.rack.ballOn()};
+  const SearchContext ctx{in, table, settings_, in.physics.ball_radius, in.rack.legalFirstBalls()};
   const BallState* cue = findOnTable(in.balls, kCueBall);
   const bool placing = in.cue_in_hand || !cue;
   const bool breaking = placing && in.rack.isBreak();
@@ -89,12 +112,19 @@ Plan Planner::plan(const PlanInput& in) {
       breaking ? std::min(settings_.robust_top, kBreakRobustTop) : settings_.robust_top;
 
   std::vector<Candidate> cands = candidatesFor(ctx, eval);
+  if (in.rack.pushOutAvailable() && !placing && settings_.push_out_headings > 0) {
+    const auto push_outs = pushOutShots(ctx, settings_.push_out_headings);
+    cands.insert(cands.end(), push_outs.begin(), push_outs.end());
+  }
+  assignCalls(ctx, cands);
   std::vector<double> values;
+  std::vector<double> gains;  // what the look ahead added to a candidate's worth
   long sims = 0;
   auto simulateFrom = [&](std::size_t first) {
     values.resize(cands.size(), 0.0);
+    gains.resize(cands.size(), 0.0);
     parallelFor(cands.size() - first, threads_, [&](std::size_t i) {
-      values[first + i] = eval.value(cands[first + i].shot, cands[first + i].cue);
+      values[first + i] = eval.value(cands[first + i]);
     });
     sims += static_cast<long>(cands.size() - first);
   };
@@ -108,18 +138,22 @@ Plan Planner::plan(const PlanInput& in) {
     if (settings_.robust_steps > 0 && top > 0) {
       const std::vector<std::size_t> ranked(order.begin(), order.begin() + top);
       choice = chooseRobustly(cands, ranked, eval, settings_, threads_,
-                              breaking ? kBreakNoiseScale : 1.0, !breaking);
+                              breaking ? kBreakNoiseScale : 1.0, !breaking, gains);
       sims += choice.simulations;
     }
     return choice;
   };
 
   simulateFrom(0);
+  if (!breaking && settings_.lookahead_top > 0) {
+    sims += lookFurther(ctx, eval, cands, values, gains, threads_);
+  }
   RobustChoice choice = choose();
   if (choice.value < kSweepBelow && !placing && settings_.sweep_headings > 0) {
     const std::size_t first = cands.size();
     const auto sweep = sweepShots(ctx, settings_.sweep_headings);
     cands.insert(cands.end(), sweep.begin(), sweep.end());
+    assignCalls(ctx, cands);
     simulateFrom(first);
     choice = choose();
   }
@@ -129,12 +163,15 @@ Plan Planner::plan(const PlanInput& in) {
   plan.value = choice.value;
   if (!cands.empty()) {
     const Candidate& c = cands[choice.index];
+    plan.turn.kind = c.kind == ShotKind::PushOut ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
     plan.turn.shot = c.shot;
     plan.turn.shot.heading_rad += choice.aim_shift;
     plan.turn.cue = c.cue;
+    plan.turn.call = c.call;
     plan.kind = c.kind;
     plan.target = c.target;
     plan.pocket = c.pocket;
+    plan.first = c.first;
   }
   last_think_seconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

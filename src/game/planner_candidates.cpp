@@ -34,6 +34,10 @@ const double kKickSpeeds[] = {1.2, 2.0, 3.2};
 const double kBlindSpeeds[] = {1.5, 3.0};
 constexpr int kBlindHeadings = 36;
 const double kSweepSpeeds[] = {1.0, 2.0, 3.5};
+// A push-out only has to leave the cue ball somewhere: soft, so that it is where it stops.
+const double kPushOutSpeeds[] = {0.6, 1.2, 2.0};
+// Safeties and kicks are tried on this many of the targets nearest the cue ball.
+constexpr int kSafetyTargets = 2;
 
 /// A direction to strike in, before speeds and tips are chosen.
 struct Line {
@@ -47,6 +51,7 @@ struct Line {
   // then allows for squirt and throw at each speed and tip.
   const BallState* object = nullptr;
   Vec2 send_to;
+  int first = 0;  // the ball meant to be hit first
 };
 
 double decel(const PhysicsParams& p) {
@@ -95,9 +100,10 @@ void keepBest(std::vector<Line>& lines, int count) {
   if (static_cast<int>(lines.size()) > count) lines.resize(static_cast<std::size_t>(count));
 }
 
+// Every pot of `on`, unranked.
 std::vector<Line> potLines(const SearchContext& ctx, const std::vector<BallState>& balls, Vec2 cue,
                            const BallState& on, std::optional<PocketId> only) {
-  const double sigma = degToRad(kReferenceAimDeg);
+  const double sigma = ctx.prior_sigma;
   std::vector<Line> lines;
   for (const Pocket& pocket : ctx.table.pockets) {
     if (only && pocket.id != *only) continue;
@@ -108,10 +114,10 @@ std::vector<Line> potLines(const SearchContext& ctx, const std::vector<BallState
       if (!hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
       lines.push_back(
           {ShotKind::Pot, g->heading, on.id, pocket.id, potChance(*g, pocket, ctx.radius, sigma),
-           minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, g->target});
+           minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, g->target,
+           on.id});
     }
   }
-  keepBest(lines, ctx.level.max_pot_lines);
   return lines;
 }
 
@@ -134,7 +140,7 @@ std::vector<Line> combinationLines(const SearchContext& ctx, const std::vector<B
       const double on_speed = minPotSpeed(ctx.in.physics, g2->to_ghost, g2->to_target, g2->cut);
       lines.push_back({ShotKind::Combination, g1->heading, second.id, pocket.id, prior,
                        strikerSpeed(ctx.in.physics, on_speed, g1->to_ghost, g1->cut), &on,
-                       g2->ghost});
+                       g2->ghost, on.id});
     }
   }
   keepBest(lines, kMaxCombinationLines);
@@ -164,7 +170,8 @@ std::vector<Line> bankLines(const SearchContext& ctx, const std::vector<BallStat
       if (!g || !hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
       lines.push_back({ShotKind::Bank, g->heading, on.id, pocket.id,
                        kBankDiscount * potChance(*g, pocket, ctx.radius, sigma),
-                       minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, image});
+                       minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, image,
+                       on.id});
     }
   }
   keepBest(lines, kMaxBankLines);
@@ -182,7 +189,7 @@ std::vector<Line> safetyLines(const SearchContext& ctx, const std::vector<BallSt
     const double heading = headingTo(cue, ghost);
     if (!hitsFirst(ctx, balls, cue, heading, on.id)) continue;
     lines.push_back(
-        {ShotKind::Safety, heading, on.id, std::nullopt, kSafetyPrior, 0.0, nullptr, {}});
+        {ShotKind::Safety, heading, on.id, std::nullopt, kSafetyPrior, 0.0, nullptr, {}, on.id});
   }
   return lines;
 }
@@ -195,7 +202,8 @@ std::vector<Line> kickLines(const SearchContext& ctx, const std::vector<BallStat
   auto add = [&](Vec2 image) {
     const double heading = headingTo(cue, image);
     if (meetsCushionFirst(ctx, balls, cue, heading)) {
-      lines.push_back({ShotKind::Kick, heading, on.id, std::nullopt, kKickPrior, 0.0, nullptr, {}});
+      lines.push_back(
+          {ShotKind::Kick, heading, on.id, std::nullopt, kKickPrior, 0.0, nullptr, {}, on.id});
     }
   };
   for (int r = 0; r < kRailCount; ++r) {
@@ -257,6 +265,7 @@ void expand(const SearchContext& ctx, Vec2 cue, const std::vector<Line>& lines,
         c.cue = placed;
         c.target = line.target;
         c.pocket = line.pocket;
+        c.first = line.first;
         c.prior = line.prior;
         out.push_back(c);
       }
@@ -278,9 +287,38 @@ std::vector<Vec2> usableTips(const SearchContext& ctx) {
 std::vector<Line> everyDirection(const SearchContext& ctx, int count) {
   std::vector<Line> lines;
   for (int i = 0; i < count; ++i) {
-    lines.push_back(
-        {ShotKind::Kick, 2.0 * kPi * i / count, ctx.ball_on, std::nullopt, 0.0, 0.0, nullptr, {}});
+    lines.push_back({ShotKind::Kick, 2.0 * kPi * i / count, ctx.firstTarget(), std::nullopt, 0.0,
+                     0.0, nullptr, {}});
   }
+  return lines;
+}
+
+// The targets on the table, and the `count` of them nearest the cue ball (all for count < 0).
+std::vector<const BallState*> targetBalls(const SearchContext& ctx,
+                                          const std::vector<BallState>& balls, Vec2 cue,
+                                          int count = -1) {
+  std::vector<const BallState*> out;
+  for (int id : ctx.targets) {
+    if (const BallState* b = objectBall(balls, id)) out.push_back(b);
+  }
+  if (count >= 0 && static_cast<int>(out.size()) > count) {
+    std::stable_sort(out.begin(), out.end(), [&](const BallState* a, const BallState* b) {
+      return length(a->pos - cue) < length(b->pos - cue);
+    });
+    out.resize(static_cast<std::size_t>(count));
+  }
+  return out;
+}
+
+// Lines of one generator for every ball in `ons`, the best `count` of them.
+template <typename Generate>
+std::vector<Line> linesFor(const std::vector<const BallState*>& ons, int count, Generate generate) {
+  std::vector<Line> lines;
+  for (const BallState* on : ons) {
+    const std::vector<Line> more = generate(*on);
+    lines.insert(lines.end(), more.begin(), more.end());
+  }
+  keepBest(lines, count);
   return lines;
 }
 
@@ -289,24 +327,38 @@ std::vector<Line> everyDirection(const SearchContext& ctx, int count) {
 std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<BallState>& balls,
                                  Vec2 cue, std::optional<Vec2> placed) {
   std::vector<Candidate> out;
-  const BallState* on = objectBall(balls, ctx.ball_on);
+  const std::vector<const BallState*> ons = targetBalls(ctx, balls, cue);
+  // Safeties and kicks are played on the nearest targets only: they mean to hit, not to pot.
+  const std::vector<const BallState*> near = targetBalls(ctx, balls, cue, kSafetyTargets);
   const LevelSettings& level = ctx.level;
   const std::vector<Vec2> centre{Vec2{}};
-  if (on) {
-    const auto pots = potLines(ctx, balls, cue, *on, std::nullopt);
+  if (!ons.empty()) {
+    const auto pots = linesFor(ons, level.max_pot_lines, [&](const BallState& on) {
+      return potLines(ctx, balls, cue, on, std::nullopt);
+    });
     expand(ctx, cue, pots, level.pot_speeds, usableTips(ctx), placed, out);
     if (level.combinations) {
-      expand(ctx, cue, combinationLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed,
-             out);
+      const auto combinations = linesFor(ons, kMaxCombinationLines, [&](const BallState& on) {
+        return combinationLines(ctx, balls, cue, on);
+      });
+      expand(ctx, cue, combinations, level.pot_speeds, centre, placed, out);
     }
     if (level.banks) {
-      expand(ctx, cue, bankLines(ctx, balls, cue, *on), level.pot_speeds, centre, placed, out);
+      const auto banks = linesFor(
+          ons, kMaxBankLines, [&](const BallState& on) { return bankLines(ctx, balls, cue, on); });
+      expand(ctx, cue, banks, level.pot_speeds, centre, placed, out);
     }
-    const auto safeties = safetyLines(ctx, balls, cue, *on);
+    std::vector<Line> safeties;
+    for (const BallState* on : near) {
+      const auto more = safetyLines(ctx, balls, cue, *on);
+      safeties.insert(safeties.end(), more.begin(), more.end());
+    }
     expand(ctx, cue, safeties, level.safety_speeds, centre, placed, out);
     if (pots.empty() && safeties.empty()) {
       const std::vector<double> kick_speeds(std::begin(kKickSpeeds), std::end(kKickSpeeds));
-      expand(ctx, cue, kickLines(ctx, balls, cue, *on), kick_speeds, centre, placed, out);
+      for (const BallState* on : near) {
+        expand(ctx, cue, kickLines(ctx, balls, cue, *on), kick_speeds, centre, placed, out);
+      }
     }
   }
   if (out.empty()) {
@@ -327,13 +379,57 @@ std::vector<Candidate> sweepShots(const SearchContext& ctx, int headings) {
 }
 
 std::vector<Candidate> potsInto(const SearchContext& ctx, const std::vector<BallState>& balls,
-                                Vec2 cue, PocketId pocket, std::optional<Vec2> placed) {
+                                Vec2 cue, int ball, PocketId pocket, std::optional<Vec2> placed) {
   std::vector<Candidate> out;
-  if (const BallState* on = objectBall(balls, ctx.ball_on)) {
-    expand(ctx, cue, potLines(ctx, balls, cue, *on, pocket), ctx.level.pot_speeds, usableTips(ctx),
-           placed, out);
+  if (const BallState* on = objectBall(balls, ball)) {
+    std::vector<Line> lines = potLines(ctx, balls, cue, *on, pocket);
+    keepBest(lines, ctx.level.max_pot_lines);
+    expand(ctx, cue, lines, ctx.level.pot_speeds, usableTips(ctx), placed, out);
   }
   return out;
+}
+
+std::vector<Candidate> plainPots(const SearchContext& ctx, const std::vector<BallState>& balls,
+                                 Vec2 cue, int lines, const std::vector<double>& speeds,
+                                 const std::vector<Vec2>& tips) {
+  std::vector<Candidate> out;
+  const auto pots = linesFor(targetBalls(ctx, balls, cue), lines, [&](const BallState& on) {
+    return potLines(ctx, balls, cue, on, std::nullopt);
+  });
+  expand(ctx, cue, pots, speeds, tips, std::nullopt, out);
+  return out;
+}
+
+std::vector<Candidate> pushOutShots(const SearchContext& ctx, int headings) {
+  std::vector<Line> lines = everyDirection(ctx, headings);
+  for (Line& line : lines) {
+    line.kind = ShotKind::PushOut;
+    line.target = 0;
+  }
+  std::vector<Candidate> out;
+  const std::vector<double> speeds(std::begin(kPushOutSpeeds), std::end(kPushOutSpeeds));
+  const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
+  expand(ctx, cue ? cue->pos : Vec2{}, lines, speeds, {Vec2{}}, std::nullopt, out);
+  return out;
+}
+
+void assignCalls(const SearchContext& ctx, std::vector<Candidate>& cands) {
+  if (!ctx.in.rack.callRequired()) return;
+  for (Candidate& c : cands) {
+    if (c.kind == ShotKind::PushOut) continue;
+    if (c.pocket && c.target > 0) {
+      c.call = rules::Call{c.target, *c.pocket};
+      continue;
+    }
+    const int ball = c.first > 0 ? c.first : ctx.firstTarget();
+    const BallState* b = objectBall(ctx.in.balls, ball);
+    if (!b) continue;
+    const Pocket* nearest = nullptr;
+    for (const Pocket& p : ctx.table.pockets) {
+      if (!nearest || length(p.drop_centre - b->pos) < length(nearest->drop_centre - b->pos)) nearest = &p;
+    }
+    if (nearest) c.call = rules::Call{ball, nearest->id};
+  }
 }
 
 }  // namespace nineball::ai

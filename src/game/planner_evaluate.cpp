@@ -17,21 +17,28 @@ namespace {
 // known, and a pathological one must not stall the search.
 constexpr double kMaxShotTime = 40.0;
 
-constexpr double kContinueBase = 0.55;
-constexpr double kContinueSpread = 0.4;
 constexpr double kLeaveBase = 0.45;
 constexpr double kLeaveSpread = 0.4;
+// A position worth this to whoever shoots from it when the chance of a pot there is c:
+// a pot keeps the table (about 0.75), a miss gives it away (about 0.25).
+constexpr double kShooterBase = 0.25;
+constexpr double kShooterSpread = 0.5;
 
-// A foul nothing later in the shot can undo: the cue ball pocketed, or its first contact with
-// a ball other than the ball on.
-bool foulDecided(const std::vector<Event>& events, int ball_on) {
+bool contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+// A foul nothing later in the shot can undo: the cue ball pocketed, or (unless `any_first`,
+// as on a push-out) its first contact with a ball it may not hit first.
+bool foulDecided(const std::vector<Event>& events, const std::vector<int>& legal_first,
+                 bool any_first) {
   bool first_seen = false;
   for (const Event& e : events) {
     if (e.type == EventType::Pocket && e.a == kCueBall) return true;
-    if (e.type != EventType::BallBall || first_seen) continue;
+    if (any_first || e.type != EventType::BallBall || first_seen) continue;
     if (e.a != kCueBall && e.b != kCueBall) continue;
     first_seen = true;
-    if ((e.a == kCueBall ? e.b : e.a) != ball_on) return true;
+    if (!contains(legal_first, e.a == kCueBall ? e.b : e.a)) return true;
   }
   return false;
 }
@@ -70,10 +77,10 @@ std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
   return balls;
 }
 
-double Evaluator::value(const Shot& shot, std::optional<Vec2> cue) const {
+std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) const {
   World world(in_.table, in_.physics, step_);
-  if (cue) {
-    for (const BallState& b : ballsWithCueAt(*cue)) world.addBall(b);
+  if (c.cue) {
+    for (const BallState& b : ballsWithCueAt(*c.cue)) world.addBall(b);
   } else {
     for (const BallState& b : in_.balls) {
       if (!b.pocket) world.addBall(b);
@@ -82,47 +89,64 @@ double Evaluator::value(const Shot& shot, std::optional<Vec2> cue) const {
   world.strike(kCueBall, shot);
   // Under WPA rules a scratch or a wrong first ball is a foul whatever follows, and a foul is
   // worth the same wherever the balls stop (ball in hand): the rest of the shot is not run.
-  const int ball_on = in_.rack.ballOn();
+  const bool push_out = c.kind == ShotKind::PushOut;
+  const std::vector<int> legal_first = in_.rack.legalFirstBalls();
   const bool may_stop = in_.rack.rules() == rules::RuleSet::Wpa && !in_.rack.isBreak();
-  world.runUntilRest(
-      [&](const std::vector<Event>& events) { return may_stop && foulDecided(events, ball_on); });
-  const rules::ShotSummary summary = game::summarize(world.events());
-  rules::Rack rack = in_.rack;
-  rules::Verdict verdict;
+  world.runUntilRest([&](const std::vector<Event>& events) {
+    return may_stop && foulDecided(events, legal_first, push_out);
+  });
+  rules::ShotSummary summary = game::summarize(world.events());
+  summary.call = c.call;
+  Outcome o{{}, in_.rack, {}, summary.cue_pocketed};
   try {
-    verdict = rack.shoot(summary, false);
+    o.verdict = o.rack.shoot(summary, push_out);
   } catch (const std::logic_error&) {
-    return 0.0;  // the rules take no shot now: nothing to gain
+    return std::nullopt;
   }
-  std::vector<BallState> after = world.balls();
-  for (int spotted : verdict.to_spot) {
-    for (BallState& b : after) {
+  o.balls = world.balls();
+  for (int spotted : o.verdict.to_spot) {
+    for (BallState& b : o.balls) {
       if (b.id != spotted) continue;
       b.pocket.reset();
       b.pos = table_.footSpot();
     }
   }
-  return score(after, rack, verdict, summary.cue_pocketed);
+  return o;
 }
 
-double Evaluator::score(const std::vector<BallState>& after, const rules::Rack& rack,
-                        const rules::Verdict& verdict, bool cue_pocketed) const {
+double Evaluator::value(const Candidate& c, const Shot& shot) const {
+  const std::optional<Outcome> o = outcome(c, shot);
+  return o ? score(*o) : 0.0;  // the rules take no shot now: nothing to gain
+}
+
+double Evaluator::chanceFrom(const std::vector<BallState>& after, const rules::Rack& rack,
+                             Vec2 cue) const {
+  double best = 0.0;
+  for (int ball : rack.legalFirstBalls()) {
+    best = std::max(best,
+                    bestPotChance(table_, in_.physics.ball_radius, after, cue, ball, sigma_rad_));
+  }
+  return best;
+}
+
+double Evaluator::score(const Outcome& o) const {
+  const rules::Verdict& verdict = o.verdict;
   const rules::Player me = in_.rack.shooter();
   if (verdict.winner) return *verdict.winner == me ? 1.0 : 0.0;
-  const double r = in_.physics.ball_radius;
-  auto chanceFrom = [&](Vec2 cue) {
-    return bestPotChance(table_, r, after, cue, rack.ballOn(), sigma_rad_);
-  };
-  const BallState* cue = findOnTable(after, kCueBall);
+  const BallState* cue = findOnTable(o.balls, kCueBall);
   double chance = kInHandChance;
   if (!verdict.ball_in_hand) {
-    if (cue && !cue_pocketed) {
-      chance = chanceFrom(cue->pos);
+    if (cue && !o.cue_pocketed) {
+      chance = chanceFrom(o.balls, o.rack, cue->pos);
     } else if (verdict.cue_to_head_spot) {
-      chance = chanceFrom({table_.headStringX(), 0.0});
+      chance = chanceFrom(o.balls, o.rack, {table_.headStringX(), 0.0});
     }
   }
   if (verdict.next == me) return kContinueBase + kContinueSpread * chance;
+  if (verdict.legal() && verdict.decision == rules::Decision::PlayOrPass) {
+    const double shooter = kShooterBase + kShooterSpread * chance;
+    return std::min(shooter, 1.0 - shooter);
+  }
   if (verdict.legal()) return kLeaveBase - kLeaveSpread * chance;
   return kFoulValueTop * (1.0 - chance);
 }

@@ -16,35 +16,62 @@ constexpr double kInHandChance = 0.9;
 /// Every foul is worth at most this much; every legal shot more.
 constexpr double kFoulValueTop = 0.04;
 
-/// One shot to try: where the cue ball goes first (ball in hand) and the strike.
+/// A legal shot that keeps the table is worth at least this much; anything less lost it.
+constexpr double kContinueBase = 0.55;
+constexpr double kContinueSpread = 0.4;
+
+/// One shot to try: where the cue ball goes first (ball in hand), the strike, and the call.
 struct Candidate {
   ShotKind kind = ShotKind::Safety;
   Shot shot;
   std::optional<Vec2> cue;
   int target = 0;
   std::optional<PocketId> pocket;
+  int first = 0;  ///< the ball meant to be hit first (0: none in particular)
+  std::optional<rules::Call> call;
   double prior = 0.0;  ///< how promising it looks before any simulation; orders ties
 };
 
+/// Where a simulated shot left the rack: the balls (spotted ones back on the table), the
+/// rules' state and their verdict.
+struct Outcome {
+  std::vector<BallState> balls;
+  rules::Rack rack;
+  rules::Verdict verdict;
+  bool cue_pocketed = false;
+};
+
 /// Plays shots from one position through the physics and scores each outcome for the shooter
-/// with the rules: a win 1, a loss 0; a legal pot 0.55 + 0.4 x the chance of potting the next
-/// ball from where the cue ball stops; a legal miss 0.45 - 0.4 x the opponent's chance; a foul
-/// below any legal shot. Safe to call from several threads: every call builds its own world.
+/// with the rules: a win 1, a loss 0; a legal pot 0.55 + 0.4 x the chance of potting a ball
+/// on next from where the cue ball stops; a legal miss 0.45 - 0.4 x the opponent's chance; a
+/// position the opponent may play or pass back (a push-out, a ten-ball call breach) the lesser
+/// of its worth to either player, since the opponent takes the better; a foul below any legal
+/// shot. Safe to call from several threads: every call builds its own world.
 class Evaluator {
  public:
   /// `judging_aim_deg`: the aim error of the player whose chances a position is judged by.
   Evaluator(const PlanInput& in, const TableGeometry& table,
             double judging_aim_deg = kReferenceAimDeg);
 
-  /// The worth of the outcome of `shot` (after placing the cue ball at `cue`, if given).
-  double value(const Shot& shot, std::optional<Vec2> cue) const;
+  /// The worth of the outcome of the candidate struck with `shot` (its own, or one with
+  /// cueing errors): the cue ball placed first when it says so, its call, a push-out if it is.
+  double value(const Candidate& c, const Shot& shot) const;
+  double value(const Candidate& c) const { return value(c, c.shot); }
+
+  /// The same shot's outcome, for a look further ahead; nothing when the rules take no shot.
+  std::optional<Outcome> outcome(const Candidate& c, const Shot& shot) const;
+  /// The worth of an outcome as `value` scores it.
+  double score(const Outcome& o) const;
 
   /// The balls on the table with the cue ball at `cue` (added if it was pocketed or absent).
   std::vector<BallState> ballsWithCueAt(Vec2 cue) const;
 
+  /// The aim error (rad) positions are judged by.
+  double judgingSigma() const { return sigma_rad_; }
+
  private:
-  double score(const std::vector<BallState>& after, const rules::Rack& rack,
-               const rules::Verdict& verdict, bool cue_pocketed) const;
+  // The best chance of potting any ball `rack` allows first, from a cue ball at `cue`.
+  double chanceFrom(const std::vector<BallState>& after, const rules::Rack& rack, Vec2 cue) const;
 
   const PlanInput& in_;
   const TableGeometry& table_;

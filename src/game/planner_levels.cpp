@@ -55,6 +55,7 @@ LevelSettings LevelSettings::of(Level level) {
       s.sweep_headings = 36;
       s.break_spots = 1;
       s.break_speeds = {9.0};
+      s.push_out_headings = 12;
       s.aim_noise_deg = 1.5;
       s.speed_noise = 0.08;
       break;
@@ -74,6 +75,11 @@ LevelSettings LevelSettings::of(Level level) {
       s.robust_steps = 4;
       s.robust_aim_deg = 0.75;
       s.robust_speed = 0.06;
+      s.lookahead_top = 4;
+      s.lookahead_lines = 2;
+      s.lookahead_speeds = {1.2, 2.5};
+      s.lookahead_tips = {{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.3}};
+      s.push_out_headings = 24;
       s.aim_noise_deg = 0.5;
       s.speed_noise = 0.04;
       break;
@@ -96,6 +102,11 @@ LevelSettings LevelSettings::of(Level level) {
       s.robust_steps = 5;
       s.robust_aim_deg = 0.15;
       s.robust_speed = 0.03;
+      s.lookahead_top = 8;
+      s.lookahead_lines = 3;
+      s.lookahead_speeds = {1.0, 1.9, 3.2};
+      s.lookahead_tips = {{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.3}};
+      s.push_out_headings = 36;
       s.aim_noise_deg = 0.1;
       s.speed_noise = 0.02;
       break;

@@ -31,6 +31,7 @@ struct Placement {
   Vec2 cue;
   PocketId pocket = PocketId::TopLeft;
   double prior = 0.0;
+  int ball = 0;  // the ball to pot from there
 };
 
 bool legalSpot(const SearchContext& ctx, Vec2 c) {
@@ -61,7 +62,7 @@ std::vector<Placement> potPlacements(const SearchContext& ctx, const Evaluator& 
         const auto balls = eval.ballsWithCueAt(c);
         const auto line = ghostLine(c, on.pos, target, ctx.radius);
         if (!line || !pathClear(c, ghost, ctx.radius, balls, kCueBall, on.id)) continue;
-        spots.push_back({c, pocket.id, potChance(*line, pocket, ctx.radius, sigma)});
+        spots.push_back({c, pocket.id, potChance(*line, pocket, ctx.radius, sigma), on.id});
       }
     }
   }
@@ -130,11 +131,23 @@ Vec2 anyLegalSpot(const SearchContext& ctx) {
   return head;
 }
 
+// The rack's apex: the object ball nearest the head string on the long axis (nine- and
+// ten-ball rack the 1 there).
+const BallState* apexBall(const SearchContext& ctx) {
+  const Vec2 head{ctx.table.headStringX(), 0.0};
+  const BallState* apex = nullptr;
+  for (const BallState& b : ctx.in.balls) {
+    if (b.pocket || b.id == kCueBall) continue;
+    if (!apex || length(b.pos - head) < length(apex->pos - head)) apex = &b;
+  }
+  return apex;
+}
+
 }  // namespace
 
 std::vector<Candidate> breakShots(const SearchContext& ctx, const Evaluator& eval) {
   std::vector<Candidate> out;
-  const BallState* on = objectBall(ctx.in.balls, ctx.ball_on);
+  const BallState* on = apexBall(ctx);
   const int spots = std::min<int>(ctx.level.break_spots, std::size(kBreakSpots));
   for (int i = 0; i < spots; ++i) {
     const Vec2 c{ctx.table.headStringX(), kBreakSpots[i]};
@@ -149,7 +162,8 @@ std::vector<Candidate> breakShots(const SearchContext& ctx, const Evaluator& eva
         cand.shot.speed = speed;
         cand.shot.tip = tip;
         cand.cue = c;
-        cand.target = ctx.ball_on;
+        cand.target = on ? on->id : 0;
+        cand.first = cand.target;
         out.push_back(cand);
       }
     }
@@ -163,13 +177,19 @@ std::vector<Candidate> breakShots(const SearchContext& ctx, const Evaluator& eva
 
 std::vector<Candidate> inHandShots(const SearchContext& ctx, const Evaluator& eval) {
   std::vector<Candidate> out;
-  const BallState* on = objectBall(ctx.in.balls, ctx.ball_on);
-  if (on) {
-    for (const Placement& p :
-         spreadOverPockets(potPlacements(ctx, eval, *on), ctx.level.placements)) {
-      const auto shots = potsInto(ctx, eval.ballsWithCueAt(p.cue), p.cue, p.pocket, p.cue);
-      out.insert(out.end(), shots.begin(), shots.end());
+  std::vector<Placement> spots;
+  for (int id : ctx.targets) {
+    if (const BallState* b = objectBall(ctx.in.balls, id)) {
+      const auto more = potPlacements(ctx, eval, *b);
+      spots.insert(spots.end(), more.begin(), more.end());
     }
+  }
+  for (const Placement& p : spreadOverPockets(spots, ctx.level.placements)) {
+    const auto shots = potsInto(ctx, eval.ballsWithCueAt(p.cue), p.cue, p.ball, p.pocket, p.cue);
+    out.insert(out.end(), shots.begin(), shots.end());
+  }
+  // With nothing to pot, play safe on the lowest target from a spot near it.
+  if (const BallState* on = objectBall(ctx.in.balls, ctx.firstTarget())) {
     if (out.empty()) {
       for (Vec2 c : safetySpots(ctx, eval, *on)) {
         const auto shots = shotsFrom(ctx, eval.ballsWithCueAt(c), c, c);

@@ -22,7 +22,7 @@ constexpr int kMaxShiftSteps = 2;
 RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
                             const std::vector<std::size_t>& ranked, const Evaluator& eval,
                             const LevelSettings& level, int threads, double error_scale,
-                            bool centre) {
+                            bool centre, const std::vector<double>& position_gain) {
   const int m = level.robust_steps;
   const int aims = 2 * m + 1;
   const std::size_t per = static_cast<std::size_t>(aims * kSpeedCount);
@@ -36,7 +36,7 @@ RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
     Shot shot = c.shot;
     shot.heading_rad += a * step;
     shot.speed *= 1.0 + kSpeedErrors[s] * speed_error;
-    grid[j] = eval.value(shot, c.cue);
+    grid[j] = eval.value(c, shot);
   });
 
   RobustChoice best;
@@ -46,17 +46,22 @@ RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
   for (std::size_t r = 0; r < ranked.size(); ++r) {
     for (int mag = 0; mag <= max_shift; ++mag) {
       for (int shift : {mag, -mag}) {
-        double num = 0.0, den = 0.0;
+        double num = 0.0, den = 0.0, kept = 0.0;
         for (int a = -m; a <= m; ++a) {
           const double d = (a - shift) / kStepsPerDeviation;
           const double wa = std::exp(-0.5 * d * d);
           for (int s = 0; s < kSpeedCount; ++s) {
             const double w = wa * kSpeedWeights[s];
-            num += w * grid[r * per + static_cast<std::size_t>((a + m) * kSpeedCount + s)];
+            const double v = grid[r * per + static_cast<std::size_t>((a + m) * kSpeedCount + s)];
+            num += w * v;
             den += w;
+            if (v >= kContinueBase && v < 1.0) kept += w;
           }
         }
-        const double expected = num / den;
+        // The look ahead judged the position the shot leaves when it keeps the table: its
+        // gain counts as often as the table is kept.
+        const double gain = position_gain.empty() ? 0.0 : position_gain[ranked[r]];
+        const double expected = (num + gain * kept) / den;
         if (expected > best.value) {
           best.value = expected;
           best.index = ranked[r];

@@ -23,9 +23,11 @@ struct RobustChoice {
 /// grid as the errors' normal distribution would. Ties go to the better-ranked candidate and
 /// the smaller shift, so the answer never depends on the threads. `error_scale` scales the
 /// check's deviations (the break is cued more precisely); `centre` false keeps the aim as is.
+/// `position_gain[i]` (when not empty) is what a look one shot further ahead added to
+/// candidate i's worth when it keeps the table; it is added to every grid point that does.
 RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
                             const std::vector<std::size_t>& ranked, const Evaluator& eval,
                             const LevelSettings& level, int threads, double error_scale,
-                            bool centre);
+                            bool centre, const std::vector<double>& position_gain = {});
 
 }  // namespace nineball::ai

@@ -121,10 +121,6 @@ MatchScript parseDocument(const json& doc) {
   }
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = script.players[0] || script.players[1];
-  if (computer_plays && setup.game != rules::Game::NineBall) {
-    refuse("players",
-           std::string("the computer plays nine-ball only, not ") + rules::gameName(setup.game));
-  }
   if (const json* p = optional(doc, "rules")) {
     const std::string name = text(*p, "rules");
     const auto rules = rules::ruleSetFromName(name);

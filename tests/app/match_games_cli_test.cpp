@@ -69,7 +69,7 @@ TEST(MatchCliGames, BadGameFieldsAreRefused) {
   const std::pair<const char*, const char*> cases[] = {
       {R"({"game": "snooker", "turns": []})", "game: unknown game \"snooker\""},
       {R"({"game": "eight-ball", "rules": "paper", "turns": []})", "rules: the paper's rules"},
-      {R"({"game": "ten-ball", "players": {"A": "ai:easy"}})", "players: the computer plays"},
+      {R"({"game": "ten-ball", "players": {"A": "ai:pro"}})", "players.A: unknown player"},
       {R"({"turns": [{"heading_deg": 0, "speed": 1, "call": {"ball": 1, "pocket": "middle"}}]})",
        "turns[0].call.pocket: unknown pocket \"middle\""},
       {R"({"turns": [{"heading_deg": 0, "speed": 1, "call": {"ball": 16, "pocket": "top-left"}}]})",
