@@ -64,10 +64,6 @@ ComputerMove fallbackMove(const GameSession& session) {
   return m;
 }
 
-}  // namespace
-
-namespace {
-
 std::string planText(const ai::Plan& plan, int ball_on) {
   // Eight-ball has no single ball on: the plan names the ball it hits first.
   const std::string on = "the " + std::to_string(plan.first > 0 ? plan.first : ball_on);
