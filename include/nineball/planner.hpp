@@ -25,30 +25,30 @@ std::optional<Level> levelFromName(const std::string& name);
 
 /// What one level searches and how precisely it executes the chosen shot.
 struct LevelSettings {
-  std::vector<double> pot_speeds;     ///< m/s tried on every pot line (slower ones are dropped)
-  std::vector<Vec2> tips;             ///< [side, height] tried on every pot line
-  std::vector<double> safety_speeds;  ///< m/s tried on every safety line
-  int safety_angles = 0;              ///< object-ball directions tried for safeties
-  int pocket_aims = 1;                ///< points across each pocket mouth aimed at
-  int max_pot_lines = 0;              ///< pot lines kept, the easiest first
-  bool combinations = false;          ///< ball on into another ball into a pocket
-  bool banks = false;                 ///< the ball on off one cushion into a pocket
-  bool kicks = false;                 ///< the cue ball off two cushions to the ball on
-  int sweep_headings = 0;             ///< directions tried when no aimed shot is worth much
-  int placements = 1;                 ///< ball in hand: cue positions tried
-  int break_spots = 1;                ///< cue positions on the head string tried for the break
-  std::vector<double> break_speeds;   ///< m/s tried for the break
-  int robust_top = 0;                 ///< best candidates re-simulated with cueing errors
-  int robust_steps = 0;               ///< heading errors tried each way, in half deviations
-  double robust_aim_deg = 0.0;        ///< standard deviation of the heading error of that check
-  double robust_speed = 0.0;          ///< standard deviation of its relative speed error
-  int lookahead_top = 0;              ///< best candidates whose next shot is simulated
-  int lookahead_lines = 0;            ///< ... the easiest pot lines of that next shot
+  std::vector<double> pot_speeds;        ///< m/s tried on every pot line (slower ones are dropped)
+  std::vector<Vec2> tips;                ///< [side, height] tried on every pot line
+  std::vector<double> safety_speeds;     ///< m/s tried on every safety line
+  int safety_angles = 0;                 ///< object-ball directions tried for safeties
+  int pocket_aims = 1;                   ///< points across each pocket mouth aimed at
+  int max_pot_lines = 0;                 ///< pot lines kept, the easiest first
+  bool combinations = false;             ///< ball on into another ball into a pocket
+  bool banks = false;                    ///< the ball on off one cushion into a pocket
+  bool kicks = false;                    ///< the cue ball off two cushions to the ball on
+  int sweep_headings = 0;                ///< directions tried when no aimed shot is worth much
+  int placements = 1;                    ///< ball in hand: cue positions tried
+  int break_spots = 1;                   ///< cue positions on the head string tried for the break
+  std::vector<double> break_speeds;      ///< m/s tried for the break
+  int robust_top = 0;                    ///< best candidates re-simulated with cueing errors
+  int robust_steps = 0;                  ///< heading errors tried each way, in half deviations
+  double robust_aim_deg = 0.0;           ///< standard deviation of the heading error of that check
+  double robust_speed = 0.0;             ///< standard deviation of its relative speed error
+  int lookahead_top = 0;                 ///< best candidates whose next shot is simulated
+  int lookahead_lines = 0;               ///< ... the easiest pot lines of that next shot
   std::vector<double> lookahead_speeds;  ///< ... at these speeds (m/s)
   std::vector<Vec2> lookahead_tips;      ///< ... and tips
-  int push_out_headings = 0;          ///< directions tried for a push-out (0: never pushes out)
-  double aim_noise_deg = 0.0;         ///< standard deviation of the executed heading
-  double speed_noise = 0.0;           ///< standard deviation of the executed speed, relative
+  int push_out_headings = 0;             ///< directions tried for a push-out (0: never pushes out)
+  double aim_noise_deg = 0.0;            ///< standard deviation of the executed heading
+  double speed_noise = 0.0;              ///< standard deviation of the executed speed, relative
 
   /// The settings of a level (the table in README.md, "Computer opponent").
   static LevelSettings of(Level level);

@@ -176,8 +176,7 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   out << std::fixed << std::setprecision(2);
   out << "Computer opponent, " << options.game << ", level " << options.level << ", "
-      << options.threads
-      << " threads, seeds from " << options.seed << "\n";
+      << options.threads << " threads, seeds from " << options.seed << "\n";
   const char* aim = *game == rules::Game::EightBall ? "potted a ball and kept the table"
                     : *game == rules::Game::TenBall ? "potted the ball on as called"
                                                     : "potted the ball on";

@@ -123,9 +123,8 @@ Plan Planner::plan(const PlanInput& in) {
   auto simulateFrom = [&](std::size_t first) {
     values.resize(cands.size(), 0.0);
     gains.resize(cands.size(), 0.0);
-    parallelFor(cands.size() - first, threads_, [&](std::size_t i) {
-      values[first + i] = eval.value(cands[first + i]);
-    });
+    parallelFor(cands.size() - first, threads_,
+                [&](std::size_t i) { values[first + i] = eval.value(cands[first + i]); });
     sims += static_cast<long>(cands.size() - first);
   };
   auto choose = [&] {

@@ -114,8 +114,7 @@ std::vector<Line> potLines(const SearchContext& ctx, const std::vector<BallState
       if (!hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
       lines.push_back(
           {ShotKind::Pot, g->heading, on.id, pocket.id, potChance(*g, pocket, ctx.radius, sigma),
-           minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, g->target,
-           on.id});
+           minPotSpeed(ctx.in.physics, g->to_ghost, g->to_target, g->cut), &on, g->target, on.id});
     }
   }
   return lines;
@@ -287,8 +286,14 @@ std::vector<Vec2> usableTips(const SearchContext& ctx) {
 std::vector<Line> everyDirection(const SearchContext& ctx, int count) {
   std::vector<Line> lines;
   for (int i = 0; i < count; ++i) {
-    lines.push_back({ShotKind::Kick, 2.0 * kPi * i / count, ctx.firstTarget(), std::nullopt, 0.0,
-                     0.0, nullptr, {}});
+    lines.push_back({ShotKind::Kick,
+                     2.0 * kPi * i / count,
+                     ctx.firstTarget(),
+                     std::nullopt,
+                     0.0,
+                     0.0,
+                     nullptr,
+                     {}});
   }
   return lines;
 }
@@ -426,7 +431,8 @@ void assignCalls(const SearchContext& ctx, std::vector<Candidate>& cands) {
     if (!b) continue;
     const Pocket* nearest = nullptr;
     for (const Pocket& p : ctx.table.pockets) {
-      if (!nearest || length(p.drop_centre - b->pos) < length(nearest->drop_centre - b->pos)) nearest = &p;
+      if (!nearest || length(p.drop_centre - b->pos) < length(nearest->drop_centre - b->pos))
+        nearest = &p;
     }
     if (nearest) c.call = rules::Call{ball, nearest->id};
   }

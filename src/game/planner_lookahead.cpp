@@ -33,11 +33,10 @@ LookAhead lookAhead(const SearchContext& ctx, const Evaluator& eval, const Candi
   next.balls = o->balls;
   next.rack = o->rack;
   const Evaluator next_eval(next, ctx.table, radToDeg(eval.judgingSigma()));
-  SearchContext next_ctx{next, ctx.table, ctx.level, ctx.radius, next.rack.legalFirstBalls(),
-                         eval.judgingSigma()};
-  std::vector<Candidate> pots =
-      plainPots(next_ctx, next.balls, cue->pos, ctx.level.lookahead_lines,
-                ctx.level.lookahead_speeds, ctx.level.lookahead_tips);
+  SearchContext next_ctx{
+      next, ctx.table, ctx.level, ctx.radius, next.rack.legalFirstBalls(), eval.judgingSigma()};
+  std::vector<Candidate> pots = plainPots(next_ctx, next.balls, cue->pos, ctx.level.lookahead_lines,
+                                          ctx.level.lookahead_speeds, ctx.level.lookahead_tips);
   assignCalls(next_ctx, pots);
   double best = 0.0;
   for (const Candidate& p : pots) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 
+#include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/plan_json.hpp"
@@ -110,28 +111,10 @@ MatchScript parseDocument(const json& doc) {
             {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
   MatchScript script;
   MatchSetup& setup = script.setup;
-  if (const json* p = optional(doc, "game")) {
-    const std::string name = text(*p, "game");
-    const auto game = rules::gameFromName(name);
-    if (!game) {
-      refuse("game", "unknown game " + quote(name) +
-                         " (expected \"nine-ball\", \"eight-ball\" or \"ten-ball\")");
-    }
-    setup.game = *game;
-  }
+  setup.game = gameField(doc);
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = script.players[0] || script.players[1];
-  if (const json* p = optional(doc, "rules")) {
-    const std::string name = text(*p, "rules");
-    const auto rules = rules::ruleSetFromName(name);
-    if (!rules)
-      refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
-    setup.rules = *rules;
-    if (setup.rules == rules::RuleSet::Paper && setup.game != rules::Game::NineBall) {
-      refuse("rules", std::string("the paper's rules are nine-ball's only, not ") +
-                          rules::gameName(setup.game) + "'s");
-    }
-  }
+  setup.rules = rulesField(doc, setup.game);
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_json.hpp"
@@ -15,18 +16,12 @@ using nlohmann::ordered_json;
 
 PlanScene parseDocument(json doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
-  allowOnly(
-      doc, "",
-      {"table", "physics", "balls", "shot", "until", "step", "rules", "ball_in_hand", "level"});
+  allowOnly(doc, "",
+            {"table", "physics", "balls", "shot", "until", "step", "game", "rules", "ball_in_hand",
+             "level"});
   PlanScene plan;
-  rules::RuleSet rule_set = rules::RuleSet::Wpa;
-  if (const json* p = optional(doc, "rules")) {
-    const std::string name = text(*p, "rules");
-    const auto found = rules::ruleSetFromName(name);
-    if (!found)
-      refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
-    rule_set = *found;
-  }
+  const rules::Game game = gameField(doc);
+  const rules::RuleSet rule_set = rulesField(doc, game);
   bool in_hand = false;
   if (const json* p = optional(doc, "ball_in_hand")) {
     if (!p->is_boolean()) refuse("ball_in_hand", "expected true or false, found " + describe(*p));
@@ -41,7 +36,7 @@ PlanScene parseDocument(json doc) {
     }
     plan.level = *found;
   }
-  for (const char* key : {"rules", "ball_in_hand", "level"}) doc.erase(key);
+  for (const char* key : {"game", "rules", "ball_in_hand", "level"}) doc.erase(key);
   SceneResult parsed = sceneFromJson(doc);
   if (const auto* refused = std::get_if<ParseError>(&parsed)) throw *refused;
   const Scene& scene = std::get<Scene>(parsed);
@@ -64,7 +59,16 @@ PlanScene parseDocument(json doc) {
   in.physics = scene.physics;
   in.step = scene.step;
   in.balls = scene.balls;
-  in.rack = rules::Rack(rule_set, object_balls, false);
+  if (game != rules::Game::NineBall) {
+    for (int id : object_balls) {
+      const int last = game == rules::Game::EightBall ? 15 : 10;
+      if (id > last) {
+        refuse("balls", std::string(rules::gameName(game)) + " has no ball " + std::to_string(id) +
+                            " (1-" + std::to_string(last) + ")");
+      }
+    }
+  }
+  in.rack = rules::Rack(game, rule_set, object_balls, false);
   in.cue_in_hand = in_hand;
   return plan;
 }
@@ -96,6 +100,9 @@ ordered_json planToJson(const ai::Plan& plan) {
   doc["speed"] = shot.speed;
   doc["tip"] = {shot.tip.x, shot.tip.y};
   if (plan.turn.cue) doc["cue"] = {plan.turn.cue->x, plan.turn.cue->y};
+  if (plan.turn.call) {
+    doc["call"] = {{"ball", plan.turn.call->ball}, {"pocket", pocketName(plan.turn.call->pocket)}};
+  }
   return doc;
 }
 

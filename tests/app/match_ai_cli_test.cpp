@@ -27,6 +27,31 @@ TEST(MatchAiCli, TwoComputerPlayersPlayARackToItsEndTheSameWayEveryTime) {
   EXPECT_EQ(second.out, first.out);
 }
 
+TEST(MatchAiCli, TwoComputersPlayEightBallAndTenBallRacksToTheirEnd) {
+  for (const char* game : {"eight-ball", "ten-ball"}) {
+    const std::string script = std::string(R"({"game": ")") + game +
+                               R"(", "seed": 4, "players": {"A": "ai:easy", "B": "ai:easy"}})";
+    const CliOutcome first = runOnDocument("match", script);
+    ASSERT_EQ(first.status, 0) << game << ": " << first.err;
+    const auto doc = nlohmann::json::parse(first.out);
+    EXPECT_FALSE(doc["winner"].is_null()) << game;
+    bool called = false;
+    for (const auto& t : doc["turns"]) {
+      called = called || t.contains("call");
+      if (std::string(game) == "eight-ball") {
+        EXPECT_TRUE(t.contains("groups"));
+      }
+    }
+    // Ten-ball calls every shot after the break; eight-ball calls the 8, which a won rack
+    // was either potted on (called) or lost on.
+    if (std::string(game) == "ten-ball") {
+      EXPECT_TRUE(called);
+    }
+    const CliOutcome second = runOnDocument("match", script);
+    EXPECT_EQ(second.out, first.out) << game;
+  }
+}
+
 TEST(MatchAiCli, AHumanPlaysFromTheScriptUntilItRunsOut) {
   // A breaks from the script; B is the computer; the rack stops when A has no turn left.
   const CliOutcome r = runOnDocument("match", R"({"seed": 2,

@@ -62,6 +62,51 @@ TEST(PlanCli, PlacesTheCueBallWithBallInHand) {
   }
 }
 
+TEST(PlanCli, ATenBallPlanCarriesItsCallAndSimPotsTheBallAsCalled) {
+  auto scene = nlohmann::json::parse(kStraightIn);
+  scene["game"] = "ten-ball";
+  scene["balls"][2]["id"] = 10;
+  const CliOutcome r = runOnDocument("plan", scene.dump());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto shot = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(shot.contains("call")) << r.out;
+  EXPECT_EQ(shot["call"]["ball"], 1);
+  EXPECT_EQ(shot["call"]["pocket"], "top-right");
+  scene.erase("level");
+  scene.erase("game");
+  shot.erase("call");
+  scene["shot"] = shot;
+  const CliOutcome sim = runOnDocument("sim", scene.dump());
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  for (const auto& e : nlohmann::json::parse(sim.out)["events"]) {
+    if (e["type"] == "pocket" && e["ball"] == 1) {
+      EXPECT_EQ(e["pocket"], "top-right");
+    }
+  }
+  EXPECT_TRUE(pockets(nlohmann::json::parse(sim.out), 1));
+}
+
+TEST(PlanCli, AnEightBallPlanOnAnOpenTableNeverAimsAtTheEight) {
+  auto scene = nlohmann::json::parse(kStraightIn);
+  scene["game"] = "eight-ball";
+  scene["balls"][1]["id"] = 8;   // the hanger is the 8 ...
+  scene["balls"][2]["id"] = 12;  // ... and the 12 is the only ball that may be hit
+  const CliOutcome r = runOnDocument("plan", scene.dump());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto shot = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(shot.contains("call"));
+  scene.erase("level");
+  scene.erase("game");
+  scene["shot"] = shot;
+  const CliOutcome sim = runOnDocument("sim", scene.dump());
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  for (const auto& e : nlohmann::json::parse(sim.out)["events"]) {
+    if (e["type"] != "ball") continue;
+    EXPECT_TRUE(e["a"] == 12 || e["b"] == 12) << "the cue ball's first contact: " << e.dump();
+    break;
+  }
+}
+
 TEST(PlanCli, RefusesBadScenesWithStatus2AndNothingOnStdout) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"{\"balls\": [", "invalid JSON"},
@@ -76,6 +121,14 @@ TEST(PlanCli, RefusesBadScenesWithStatus2AndNothingOnStdout) {
       {R"({"balls": [{"id": 1, "x": 0, "y": 0}]})", "balls: needs a cue ball"},
       {R"({"balls": [{"id": 0, "x": "a", "y": 0}, {"id": 1, "x": 0.5, "y": 0}]})",
        "balls[0].x: expected a number"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "game": "pool"})",
+       "game: unknown game \"pool\""},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 11, "x": 0.5, "y": 0}],
+           "game": "ten-ball"})",
+       "balls: ten-ball has no ball 11 (1-10)"},
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}],
+           "game": "eight-ball", "rules": "paper"})",
+       "rules: the paper's rules are nine-ball's only"},
   };
   for (const auto& [text, reason] : cases) {
     const CliOutcome r = runOnDocument("plan", text);

@@ -25,13 +25,6 @@ namespace rules = nineball::rules;
 
 namespace {
 
-BallState ball(int id, Vec2 p) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  return b;
-}
-
 MatchSetup layout(rules::Game game, std::vector<BallState> balls) {
   MatchSetup s;
   s.game = game;
@@ -69,8 +62,9 @@ PlanInput inputWith(const rules::Rack& rack, std::vector<BallState> balls) {
 TEST(PlannerEightBall, PotsItsOwnGroupAndNeverHitsTheOtherFirst) {
   // A holds the stripes: the solid 3 is a hanger, the stripe 12 a fair cut.
   Match match(layout(rules::Game::EightBall,
-                     {ball(0, {0.3, 0.0}), ball(3, {1.15, 0.55}), ball(12, {0.75, -0.3}),
-                      ball(8, {-0.8, 0.3}), ball(2, {-0.5, -0.4})}));
+                     {BallState::at(0, {0.3, 0.0}), BallState::at(3, {1.15, 0.55}),
+                      BallState::at(12, {0.75, -0.3}), BallState::at(8, {-0.8, 0.3}),
+                      BallState::at(2, {-0.5, -0.4})}));
   Planner planner(Level::Hard, 1);
   const Plan open = planner.plan(planInputFrom(match));
   EXPECT_NE(open.first, 8) << "the 8 may not be hit first on an open table";
@@ -85,9 +79,10 @@ TEST(PlannerEightBall, PotsItsOwnGroupAndNeverHitsTheOtherFirst) {
   pot11.rail_after_contact = true;
   ASSERT_TRUE(rack.shoot(pot11).legal());
   ASSERT_EQ(rack.groups().a, rules::Group::Stripes);
-  const PlanInput in = inputWith(rack, {ball(0, {0.3, 0.0}), ball(3, {1.15, 0.55}),
-                                        ball(12, {0.75, -0.3}), ball(8, {-0.8, 0.3}),
-                                        ball(2, {-0.5, -0.4})});
+  const PlanInput in =
+      inputWith(rack, {BallState::at(0, {0.3, 0.0}), BallState::at(3, {1.15, 0.55}),
+                       BallState::at(12, {0.75, -0.3}), BallState::at(8, {-0.8, 0.3}),
+                       BallState::at(2, {-0.5, -0.4})});
   const Plan plan = planner.plan(in);
   EXPECT_EQ(plan.first, 12);
   EXPECT_EQ(plan.target, 12);
@@ -96,8 +91,9 @@ TEST(PlannerEightBall, PotsItsOwnGroupAndNeverHitsTheOtherFirst) {
 
 TEST(PlannerEightBall, CallsTheEightWhereItMeansToPotIt) {
   // Solids cleared: only the 8 is left for A.
-  Match match(layout(rules::Game::EightBall,
-                     {ball(0, {0.4, 0.1}), ball(8, {1.0, 0.45}), ball(13, {-0.8, -0.3})}));
+  Match match(
+      layout(rules::Game::EightBall, {BallState::at(0, {0.4, 0.1}), BallState::at(8, {1.0, 0.45}),
+                                      BallState::at(13, {-0.8, -0.3})}));
   rules::Rack rack(rules::Game::EightBall, rules::RuleSet::Wpa, {1, 8, 13}, false);
   rules::ShotSummary pot1;
   pot1.first_contact = 1;
@@ -117,8 +113,9 @@ TEST(PlannerEightBall, CallsTheEightWhereItMeansToPotIt) {
 }
 
 TEST(PlannerTenBall, EveryShotAfterTheBreakIsCalledAndTheMatchTakesIt) {
-  Match match(layout(rules::Game::TenBall, {ball(0, {0.4, 0.1}), ball(1, {1.0, 0.45}),
-                                            ball(4, {-0.6, 0.2}), ball(10, {-0.8, -0.3})}));
+  Match match(layout(rules::Game::TenBall,
+                     {BallState::at(0, {0.4, 0.1}), BallState::at(1, {1.0, 0.45}),
+                      BallState::at(4, {-0.6, 0.2}), BallState::at(10, {-0.8, -0.3})}));
   ASSERT_TRUE(match.rack().callRequired());
   Planner planner(Level::Medium, 1);
   const Plan plan = planner.plan(planInputFrom(match));
@@ -137,10 +134,12 @@ TEST(PlannerPushOut, PushesOutWhenTheBallOnIsHiddenAndNotWhenItHangs) {
   ASSERT_TRUE(rack.pushOutAvailable());
   // The 1 frozen in the middle of the foot rail behind a wall of balls; the cue ball at the
   // head rail, both long rails guarded.
-  const PlanInput hidden = inputWith(
-      rack, {ball(0, {-1.1, 0.0}), ball(1, {1.237, 0.0}), ball(2, {1.17, 0.07}),
-             ball(3, {1.17, -0.07}), ball(4, {1.11, 0.0}), ball(6, {0.4, 0.55}),
-             ball(7, {0.4, -0.55}), ball(8, {-0.4, 0.55}), ball(9, {-0.4, -0.55})});
+  const PlanInput hidden =
+      inputWith(rack, {BallState::at(0, {-1.1, 0.0}), BallState::at(1, {1.237, 0.0}),
+                       BallState::at(2, {1.17, 0.07}), BallState::at(3, {1.17, -0.07}),
+                       BallState::at(4, {1.11, 0.0}), BallState::at(6, {0.4, 0.55}),
+                       BallState::at(7, {0.4, -0.55}), BallState::at(8, {-0.4, 0.55}),
+                       BallState::at(9, {-0.4, -0.55})});
   Planner planner(Level::Medium, 1);
   const Plan push = planner.plan(hidden);
   EXPECT_EQ(push.kind, ShotKind::PushOut) << nineball::ai::shotKindName(push.kind);
@@ -149,9 +148,11 @@ TEST(PlannerPushOut, PushesOutWhenTheBallOnIsHiddenAndNotWhenItHangs) {
   EXPECT_LE(push.value, 0.5) << "a push-out gives the opponent the better of two choices";
 
   const PlanInput hanger =
-      inputWith(rack, {ball(0, {0.4, 0.1}), ball(1, {1.0, 0.45}), ball(2, {-0.6, 0.2}),
-                       ball(3, {-0.8, -0.3}), ball(4, {-0.2, -0.4}), ball(6, {0.2, 0.3}),
-                       ball(7, {0.5, -0.5}), ball(8, {-1.0, 0.4}), ball(9, {0.0, -0.1})});
+      inputWith(rack, {BallState::at(0, {0.4, 0.1}), BallState::at(1, {1.0, 0.45}),
+                       BallState::at(2, {-0.6, 0.2}), BallState::at(3, {-0.8, -0.3}),
+                       BallState::at(4, {-0.2, -0.4}), BallState::at(6, {0.2, 0.3}),
+                       BallState::at(7, {0.5, -0.5}), BallState::at(8, {-1.0, 0.4}),
+                       BallState::at(9, {0.0, -0.1})});
   const Plan pot = planner.plan(hanger);
   EXPECT_EQ(pot.kind, ShotKind::Pot);
   EXPECT_EQ(pot.turn.kind, TurnInput::Kind::Shot);
@@ -159,8 +160,9 @@ TEST(PlannerPushOut, PushesOutWhenTheBallOnIsHiddenAndNotWhenItHangs) {
 
 TEST(PlannerLookAhead, SimulatesTheNextShotOnlyWhenTheTableIsKept) {
   rules::Rack rack(rules::Game::NineBall, rules::RuleSet::Wpa, {1, 2, 9}, false);
-  const PlanInput in = inputWith(rack, {ball(0, {0.4, 0.1}), ball(1, {1.0, 0.45}),
-                                        ball(2, {0.3, 0.4}), ball(9, {-0.8, -0.3})});
+  const PlanInput in =
+      inputWith(rack, {BallState::at(0, {0.4, 0.1}), BallState::at(1, {1.0, 0.45}),
+                       BallState::at(2, {0.3, 0.4}), BallState::at(9, {-0.8, -0.3})});
   const nineball::TableGeometry table = nineball::buildTable(in.table, in.physics.ball_radius);
   const nineball::ai::LevelSettings level = nineball::ai::LevelSettings::of(Level::Hard);
   const nineball::ai::Evaluator eval(in, table);
@@ -207,8 +209,8 @@ void playOut(rules::Game game, std::uint64_t seed) {
     }
     ++turns;
   }
-  EXPECT_TRUE(match.rack().over()) << rules::gameName(game) << " seed " << seed << " after "
-                                   << turns << " turns";
+  EXPECT_TRUE(match.rack().over())
+      << rules::gameName(game) << " seed " << seed << " after " << turns << " turns";
 }
 
 }  // namespace
