@@ -23,12 +23,6 @@ int runGameCommand(const GameOptions& options, std::istream& in, std::ostream& e
           << " is played by the WPA rules\n";
       return kExitBadInput;
     }
-    if (options.opponent != "human") {
-      err << "nineball: --opponent " << options.opponent
-          << ": the computer plays nine-ball only so far; " << options.game
-          << " is for two people\n";
-      return kExitBadInput;
-    }
     if (options.practice) {
       err << "nineball: --practice has no rules, so no game: leave out --game\n";
       return kExitBadInput;

@@ -1,5 +1,5 @@
 // The game chosen in the window: nine-, eight- or ten-ball from the menu, kept in the settings
-// and the saved rack, racked by the session; the computer plays nine-ball only.
+// and the saved rack, racked by the session; the computer plays each of them.
 #include <gtest/gtest.h>
 
 #include "app/game/computer_player.hpp"
@@ -22,7 +22,7 @@ int rowNamed(const MenuModel& m, const std::string& label) {
   return -1;
 }
 
-TEST(GameChoice, TheMenuPicksTheGameAndGreysTheComputerOutsideNineBall) {
+TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   Settings s;
   s.last.opponent = ai::Level::Hard;
   s.last.rules = rules::RuleSet::Paper;
@@ -35,11 +35,12 @@ TEST(GameChoice, TheMenuPicksTheGameAndGreysTheComputerOutsideNineBall) {
   EXPECT_EQ(m.rows()[game].value, "Eight-ball");
   EXPECT_EQ(m.rows()[rowNamed(m, "Play eight-ball")].label, "Play eight-ball");
   const MenuRow versus = m.rows()[rowNamed(m, "Opponent")];
-  EXPECT_FALSE(versus.enabled);
-  EXPECT_NE(versus.value.find("nine-ball only"), std::string::npos) << versus.value;
-  EXPECT_FALSE(m.rows()[rowNamed(m, "Computer level")].enabled);
-  EXPECT_FALSE(m.rows()[rowNamed(m, "Rules")].enabled);
-  EXPECT_TRUE(m.rows()[rowNamed(m, "Player 2 name")].enabled);
+  EXPECT_TRUE(versus.enabled);
+  EXPECT_EQ(versus.value, "Computer");
+  EXPECT_TRUE(m.rows()[rowNamed(m, "Computer level")].enabled);
+  EXPECT_FALSE(m.rows()[rowNamed(m, "Rules")].enabled);  // the paper's rules: nine-ball only
+  EXPECT_FALSE(m.rows()[rowNamed(m, "Player 2 name")].enabled);
+  EXPECT_EQ(m.rows()[rowNamed(m, "Player 2 name")].value, "Computer");
   m.click(game);
   EXPECT_EQ(m.rows()[game].value, "Ten-ball");
   m.click(rowNamed(m, "Play ten-ball"));
@@ -47,7 +48,7 @@ TEST(GameChoice, TheMenuPicksTheGameAndGreysTheComputerOutsideNineBall) {
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.game, rules::Game::TenBall);
   EXPECT_EQ(c.mode, GameMode::NineBall);
-  EXPECT_FALSE(c.opponent.has_value());
+  EXPECT_EQ(c.opponent, Opponent(ai::Level::Hard));
   EXPECT_EQ(c.rules, rules::RuleSet::Wpa);
   EXPECT_EQ(m.settings().last.game, rules::Game::TenBall);
 }
@@ -98,14 +99,17 @@ TEST(GameChoice, TheSessionRacksTheGameChosen) {
   }
 }
 
-TEST(GameChoice, TheComputerDoesNotTakeASeatOutsideNineBall) {
-  MatchSetup setup;
-  setup.game = rules::Game::EightBall;
-  GameSession s(setup);
-  ComputerPlayer computer(1);
-  computer.setOpponent(s, ai::Level::Medium);
-  EXPECT_FALSE(computer.opponent().has_value());
-  EXPECT_EQ(s.seatName(1), "Player 2");
+TEST(GameChoice, TheComputerTakesTheSeatInEveryGame) {
+  for (rules::Game game : {rules::Game::EightBall, rules::Game::TenBall}) {
+    SCOPED_TRACE(rules::gameName(game));
+    MatchSetup setup;
+    setup.game = game;
+    GameSession s(setup);
+    ComputerPlayer computer(1);
+    computer.setOpponent(s, ai::Level::Medium);
+    EXPECT_EQ(computer.opponent(), Opponent(ai::Level::Medium));
+    EXPECT_EQ(s.seatName(1), "Computer");
+  }
 }
 
 TEST(GameChoice, MessagesForTheNewDecisionsAndGroups) {

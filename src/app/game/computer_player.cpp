@@ -6,6 +6,7 @@
 #include <exception>
 #include <system_error>
 
+#include "app/game/shot_call.hpp"
 #include "nineball/log.hpp"
 #include "render/cue_stick_shape.hpp"
 
@@ -39,17 +40,23 @@ std::uint64_t plannerSeed(std::uint64_t seed, long made) {
 
 ComputerMove fallbackMove(const GameSession& session) {
   ComputerMove m;
-  if (session.match().rack().awaitingDecision()) {
+  const rules::Rack& rack = session.match().rack();
+  if (rack.awaitingDecision()) {
     m.turn.kind = TurnInput::Kind::Decision;
-    m.turn.shoot = true;
+    m.turn.shoot = true;  // shoot, or play on as it lies: never throws the table away
     return m;
   }
   const Vec2 cue = session.cuePosition();
-  const int on = session.match().rack().ballOn();
+  const int on = rack.ballOn();
   m.turn.shot.heading_rad = session.heading();
   for (const BallState& b : session.match().balls()) {
     if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
       m.turn.shot.heading_rad = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
+      // A called game refuses an uncalled shot: the ball on, where the hit sends it.
+      if (rack.callRequired()) {
+        m.turn.call = rules::Call{
+            on, pocketAlong(session.match().world().table(), b.pos, normalized(b.pos - cue))};
+      }
     }
   }
   m.turn.shot.speed = session.match().rack().isBreak() ? GameSession::kBreakSpeed : kFallbackSpeed;
@@ -57,10 +64,9 @@ ComputerMove fallbackMove(const GameSession& session) {
   return m;
 }
 
-}  // namespace
-
-std::string describePlan(const ai::Plan& plan, int ball_on) {
-  const std::string on = "the " + std::to_string(ball_on);
+std::string planText(const ai::Plan& plan, int ball_on) {
+  // Eight-ball has no single ball on: the plan names the ball it hits first.
+  const std::string on = "the " + std::to_string(plan.first > 0 ? plan.first : ball_on);
   const std::string target = "the " + std::to_string(plan.target);
   const std::string pocket =
       plan.pocket ? std::string(" in the ") + pocketName(*plan.pocket) + " pocket" : "";
@@ -83,6 +89,19 @@ std::string describePlan(const ai::Plan& plan, int ball_on) {
   return "play safe on " + on;
 }
 
+}  // namespace
+
+std::string describePlan(const ai::Plan& plan, int ball_on) {
+  std::string text = planText(plan, ball_on);
+  const auto& call = plan.turn.call;
+  if (!call || plan.kind == ai::ShotKind::PushOut) return text;
+  if (call->ball == plan.target && plan.pocket && call->pocket == *plan.pocket) {
+    return text + " (called)";
+  }
+  return text + " (called: the " + std::to_string(call->ball) + " in the " +
+         pocketName(call->pocket) + " pocket)";
+}
+
 ComputerMove planMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding) {
   ComputerMove move;
   if (deciding) {
@@ -102,10 +121,7 @@ ComputerPlayer::~ComputerPlayer() {
   reapAbandoned(true);
 }
 
-void ComputerPlayer::setOpponent(GameSession& session, const Opponent& wanted) {
-  // The computer plays nine-ball only so far: in another game both seats are people.
-  const Opponent opponent =
-      session.setup().game == rules::Game::NineBall ? wanted : Opponent(std::nullopt);
+void ComputerPlayer::setOpponent(GameSession& session, const Opponent& opponent) {
   abandon();
   if (opponent != opponent_) planner_.reset();
   opponent_ = opponent;
@@ -139,13 +155,15 @@ std::string ComputerPlayer::status(const GameSession& session) const {
     case Stage::Idle:
       break;
     case Stage::Thinking:
-      return deciding_ ? name + " thinking: play from here or pass it back?"
-                       : name + " thinking...";
+      if (!deciding_) return name + " thinking...";
+      return rerack_choice_ ? name + " thinking: play on or re-rack?"
+                            : name + " thinking: play from here or pass it back?";
     case Stage::Placing:
       return name + " places the cue ball";
     case Stage::Aiming:
     case Stage::Cueing:
     case Stage::Striking:
+      if (move_ && move_->turn.kind == TurnInput::Kind::PushOut) return name + " pushes out";
       if (move_ && move_->plan) {
         return name + ": " + describePlan(*move_->plan, session.match().rack().ballOn());
       }
@@ -185,6 +203,7 @@ void ComputerPlayer::update(GameSession& session, double seconds) {
       session.setHeading(heading_from_ + turn_by_ * ease(t));
       if (t < 1.0) return;
       session.setHeading(move_->turn.shot.heading_rad);
+      callIfDue(session);
       stage_ = Stage::Cueing;
       elapsed_ = 0.0;
       duration_ = kPullTime + kHoldTime;
@@ -220,6 +239,7 @@ void ComputerPlayer::startThinking(const GameSession& session) {
   pull_ = 0.0;
   move_.reset();
   deciding_ = session.match().rack().awaitingDecision();
+  rerack_choice_ = session.match().rack().pendingDecision() == rules::Decision::RerackOrPlayOn;
   if (!planner_) {
     planner_ = std::make_shared<ai::Planner>(*opponent_, plannerSeed(seed_, planners_made_++));
   }
@@ -259,6 +279,12 @@ void ComputerPlayer::beginMove(GameSession& session, const ComputerMove& move) {
     return;
   }
   move_ = move;
+  // Declared and called before the cue moves, as a person does: the HUD and the table show it.
+  if (move.turn.kind == TurnInput::Kind::PushOut) {
+    if (!session.pushOutDeclared()) session.togglePushOut();
+  } else if (move.turn.call) {
+    session.setCall(*move.turn.call);
+  }
   cue_from_ = session.cuePosition();
   if (session.cueInHand() && move.turn.cue && *move.turn.cue != cue_from_) {
     stage_ = Stage::Placing;
@@ -277,6 +303,15 @@ void ComputerPlayer::startAiming(GameSession& session) {
   duration_ = kAimTime + kAimTimePerHalfTurn * std::abs(turn_by_) / kPi;
   session.setTip(move_->turn.shot.tip);
   session.setPower(0.0);
+}
+
+void ComputerPlayer::callIfDue(GameSession& session) {
+  // A plan without the call the rules want (a fallback shot): the obvious one along the aim.
+  if (move_->turn.kind != TurnInput::Kind::Shot || move_->turn.call || !session.callRequired()) {
+    return;
+  }
+  session.callObvious();
+  move_->turn.call = session.call();
 }
 
 void ComputerPlayer::strike(GameSession& session) {

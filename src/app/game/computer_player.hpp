@@ -14,20 +14,21 @@
 
 namespace nineball::app {
 
-/// What the computer chose for one turn: a shot, with the plan's intent when the planner
-/// found it, or the choice after the opponent's push-out.
+/// What the computer chose for one turn: a shot (or push-out, perhaps with a call), with the
+/// plan's intent when the planner found it, or its answer to a pending decision.
 struct ComputerMove {
   TurnInput turn;
   std::optional<ai::Plan> plan;  ///< nothing for a decision or a fallback shot
 };
 
-/// How the computer finds its move, on the worker thread: `deciding` is the choice after the
-/// opponent's push-out.
+/// How the computer finds its move, on the worker thread: `deciding` when a decision is pending
+/// (play or pass after a push-out or a ten-ball call breach, play on or re-rack after an
+/// illegal eight-ball break).
 using Thinker =
     std::function<ComputerMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding)>;
 
-/// The planner's move: the decision after a push-out, or a planned shot cued with the level's
-/// error.
+/// The planner's move: its answer to the pending decision, or a planned shot (or push-out) cued
+/// with the level's error.
 ComputerMove planMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding);
 
 /// Plays Player 2's seat for the computer. The planner runs on a worker thread from a copy of
@@ -83,6 +84,7 @@ class ComputerPlayer {
   std::optional<ComputerMove> takeMove(const GameSession& session);
   void beginMove(GameSession& session, const ComputerMove& move);
   void startAiming(GameSession& session);
+  void callIfDue(GameSession& session);
   void strike(GameSession& session);
   void abandon();
   void reapAbandoned(bool wait);
@@ -95,8 +97,9 @@ class ComputerPlayer {
   std::vector<std::future<ComputerMove>> abandoned_;  // dropped turns still planning
   Thinker thinker_ = planMove;
   bool wait_ = false;
-  bool deciding_ = false;  // the turn is the choice after a push-out
-  bool stuck_ = false;     // neither the plan nor the fallback was allowed: a person plays it
+  bool deciding_ = false;       // the turn is a decision: after a push-out, or a re-rack
+  bool rerack_choice_ = false;  // ... the one after an illegal eight-ball break
+  bool stuck_ = false;          // neither the plan nor the fallback was allowed: a person plays it
   Stage stage_ = Stage::Idle;
   double elapsed_ = 0.0;  // s in the current stage
   double duration_ = 0.0;
@@ -107,7 +110,8 @@ class ComputerPlayer {
   double pull_ = 0.0;
 };
 
-/// What a plan means to do, for the status line: "pot the 3 in the top-right pocket".
+/// What a plan means to do, for the status line: "pot the 3 in the top-right pocket", with
+/// "(called)" when the rules want a call (another call is named).
 std::string describePlan(const ai::Plan& plan, int ball_on);
 
 }  // namespace nineball::app

@@ -55,6 +55,10 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
       const rules::Rack& rack = session.match().rack();
       if (rack.pendingDecision() == rules::Decision::RerackOrPlayOn) {
         hud.overlay_title = "Illegal break: " + name + " chooses";
+        if (computer_decides) {
+          hud.overlay_lines = {"Thinking: play on as it lies, or re-rack and break?"};
+          break;
+        }
         hud.overlay_lines = {"Play the table as it lies, or re-rack and break."};
         hud.button_left = "Play on (S)";
         hud.button_right = "Re-rack (P)";
@@ -134,7 +138,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   }
 
-  if (session.callRequired() && !computer_turn) {
+  // The computer's call shows once made, as a person's; not the prompt while it thinks.
+  if (session.callRequired() && (!computer_turn || session.call())) {
     render::CallMark mark;
     for (const BallState& b : f.balls) {
       if (b.id == session.callBall() && !b.pocket) mark.ball = b.pos;

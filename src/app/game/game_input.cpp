@@ -211,12 +211,6 @@ void GameInput::switchOpponent() {
     session_.say("Practice is played alone: pick an opponent in a game from the menu.");
     return;
   }
-  if (session_.setup().game != rules::Game::NineBall) {
-    session_.say(std::string("The computer plays nine-ball only so far: ") +
-                     rules::gameName(session_.setup().game) + " is for two players here.",
-                 render::Tone::Warning);
-    return;
-  }
   const Opponent next = nextOpponent(computer_.opponent());
   computer_.setOpponent(session_, next);
   if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word

@@ -400,6 +400,14 @@ void GameSession::callObvious() {
   say("Called: the " + std::to_string(c->ball) + " in the " + pocketName(c->pocket) + " pocket.");
 }
 
+bool GameSession::setCall(const rules::Call& c) {
+  if (!callRequired()) return false;
+  call_ball_ = c.ball;
+  call_pocket_ = c.pocket;
+  say("Called: the " + std::to_string(c.ball) + " in the " + pocketName(c.pocket) + " pocket.");
+  return true;
+}
+
 bool GameSession::replayAvailable() const {
   return phase_ != Phase::Rolling && ShotReplay::available(rack_turns_);
 }
@@ -490,6 +498,8 @@ void GameSession::decide(bool shoot_now) {
   groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
+  // A re-rack puts every ball back: the tray of balls down empties with it.
+  if (match_->rack().isBreak()) pocketed_.clear();
   afterTurn(record, match_->rack().ballOn());
 }
 

@@ -137,6 +137,9 @@ class GameSession {
   /// Calls the obvious shot: the aim guide's object ball (when it may be called), else the
   /// ball on, into the pocket nearest its path.
   void callObvious();
+  /// Makes call `c` as the clicks would (the computer's call, shown like a person's). False
+  /// when no call is due.
+  bool setCall(const rules::Call& c);
 
   /// Strikes with the current aim, power and spin; false (and a message) when refused.
   bool shoot();

@@ -94,14 +94,12 @@ bool MenuModel::enabled(Item item) const {
   switch (item) {
     case Item::Practice:
       return true;
-    case Item::Versus:
-      return nineBall();  // the computer plays nine-ball only
     case Item::Level:
-      return computer_ && nineBall();
+      return computer_;
     case Item::Rules:
       return nineBall();  // the paper's rules are nine-ball's only
     case Item::Name2:
-      return !computer_ || !nineBall();  // the computer's seat is called "Computer"
+      return !computer_;  // the computer's seat is called "Computer"
     default:
       return true;
   }
@@ -126,7 +124,6 @@ MenuRow MenuModel::row(Item item) const {
     case Item::Versus:
       r = {Kind::Choice, "Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
            false};
-      if (!nineBall()) r.value = "Human (the computer plays nine-ball only)";
       break;
     case Item::Level:
       r = {Kind::Choice, "Computer level", levelLabel(level_), r.enabled, false};
@@ -145,7 +142,7 @@ MenuRow MenuModel::row(Item item) const {
       const int seat = item == Item::Name1 ? 0 : 1;
       r.kind = Kind::Text;
       r.label = seat == 0 ? "Player 1 name" : "Player 2 name";
-      r.value = seat == 1 && computer_ && nineBall() ? "Computer" : settings_.last.names[seat];
+      r.value = seat == 1 && computer_ ? "Computer" : settings_.last.names[seat];
       r.editing = editing_ && items()[selected_] == item;
       break;
     }
@@ -362,8 +359,8 @@ void MenuModel::click(int i) {
 
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
-  // The computer and the paper's rules play nine-ball only.
-  c.opponent = computer_ && c.game == rules::Game::NineBall ? Opponent(level_) : std::nullopt;
+  c.opponent = computer_ ? Opponent(level_) : std::nullopt;
+  // The paper's rules are nine-ball's only.
   if (c.game != rules::Game::NineBall) c.rules = rules::RuleSet::Wpa;
   c.resume = outcome_ == Outcome::Resume;
   return c;
