@@ -143,9 +143,13 @@ TEST(GameChoice, MessagesForTheNewDecisionsAndGroups) {
   e.verdict.next = rules::Player::B;
   e.verdict.awaiting_decision = true;
   e.verdict.decision = rules::Decision::RerackOrPlayOn;
-  const std::string illegal = describeTurn(e, {}, 1, "Ann", "Bob").text;
+  rules::ShotSummary hit_the_5;  // any ball may be hit first on an eight-ball break
+  hit_the_5.first_contact = 5;
+  const std::string illegal = describeTurn(e, hit_the_5, 1, "Ann", "Bob").text;
   EXPECT_NE(illegal.find("Illegal break"), std::string::npos) << illegal;
   EXPECT_NE(illegal.find("re-rack"), std::string::npos) << illegal;
+  EXPECT_NE(illegal.find("fewer than four reached a cushion"), std::string::npos) << illegal;
+  EXPECT_EQ(illegal.find("must hit"), std::string::npos) << illegal;
 }
 
 TEST(GameChoice, TheHudShowsEightBallGroupsAndTheHelpTheGame) {

@@ -5,7 +5,8 @@
 namespace nineball::app {
 namespace {
 
-std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int ball_on) {
+std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int ball_on,
+                       bool any_first = false) {
   const std::string on = "the " + std::to_string(ball_on);
   switch (foul) {
     case rules::Foul::Scratch:
@@ -18,7 +19,9 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
     case rules::Foul::NoRail:
       return "no ball reached a cushion after the hit";
     case rules::Foul::BadBreak:
-      if (summary.first_contact != ball_on) return "the break must hit " + on + " first";
+      if (!any_first && summary.first_contact != ball_on) {
+        return "the break must hit " + on + " first";
+      }
       return "no ball dropped on the break and fewer than four reached a cushion";
     case rules::Foul::ThreeFouls:
       return "a third foul in a row";
@@ -120,8 +123,10 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   }
   if (v.decision == rules::Decision::RerackOrPlayOn) {
     m.tone = render::Tone::Foul;
-    m.text = "Illegal break by " + shooter + ": " + foulReason(v.foul, summary, ball_on) + "." +
-             downOnFoul(v) + spot_note + " " + next + ": play on as it lies, or re-rack.";
+    // Eight-ball's break may hit any ball first: only the count of balls down or to a cushion
+    // makes it illegal.
+    m.text = "Illegal break by " + shooter + ": " + foulReason(v.foul, summary, ball_on, true) +
+             "." + downOnFoul(v) + spot_note + " " + next + ": play on as it lies, or re-rack.";
     return m;
   }
   if (v.call_breach != rules::Foul::None) {
