@@ -98,11 +98,11 @@ LevelSettings LevelSettings::of(Level level) {
       s.sweep_headings = 240;
       s.break_spots = 1;
       s.break_speeds = {8.0, 9.5};
-      s.robust_top = 16;
+      s.robust_top = 12;
       s.robust_steps = 5;
       s.robust_aim_deg = 0.15;
       s.robust_speed = 0.03;
-      s.lookahead_top = 8;
+      s.lookahead_top = 6;
       s.lookahead_lines = 3;
       s.lookahead_speeds = {1.0, 1.9, 3.2};
       s.lookahead_tips = {{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.3}};
