@@ -78,12 +78,13 @@ TEST(PlanCli, ATenBallPlanCarriesItsCallAndSimPotsTheBallAsCalled) {
   scene["shot"] = shot;
   const CliOutcome sim = runOnDocument("sim", scene.dump());
   ASSERT_EQ(sim.status, 0) << sim.err;
-  for (const auto& e : nlohmann::json::parse(sim.out)["events"]) {
+  const auto result = nlohmann::json::parse(sim.out);
+  for (const auto& e : result["events"]) {
     if (e["type"] == "pocket" && e["ball"] == 1) {
       EXPECT_EQ(e["pocket"], "top-right");
     }
   }
-  EXPECT_TRUE(pockets(nlohmann::json::parse(sim.out), 1));
+  EXPECT_TRUE(pockets(result, 1));
 }
 
 TEST(PlanCli, AnEightBallPlanOnAnOpenTableNeverAimsAtTheEight) {
@@ -100,7 +101,8 @@ TEST(PlanCli, AnEightBallPlanOnAnOpenTableNeverAimsAtTheEight) {
   scene["shot"] = shot;
   const CliOutcome sim = runOnDocument("sim", scene.dump());
   ASSERT_EQ(sim.status, 0) << sim.err;
-  for (const auto& e : nlohmann::json::parse(sim.out)["events"]) {
+  const auto result = nlohmann::json::parse(sim.out);
+  for (const auto& e : result["events"]) {
     if (e["type"] != "ball") continue;
     EXPECT_TRUE(e["a"] == 12 || e["b"] == 12) << "the cue ball's first contact: " << e.dump();
     break;
