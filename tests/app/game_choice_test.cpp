@@ -165,6 +165,7 @@ TEST(GameChoice, TheHudShowsEightBallGroupsAndTheHelpTheGame) {
   ui.help = true;
   const render::Frame f = buildFrame(s, ui, computer);
   EXPECT_TRUE(f.hud.split_groups);
+  EXPECT_EQ(f.hud.ball_on, 0) << "any ball may be hit first on the eight-ball break";
   EXPECT_NE(f.hud.players[0].detail.find("open table"), std::string::npos);
   EXPECT_NE(f.hud.rules.find("eight-ball"), std::string::npos);
   ASSERT_FALSE(f.hud.overlay_lines.empty());

@@ -163,6 +163,9 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     hud.players[session.seatOf(p)].fouls = rack.consecutiveFouls(p);
   }
   hud.ball_on = rack.over() ? 0 : rack.ballOn();
+  // Eight-ball has a ball on only when one ball may be hit first (the 8); the players' groups
+  // say the rest.
+  if (rack.game() == rules::Game::EightBall && rack.legalFirstBalls().size() != 1) hud.ball_on = 0;
   for (const BallState& b : session.match().balls()) {
     if (b.id != kCueBall && !b.pocket) hud.on_table.push_back(b.id);
   }
