@@ -79,11 +79,6 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, T
   }
 }
 
-// The player to move in a rack; during a decision, the one deciding.
-rules::Player toMove(const Match& match) {
-  return match.rack().shooter();
-}
-
 void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally& t,
                std::ostream& err) {
   for (int i = 0; i < o.racks; ++i) {
@@ -98,10 +93,10 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
     int turns = 0;
     int pocketed = 0;
     while (!match.rack().over() && turns < kMaxTurnsPerRack) {
-      if (toMove(match) == rules::Player::B) {
+      if (match.rack().shooter() == rules::Player::B) {
         if (!match.rack().awaitingDecision()) break;
         match.play(opponent.turnFor(match));
-        if (toMove(match) == rules::Player::B) break;
+        if (match.rack().shooter() == rules::Player::B) break;
         continue;
       }
       const TurnInput turn = planner.turnFor(match);

@@ -150,9 +150,9 @@ Plan Planner::plan(const PlanInput& in) {
   RobustChoice choice = choose();
   if (choice.value < kSweepBelow && !placing && settings_.sweep_headings > 0) {
     const std::size_t first = cands.size();
-    const auto sweep = sweepShots(ctx, settings_.sweep_headings);
+    std::vector<Candidate> sweep = sweepShots(ctx, settings_.sweep_headings);
+    assignCalls(ctx, sweep);
     cands.insert(cands.end(), sweep.begin(), sweep.end());
-    assignCalls(ctx, cands);
     simulateFrom(first);
     choice = choose();
   }

@@ -323,14 +323,21 @@ int potLineCount(const LevelSettings& level, std::size_t targets) {
   return targets > 1 ? (level.max_pot_lines * 5 + 7) / 8 : level.max_pot_lines;
 }
 
-// Lines of one generator for every ball in `ons`, the best `count` of them.
+// Lines of one generator for every ball in `ons`, in that order.
 template <typename Generate>
-std::vector<Line> linesFor(const std::vector<const BallState*>& ons, int count, Generate generate) {
+std::vector<Line> allLinesFor(const std::vector<const BallState*>& ons, Generate generate) {
   std::vector<Line> lines;
   for (const BallState* on : ons) {
     const std::vector<Line> more = generate(*on);
     lines.insert(lines.end(), more.begin(), more.end());
   }
+  return lines;
+}
+
+// The same, the best `count` of them.
+template <typename Generate>
+std::vector<Line> linesFor(const std::vector<const BallState*>& ons, int count, Generate generate) {
+  std::vector<Line> lines = allLinesFor(ons, generate);
   keepBest(lines, count);
   return lines;
 }
@@ -361,17 +368,14 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
           ons, kMaxBankLines, [&](const BallState& on) { return bankLines(ctx, balls, cue, on); });
       expand(ctx, cue, banks, level.pot_speeds, centre, placed, out);
     }
-    std::vector<Line> safeties;
-    for (const BallState* on : near) {
-      const auto more = safetyLines(ctx, balls, cue, *on);
-      safeties.insert(safeties.end(), more.begin(), more.end());
-    }
+    const auto safeties =
+        allLinesFor(near, [&](const BallState& on) { return safetyLines(ctx, balls, cue, on); });
     expand(ctx, cue, safeties, level.safety_speeds, centre, placed, out);
     if (pots.empty() && safeties.empty()) {
       const std::vector<double> kick_speeds(std::begin(kKickSpeeds), std::end(kKickSpeeds));
-      for (const BallState* on : near) {
-        expand(ctx, cue, kickLines(ctx, balls, cue, *on), kick_speeds, centre, placed, out);
-      }
+      const auto kicks =
+          allLinesFor(near, [&](const BallState& on) { return kickLines(ctx, balls, cue, on); });
+      expand(ctx, cue, kicks, kick_speeds, centre, placed, out);
     }
   }
   if (out.empty()) {
