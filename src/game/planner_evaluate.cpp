@@ -55,7 +55,11 @@ void keepFreedHeap() {
 }  // namespace
 
 Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg)
-    : in_(in), table_(table), step_(in.step), sigma_rad_(degToRad(judging_aim_deg)) {
+    : in_(in),
+      table_(table),
+      step_(in.step),
+      sigma_rad_(degToRad(judging_aim_deg)),
+      legal_first_(in.rack.legalFirstBalls()) {
   keepFreedHeap();
   step_.max_time = std::min(step_.max_time, kMaxShotTime);
 }
@@ -90,10 +94,9 @@ std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) 
   // Under WPA rules a scratch or a wrong first ball is a foul whatever follows, and a foul is
   // worth the same wherever the balls stop (ball in hand): the rest of the shot is not run.
   const bool push_out = c.kind == ShotKind::PushOut;
-  const std::vector<int> legal_first = in_.rack.legalFirstBalls();
   const bool may_stop = in_.rack.rules() == rules::RuleSet::Wpa && !in_.rack.isBreak();
   world.runUntilRest([&](const std::vector<Event>& events) {
-    return may_stop && foulDecided(events, legal_first, push_out);
+    return may_stop && foulDecided(events, legal_first_, push_out);
   });
   rules::ShotSummary summary = game::summarize(world.events());
   summary.call = c.call;

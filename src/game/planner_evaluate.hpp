@@ -77,6 +77,7 @@ class Evaluator {
   const TableGeometry& table_;
   StepParams step_;
   double sigma_rad_;
+  std::vector<int> legal_first_;  // what the cue ball may hit first, found once per position
 };
 
 }  // namespace nineball::ai
