@@ -76,7 +76,11 @@ class Match {
   void beginShot(const TurnInput& turn);
   /// True while a shot begun with beginShot is still rolling.
   bool shotInProgress() const { return in_progress_; }
-  /// Judges the shot once every ball rests.
+  /// Runs the shot rolling on by one fixed step (less when the balls come to rest within it);
+  /// true once it is over: every ball rests, or it has run StepParams::max_time. The window
+  /// calls it frame by frame and play() in a row, so both give the same turn bit for bit.
+  bool stepShot();
+  /// Judges the shot, first running it on to its end.
   TurnRecord finishShot();
 
   /// Why the cue ball may not go to `pos` now, or nothing when it may.
@@ -105,6 +109,7 @@ class Match {
   bool push_out_ = false;
   bool cue_pocketed_ = false;  // the cue ball is off the table, waiting to be placed
   int ball_on_at_start_ = 0;
+  double shot_deadline_ = 0.0;       // the world's time at which the shot rolling is cut off
   std::optional<rules::Call> call_;  // of the shot rolling
 };
 

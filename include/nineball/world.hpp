@@ -37,9 +37,15 @@ class World {
   void step();
   /// Steps until every ball rests or `seconds` of simulated time have passed.
   void runFor(double seconds);
-  /// Steps until every ball rests, at most StepParams::max_time; with `stop`, also until it
-  /// says, after a step, that what has happened (events()) decides all the caller needs.
+  /// Steps until every ball rests, for at most StepParams::max_time from now; with `stop`,
+  /// also until it says, after a step, that what has happened (events()) decides all the
+  /// caller needs. It is stepTowardRest() in a row, to a deadline max_time from now.
   void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {});
+  /// One step of a run to rest: on to the next fixed step's end, or less when every ball comes
+  /// to rest within it, or when `deadline` (s, the world's time) comes first. A run stepped
+  /// this way frame by frame (the window) ends bit for bit where runUntilRest ends. True once
+  /// the run is over: every ball rests, the deadline is reached or the work budget is spent.
+  bool stepTowardRest(double deadline);
 
   /// Keeps every arc each ball follows from here on, for a trace (call before addBall).
   void logArcs();

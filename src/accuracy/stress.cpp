@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <sstream>
 
 #include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
+#include "nineball/state_hash.hpp"
 #include "nineball/world.hpp"
 #include "physics/motion.hpp"
 
@@ -82,12 +82,8 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   if (s.shot) w.strike(kCueBall, *s.shot);
   const double r = s.physics.ball_radius;
   double e_prev = energy(w.balls(), r, s.physics.ball_mass);
-  std::uint64_t hash = 1469598103934665603ULL;
-  auto mix = [&hash](double v) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    hash = (hash ^ bits) * 1099511628211ULL;
-  };
+  BitHash hash;
+  auto mix = [&hash](double v) { hash.add(v); };
   const double limit = s.run_s > 0.0 ? s.run_s : o.rest_within_s;
   std::size_t events_seen = 0;
   std::vector<bool> was_pocketed(s.balls.size(), false);
@@ -139,7 +135,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   if (s.run_s <= 0.0) check.check("at rest in time", w.atRest());
   if (count) rep.simulated_s += w.time();
   mix(static_cast<double>(w.events().size()));
-  return hash;
+  return hash.value();
 }
 
 // Random non-overlapping balls inside the table, some frozen to a cushion.

@@ -170,12 +170,19 @@ void Match::beginShot(const TurnInput& turn) {
   call_ = turn.call;
   world_->clearEvents();
   world_->strike(kCueBall, turn.shot);
+  shot_deadline_ = world_->time() + setup_.step.max_time;
   in_progress_ = true;
+}
+
+bool Match::stepShot() {
+  if (!in_progress_) throw IllegalAction("no shot is rolling");
+  return world_->stepTowardRest(shot_deadline_);
 }
 
 TurnRecord Match::finishShot() {
   if (!in_progress_) throw IllegalAction("no shot is rolling");
-  if (!world_->atRest()) world_->runUntilRest();
+  while (!stepShot()) {
+  }
   in_progress_ = false;
   rules::ShotSummary summary = game::summarize(world_->events());
   summary.call = call_;
@@ -213,7 +220,6 @@ TurnRecord Match::play(const TurnInput& turn) {
     return rec;
   }
   beginShot(turn);
-  world_->runUntilRest();
   return finishShot();
 }
 

@@ -529,6 +529,10 @@ struct World::Impl {
     }
   }
 
+  bool runOver(double deadline) const {
+    return settled() || time >= deadline || exhausted;
+  }
+
   double boundary(long n) const {
     return static_cast<double>(n) / sp.hz;
   }
@@ -619,11 +623,18 @@ void World::runFor(double seconds) {
   }
 }
 
+bool World::stepTowardRest(double deadline) {
+  Impl& w = *impl_;
+  if (!w.runOver(deadline)) w.advance(std::min(w.boundary(++w.steps), deadline), true);
+  return w.runOver(deadline);
+}
+
 void World::runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop) {
   Impl& w = *impl_;
-  while (!w.settled() && w.time < w.sp.max_time && !w.exhausted) {
-    const double next = w.boundary(++w.steps);
-    w.advance(std::min(next, w.sp.max_time), true);
+  // The limit is the run's own: a match's world keeps its clock from shot to shot.
+  const double deadline = w.time + w.sp.max_time;
+  while (!w.runOver(deadline)) {
+    stepTowardRest(deadline);
     if (stop && stop(w.events)) return;
   }
   if (!w.settled() && !w.exhausted) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 
 #include "app/game/shot_call.hpp"
 #include "app/game/turn_message.hpp"
@@ -417,7 +418,14 @@ void GameSession::startReplay(bool slow) {
     say("No shot to replay yet in this rack.", render::Tone::Warning);
     return;
   }
-  replay_ = std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0);
+  try {
+    replay_ = std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0);
+  } catch (const std::exception& e) {
+    // The rack played again should always rebuild; if it ever does not, the game goes on.
+    replay_.reset();
+    logger("game")->warn("the replay could not be rebuilt: {}", e.what());
+    say(std::string("The replay could not be rebuilt: ") + e.what() + ".", render::Tone::Warning);
+  }
 }
 
 void GameSession::stopReplay() {

@@ -280,8 +280,8 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     if (!window.isOpen()) break;
     // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
     // instead of drawing the same picture again (the idle window costs next to nothing).
-    const bool still = session.phase() != Phase::Rolling && !computer.controls(session) &&
-                       !input.keysHeld() && ui.drag == Drag::None;
+    const bool still = session.phase() != Phase::Rolling && !session.replaying() &&
+                       !computer.controls(session) && !input.keysHeld() && ui.drag == Drag::None;
     if (interactive && still && !changed && since_draw.getElapsedTime().asSeconds() < kIdleRedraw) {
       sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
       frame_clock.restart();

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "app/game/state_file.hpp"
-#include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {

@@ -45,8 +45,10 @@ std::vector<audio::Impact> ShotReplay::advance(double seconds) {
   std::vector<audio::Impact> impacts;
   if (finished_) return impacts;
   if (steps_.take(*match_, clock_.advance(seconds * rate_), kMaxShotTime, impacts)) {
+    // A shot cut short for the eye still ends where it ended: run it out, as the game did.
+    match_->finishShot();
     finished_ = true;
-    steps_.previous = steps_.current;
+    steps_.current = steps_.previous = match_->balls();
   }
   return impacts;
 }
