@@ -53,6 +53,12 @@ struct SimResult {
 /// Runs a scene that has already been checked (see validateScene).
 SimResult simulate(const Scene& scene);
 
+/// Empty when the result keeps its promises: every number finite, every ball on the table
+/// (its centre inside the cushions) or pocketed. Else what is broken: a defect of the engine,
+/// reported as an internal error and never printed as a result. Both engines' results are
+/// checked by every command that prints one.
+std::optional<std::string> resultFault(const Scene& scene, const SimResult& result);
+
 /// Empty when the scene can be simulated, else a message naming the field and the reason
 /// (balls overlapping, off the table, duplicate ids, shot without a cue ball, ...).
 std::optional<std::string> validateScene(const Scene& scene);

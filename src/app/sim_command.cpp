@@ -15,34 +15,12 @@
 #include "nineball/log.hpp"
 
 namespace nineball::app {
-namespace {
-
-bool finite(Vec2 v) {
-  return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
-}  // namespace
 
 std::string traceTruncatedNote(const Trace& trace) {
   double last = 0.0;
   if (!trace.balls.empty() && trace.balls.front().size() > 0) last = trace.balls.front().t.back();
   return "the trace ends at t = " + std::to_string(last) + " s: the run needed more than " +
          std::to_string(limits::kMaxTraceSamples) + " samples (balls x instants)";
-}
-
-bool allFinite(const SimResult& r) {
-  bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
-  for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
-  for (const Event& e : r.events) ok = ok && std::isfinite(e.t) && finite(e.va) && finite(e.vb);
-  if (!r.trace) return ok;
-  for (const BallTrace& b : r.trace->balls) {
-    for (std::size_t i = 0; i < b.size() && ok; ++i) {
-      ok = std::isfinite(b.t[i]) && finite(Vec2{b.x[i], b.y[i]}) &&
-           finite(Vec2{b.vx[i], b.vy[i]}) && std::isfinite(b.w[i].x) && std::isfinite(b.w[i].y) &&
-           std::isfinite(b.w[i].z);
-    }
-  }
-  return ok;
 }
 
 namespace {
@@ -115,8 +93,8 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
     Scene traced = scene;
     traced.trace = TraceRequest{kShotSvgHz, false};
     const SimResult pictured = simulate(traced);
-    if (!allFinite(pictured)) {
-      err << prefix << "internal error: the simulation produced a non-finite number\n";
+    if (const auto fault = resultFault(traced, pictured)) {
+      err << prefix << "internal error: " << *fault << '\n';
       return kExitInternal;
     }
     if (options.svg_path &&
@@ -137,8 +115,8 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
   } else {
     result = simulate(scene);
   }
-  if (!allFinite(result)) {
-    err << prefix << "internal error: the simulation produced a non-finite number\n";
+  if (const auto fault = resultFault(scene, result)) {
+    err << prefix << "internal error: " << *fault << '\n';
     return kExitInternal;
   }
   out << io::resultToJson(result).dump(2) << '\n' << std::flush;

@@ -25,9 +25,6 @@ using ShotPngWriter = bool (*)(const Scene& scene, const SimResult& traced, cons
 void setShotPngWriter(ShotPngWriter writer);
 bool haveShotPngWriter();
 
-/// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
-bool allFinite(const SimResult& r);
-
 /// The line on stderr for a trace cut at limits::kMaxTraceSamples.
 std::string traceTruncatedNote(const Trace& trace);
 

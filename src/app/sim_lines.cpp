@@ -36,10 +36,9 @@ LineOutcome simulateLine(const std::string& line, long number) {
   if (line.size() > limits::kMaxInputBytes) return refuse(inputTooLarge());
   auto parsed = io::parseScene(line);
   if (const auto* bad = std::get_if<io::ParseError>(&parsed)) return refuse(bad->message);
-  const SimResult result = simulate(std::get<Scene>(parsed));
-  if (!allFinite(result)) {
-    return refuse("internal error: the simulation produced a non-finite number");
-  }
+  const Scene& scene = std::get<Scene>(parsed);
+  const SimResult result = simulate(scene);
+  if (const auto fault = resultFault(scene, result)) return refuse("internal error: " + *fault);
   std::string note;
   if (result.trace && result.trace->truncated) note = traceTruncatedNote(*result.trace);
   return {io::resultToJson(result), false, result.partial(), note};

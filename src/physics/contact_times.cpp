@@ -48,6 +48,18 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
   return firstCrossing(separation(d, e, g, distance), 0.0, horizon);
 }
 
+// A ball behind a cushion line (gap < 0) whose path bends back: it comes out in front while
+// moving away from the line (vn > 0, an < 0), turns at s = -vn / an, and meets the line again
+// from the table's side at the first root past that turn, if it got out of touch in between.
+std::optional<double> backFromBehind(double gap, double vn, double an, double horizon) {
+  if (!(vn > 0.0 && an < 0.0)) return std::nullopt;
+  const double turn = -vn / an;
+  if (!(turn < horizon)) return std::nullopt;
+  const Quartic height{{gap, vn, 0.5 * an, 0.0, 0.0}};
+  if (!(height(turn) > kTouchTolerance)) return std::nullopt;
+  return firstCrossing(height, turn, horizon);
+}
+
 }  // namespace
 
 Cushions Cushions::of(const TableGeometry& table) {
@@ -153,29 +165,29 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     if (height > limit || foot < -limit || foot > seg.length + limit) return;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
+    const double an = dot(path.a, seg.inward);
     std::optional<double> s;
     if (gap < -kTouchTolerance) {
-      // Behind this segment's line. Off its ends another segment holds the ball; on it, the
-      // ball has sunk past the tolerance (pressed by others) and is met to be set out again:
-      // at once if it still goes in, else once pressed further, unless it is leaving.
-      if (gap < -radius || foot < 0.0 || foot > seg.length || vn > kMinClosingSpeed) return;
-      s = 0.0;
+      // Behind this segment's line. On it, the ball has sunk past the tolerance (pressed by
+      // others) and is met at once to be set out again, unless it is leaving. Off its ends (or
+      // leaving) another segment holds it now, but a curved path (sliding, swerve) may bring
+      // it out in front of this line and back onto the segment later.
+      const bool on_it = gap >= -radius && foot >= 0.0 && foot <= seg.length;
+      s = on_it && vn <= kMinClosingSpeed ? std::optional<double>(0.0)
+                                          : backFromBehind(gap, vn, an, horizon);
     } else if (gap <= kTouchTolerance) {  // touching, or pressed a little into it
       if (vn < -kMinClosingSpeed) {
         s = 0.0;
       } else if (vn > kMinClosingSpeed) {
         // Leaving the cushion, perhaps to be pulled back by spin: back on it when the height
         // gained, s (vn + a_n s / 2), is zero again.
-        s = firstCrossing(Quartic{{vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0, 0.0}}, 0.0,
-                          horizon);
+        s = firstCrossing(Quartic{{vn, 0.5 * an, 0.0, 0.0, 0.0}}, 0.0, horizon);
       } else {
         // Resting on it: met again if pressed a touch tolerance in.
-        s = firstCrossing(
-            Quartic{{gap + kTouchTolerance, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0,
-            horizon);
+        s = firstCrossing(Quartic{{gap + kTouchTolerance, vn, 0.5 * an, 0.0, 0.0}}, 0.0, horizon);
       }
     } else {
-      s = firstCrossing(Quartic{{gap, vn, 0.5 * dot(path.a, seg.inward), 0.0, 0.0}}, 0.0, horizon);
+      s = firstCrossing(Quartic{{gap, vn, 0.5 * an, 0.0, 0.0}}, 0.0, horizon);
     }
     if (!s) return;
     const double at = dot(path.at(*s) - seg.a, seg.along);

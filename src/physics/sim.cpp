@@ -141,6 +141,37 @@ SimEnd simEnd(bool until, bool exhausted, bool at_rest) {
   return at_rest ? SimEnd::Rest : SimEnd::MaxTime;
 }
 
+namespace {
+
+// JSON cannot hold NaN or infinity (nlohmann would print null), so such a result is a bug.
+bool allFinite(const SimResult& r) {
+  bool ok = std::isfinite(r.time) && std::isfinite(r.wall_ms);
+  for (const BallState& b : r.balls) ok = ok && finite(b.pos) && finite(b.vel);
+  for (const Event& e : r.events) ok = ok && std::isfinite(e.t) && finite(e.va) && finite(e.vb);
+  if (!r.trace) return ok;
+  for (const BallTrace& b : r.trace->balls) {
+    for (std::size_t i = 0; i < b.size() && ok; ++i) {
+      ok = std::isfinite(b.t[i]) && finite(Vec2{b.x[i], b.y[i]}) &&
+           finite(Vec2{b.vx[i], b.vy[i]}) && std::isfinite(b.w[i].x) && std::isfinite(b.w[i].y) &&
+           std::isfinite(b.w[i].z);
+    }
+  }
+  return ok;
+}
+
+}  // namespace
+
+std::optional<std::string> resultFault(const Scene& scene, const SimResult& result) {
+  if (!allFinite(result)) return std::string("the simulation produced a non-finite number");
+  const TableGeometry table = buildTable(scene.table, scene.physics.ball_radius);
+  for (const BallState& b : result.balls) {
+    if (b.pocket || table.insideLoop(b.pos)) continue;
+    return "ball " + std::to_string(b.id) + " ended off the table, at (" + std::to_string(b.pos.x) +
+           ", " + std::to_string(b.pos.y) + ") m";
+  }
+  return std::nullopt;
+}
+
 SimResult simulate(const Scene& scene) {
   if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
   World world(scene.table, scene.physics, scene.step);

@@ -195,3 +195,48 @@ TEST(MatchThroughPhysics, NineOnAFoulIsSpottedOnTheFootSpot) {
     EXPECT_NEAR(b.pos.y, 0.0, 1e-12);
   }
 }
+
+namespace {
+
+// step.max_time limits each shot, not the match: the world's clock runs on from shot to shot,
+// and shots of 4.4 s under a 10 s limit all run to rest.
+TEST(Match, MaxTimeIsPerShotNotPerMatch) {
+  MatchSetup s = layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.9, 0.45}),
+                         BallState::at(9, {0.9, -0.45})});
+  s.step.max_time = 10.0;
+  Match m(s);
+  for (double heading : {90.0, -90.0, 90.0, -90.0}) {
+    const double before = m.world().time();
+    m.play(shot(heading, 1.0));
+    EXPECT_TRUE(m.world().atRest()) << "at " << m.world().time() << " s";
+    EXPECT_GT(m.world().time() - before, 3.0);
+  }
+  EXPECT_GT(m.world().time(), 10.0);
+}
+
+// A shot the window steps frame by frame ends where play() ends it, bit for bit: the same
+// steps, spin and clock included.
+TEST(Match, SteppingAShotEndsWhereAWholeTurnEnds) {
+  const auto setup = layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.05})});
+  TurnInput t = shot(2.0, 3.0);
+  t.shot.tip = {0.3, -0.2};  // side spin: the balls still turn when they stop travelling
+  Match whole(setup);
+  whole.play(t);
+  Match stepped(setup);
+  stepped.beginShot(t);
+  int steps = 0;
+  while (!stepped.stepShot()) ++steps;
+  stepped.finishShot();
+  EXPECT_GT(steps, 60);
+  EXPECT_EQ(stepped.world().time(), whole.world().time());
+  const auto a = whole.balls();
+  const auto b = stepped.balls();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].pos.x, b[i].pos.x);
+    EXPECT_EQ(a[i].pos.y, b[i].pos.y);
+    EXPECT_EQ(a[i].w.z, b[i].w.z);
+  }
+}
+
+}  // namespace

@@ -34,6 +34,27 @@ TEST_F(OnTheTopRail, ABallLeavingTheRailIsNotHeld) {
   EXPECT_FALSE(cushionContact(path, r, cushions, 1e-3).has_value());
 }
 
+TEST_F(OnTheTopRail, ACurvedPathFromBehindTheLineIsMetWhenItBendsBackOntoTheRail) {
+  // Off the rail's end in a side pocket's mouth, a little above the rail's line, sliding away
+  // along the rail and curving back into it (a masse): it comes out in front of the line and
+  // meets the rail from the table's side about 0.9 m on. This was passed over as "held by
+  // another segment", and the reference engine, which searches once per phase, let the ball
+  // through the rail.
+  const Path path{{0.04, top + 0.0035}, {-1.8, -0.3}, {-0.6, 1.9}};
+  const auto hit = cushionContact(path, r, cushions, 2.0);
+  ASSERT_TRUE(hit.has_value());
+  const double turn = 0.3 / 1.9;  // where the path stops moving away from the rail
+  EXPECT_GT(hit->s, turn);
+  EXPECT_NEAR(path.at(hit->s).y, top, 1e-9);
+  EXPECT_NEAR(hit->normal.y, -1.0, 1e-12);
+}
+
+TEST_F(OnTheTopRail, APathThatStaysInFrontAfterLeavingIsNotMetAgain) {
+  // Half a second on it is still well in front of the rail and short of the end rail.
+  const Path path{{0.04, top + 0.0035}, {-1.8, -0.3}, {-0.6, 0.1}};
+  EXPECT_FALSE(cushionContact(path, r, cushions, 0.5).has_value());
+}
+
 TEST(PressedPairs, AreMetAtAFixedDepthHoweverOftenTheSearchRuns) {
   // Two balls resting together, pressed at 20 um/s. Searched again every 10 ms, the press
   // must still be met at one touch tolerance of overlap (50 ms on): measured from each
