@@ -22,6 +22,8 @@ struct StressOptions {
   StepParams step;              ///< solver settings of every scenario
   /// Only the scenarios whose names start with one of these ("settings #616 "); all if empty.
   std::vector<std::string> only;
+  /// Also runs every scenario (twice) through the reference engine, checking its result.
+  bool reference = true;
 };
 
 /// What it found.
@@ -32,6 +34,7 @@ struct StressReport {
   std::map<std::string, long> failures;     ///< check -> count
   std::vector<std::string> first_failures;  ///< the first few, described
   double simulated_s = 0.0;
+  long reference_runs = 0;  ///< scenarios run through the reference engine too
 
   long failureCount() const;
 };
@@ -42,7 +45,9 @@ std::optional<Scene> stressScene(const StressOptions& options, const std::string
 /// Runs every scenario twice, checking after every step: no NaN or infinity; every ball inside
 /// the cushions or pocketed; no two balls overlapping by more than 0.1 mm; kinetic energy
 /// (with rotation) never rising outside a cue strike; a ball pocketed only with an event; all
-/// balls at rest within rest_within_s; the two runs identical.
+/// balls at rest within rest_within_s; the two runs identical. With `reference`, each scenario
+/// is also run twice through the reference engine and its result checked the same way (at its
+/// end: it has no steps).
 StressReport runStress(const StressOptions& options);
 
 }  // namespace nineball

@@ -8,6 +8,7 @@
 #include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
+#include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
 #include "nineball/world.hpp"
 #include "physics/motion.hpp"
@@ -135,6 +136,73 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   if (s.run_s <= 0.0) check.check("at rest in time", w.atRest());
   if (count) rep.simulated_s += w.time();
   mix(static_cast<double>(w.events().size()));
+  return hash.value();
+}
+
+Scene sceneOf(const Scenario& s, Engine engine) {
+  Scene scene;
+  scene.table = s.table;
+  scene.physics = s.physics;
+  scene.step = s.step;
+  scene.step.engine = engine;
+  scene.balls = s.balls;
+  scene.shot = s.shot;
+  if (s.run_s > 0.0) scene.until = s.run_s;
+  return scene;
+}
+
+// The reference engine has no steps to look between: its result is checked as a whole, with
+// the same limits. Returns a fingerprint of the result, for the twin-run comparison.
+std::uint64_t runReference(const Scenario& s, const StressOptions& o, StressReport& report,
+                           bool count) {
+  StressReport scratch;
+  StressReport& rep = count ? report : scratch;
+  Checker check(rep, "reference engine: " + s.name);
+  const Scene scene = sceneOf(s, Engine::Reference);
+  const SimResult r = simulate(scene);
+  const double radius = s.physics.ball_radius;
+  // The energy the run starts with, the cue strike included: the same strike as Box2D's.
+  World start(s.table, s.physics, s.step);
+  for (const BallState& b : s.balls) start.addBall(b);
+  if (s.shot) start.strike(kCueBall, *s.shot);
+  const double e_start = energy(start.balls(), radius, s.physics.ball_mass);
+  const auto fault = resultFault(scene, r);
+  check.check("finite, and on the table or pocketed", !fault, fault.value_or(""));
+  if (fault) return 0;
+  const TableGeometry table = buildTable(s.table, radius);
+  for (std::size_t i = 0; i < r.balls.size(); ++i) {
+    const BallState& b = r.balls[i];
+    if (b.pocket) {
+      const bool announced =
+          s.balls[i].pocket || std::any_of(r.events.begin(), r.events.end(), [&](const Event& e) {
+            return e.type == EventType::Pocket && e.a == b.id;
+          });
+      check.check("pocketed with an event", announced, "ball " + std::to_string(b.id));
+      continue;
+    }
+    check.check("not sunk into a cushion", cushionSink(table, b.pos, radius) <= kMaxSink,
+                "ball " + std::to_string(b.id));
+    for (std::size_t j = i + 1; j < r.balls.size(); ++j) {
+      if (r.balls[j].pocket) continue;
+      const double gap = length(r.balls[j].pos - b.pos) - 2.0 * radius;
+      check.check("no overlap", gap >= -kMaxOverlap,
+                  "balls " + std::to_string(b.id) + "," + std::to_string(r.balls[j].id));
+    }
+  }
+  const double e_end = energy(r.balls, radius, s.physics.ball_mass);
+  check.check("energy never rises", e_end <= e_start + kEnergyRounding * std::max(e_start, 1e-9));
+  check.check("within the work budget", r.end != SimEnd::Budget);
+  if (s.run_s <= 0.0) {
+    check.check("at rest in time", r.end == SimEnd::Rest && r.time <= o.rest_within_s);
+  }
+  if (count) {
+    ++rep.reference_runs;
+    rep.simulated_s += r.time;
+  }
+  BitHash hash;
+  hash.add(static_cast<std::int64_t>(stateHash(r.balls)));
+  hash.add(static_cast<std::int64_t>(r.events.size()));
+  hash.add(r.time);
   return hash.value();
 }
 
@@ -397,14 +465,9 @@ long StressReport::failureCount() const {
 std::optional<Scene> stressScene(const StressOptions& options, const std::string& name) {
   for (const Scenario& s : scenarios(options)) {
     if (s.name.rfind(name, 0) != 0) continue;
-    Scene scene;
-    scene.table = s.table;
-    scene.physics = s.physics;
-    scene.step = s.fixed_step ? s.step : options.step;
-    scene.balls = s.balls;
-    scene.shot = s.shot;
-    if (s.run_s > 0.0) scene.until = s.run_s;
-    return scene;
+    Scenario chosen = s;
+    if (!s.fixed_step) chosen.step = options.step;
+    return sceneOf(chosen, options.step.engine);
   }
   return std::nullopt;
 }
@@ -423,6 +486,11 @@ StressReport runStress(const StressOptions& options) {
     const std::uint64_t first = runOnce(s, options, report, true);
     const std::uint64_t second = runOnce(s, options, report, false);
     Checker(report, s.name).check("two runs identical", first == second);
+    if (!options.reference) continue;
+    const std::uint64_t ref_first = runReference(s, options, report, true);
+    const std::uint64_t ref_second = runReference(s, options, report, false);
+    Checker(report, "reference engine: " + s.name)
+        .check("two runs identical", ref_first == ref_second);
   }
   return report;
 }

@@ -52,6 +52,7 @@ int runStressCommand(const StressCommandOptions& options, std::ostream& out) {
   out << "stress (seed " << o.seed << ", " << contactModelName(o.step.contacts)
       << " k=" << o.step.scale << " " << o.step.hz << " Hz), each scenario run twice:\n";
   for (const auto& [kind, count] : r.scenarios) out << "  " << count << " x " << kind << '\n';
+  out << "  each also through the reference engine (" << r.reference_runs << " scenarios)\n";
   char line[256];
   std::snprintf(line, sizeof line,
                 "%ld steps, %.0f s simulated, %ld checks in %.1f s of wall time: %ld failed\n",
