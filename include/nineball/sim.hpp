@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "nineball/ball.hpp"
@@ -45,6 +46,7 @@ struct SimResult {
   std::vector<Event> events;
   SimEnd end = SimEnd::Rest;
   std::optional<Trace> trace;  ///< when the scene asked for one
+  std::string budget;          ///< which work budget ran out, when end is Budget
 
   /// True when the run stopped before its end (max_time or the work budget).
   bool partial() const { return end == SimEnd::MaxTime || end == SimEnd::Budget; }

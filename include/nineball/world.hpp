@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "nineball/ball.hpp"
@@ -57,6 +58,9 @@ class World {
   /// pieces, or an endless run of contacts in one step): nothing moves any more, and what the
   /// world holds is a partial result.
   bool exhausted() const;
+  /// Which work budget ran out, for a message: "2000000 contacts", "20000000 pieces", or the
+  /// contacts one step may hold. Empty while none has.
+  const std::string& budgetSpent() const;
   double time() const;
   long steps() const;
 

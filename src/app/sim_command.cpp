@@ -130,8 +130,7 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
     return kExitPartial;
   }
   if (result.end == SimEnd::Budget) {
-    err << prefix << "stopped at the work budget (" << limits::kMaxEvents << " contacts or "
-        << limits::kMaxPieces << " pieces) at t = " << result.time
+    err << prefix << "stopped at the work budget (" << result.budget << ") at t = " << result.time
         << " s with balls still moving: the result is partial\n";
     return kExitPartial;
   }

@@ -194,6 +194,7 @@ SimResult simulate(const Scene& scene) {
   result.balls = world.balls();
   result.events = world.events();
   result.end = simEnd(scene.until.has_value(), world.exhausted(), world.atRest());
+  result.budget = world.budgetSpent();
   if (started_at_rest) {
     Event rest;
     rest.type = EventType::AllAtRest;

@@ -76,6 +76,7 @@ struct World::Impl {
   long pieces = 0;             // Box2D steps taken, for the work budget
   long resolved = 0;           // events resolved, for the work budget
   bool exhausted = false;      // the work budget ran out: nothing more moves
+  std::string budget_spent;    // which budget, for the message
   bool contacts_stale = true;  // bodies added or moved by hand: sensors not yet updated
   std::unique_ptr<physics::ArcLog> arc_log;  // every arc followed, when a trace is asked for
 
@@ -361,23 +362,45 @@ struct World::Impl {
       for (auto [x, y] : hits) {
         pushBallEvent(balls[x], balls[y], balls[x].arc.start.v, balls[y].arc.start.v);
       }
-      if (!hits.empty()) return;
-      logger("physics")->debug("t={:.6f} Box2D saw no contact of {} and {}", time, a.id, b.id);
+      // Box2D's sequential solver, in floats, can leave the pair it was called for still
+      // closing: the same contact would be found again at the same instant, without end. It is
+      // then resolved by hand, as the pairwise model does.
+      const Vec2 n = normalized(position(b) - position(a));
+      const double closing = dot(now(a).v - now(b).v, n);
+      if (!hits.empty() && !(closing > physics::kMinClosingSpeed)) {
+        // Box2D leaves positions alone: a pair pressed past the touch tolerance would be met
+        // again at once for ever. It is set back to touching, as the pairwise model does.
+        setPairApart(a, b);
+        return;
+      }
+      logger("physics")->debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand",
+                               time, a.id, b.id, hits.empty() ? 0.0 : closing);
     }
     if (jams.jammed(time, i, j)) {
       settleJam(i, j);
       return;
     }
     Kinematics sa = now(a), sb = now(b);
-    const Vec2 pa = sa.p, pb = sb.p;
     physics::collideBalls(sa, sb, a.mass, b.mass, phys);
+    placeApart(a, b, sa, sb);
+    pushBallEvent(a, b, sa.v, sb.v);
+  }
+
+  // Balls pressed together are set back to touching (see setApart), and follow `sa`, `sb`.
+  void placeApart(Ball& a, Ball& b, Kinematics sa, Kinematics sb) {
+    const Vec2 pa = sa.p, pb = sb.p;
     physics::setApart(sa, sb, table, phys.ball_radius);
-    // Balls pressed together are set back to touching (see setApart).
     if (sa.p != pa) a.body->SetTransform(toB2(sa.p), 0.0f);
     if (sb.p != pb) b.body->SetTransform(toB2(sb.p), 0.0f);
     restart(a, sa);
     restart(b, sb);
-    pushBallEvent(a, b, sa.v, sb.v);
+  }
+
+  void setPairApart(Ball& a, Ball& b) {
+    const Kinematics sa = now(a), sb = now(b);
+    if (2.0 * phys.ball_radius - length(sb.p - sa.p) > 0.5 * physics::kTouchTolerance) {
+      placeApart(a, b, sa, sb);
+    }
   }
 
   // A contact of i and j in a jam: every ball touching them settled at once (see settleJam).
@@ -514,6 +537,12 @@ struct World::Impl {
       }
       if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
         exhausted = true;
+        budget_spent =
+            resolved >= limits::kMaxEvents ? std::to_string(limits::kMaxEvents) + " contacts"
+            : pieces >= limits::kMaxPieces ? std::to_string(limits::kMaxPieces) + " pieces"
+                                           : std::to_string(cap) +
+                                                 " contacts in one step (a run of contacts "
+                                                 "that makes no progress)";
         logger("physics")->info(
             "t={:.6f}: work budget spent ({} events, {} in this step; {} pieces); stopped", time,
             resolved, count, pieces);
@@ -653,6 +682,10 @@ const physics::ArcLog* World::arcLog() const {
 
 bool World::exhausted() const {
   return impl_->exhausted;
+}
+
+const std::string& World::budgetSpent() const {
+  return impl_->budget_spent;
 }
 
 bool World::atRest() const {

@@ -277,6 +277,7 @@ SimResult simulate(const Scene& scene) {
   const auto stop = std::chrono::steady_clock::now();
   SimResult r = run.result();
   r.end = simEnd(scene.until.has_value(), run.exhausted(), run.settled());
+  if (run.exhausted()) r.budget = std::to_string(limits::kMaxEvents) + " contacts";
   r.wall_ms = std::chrono::duration<double, std::milli>(stop - start).count();
   if (started_at_rest) {
     Event rest;
