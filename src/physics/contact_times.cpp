@@ -48,6 +48,21 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
   return firstCrossing(separation(d, e, g, distance), 0.0, horizon);
 }
 
+// A jaw point (a corner of the cushion loop). Within the touch tolerance but not on it, a ball
+// closing on it is met where its path reaches it, not at once: one rolling along a rail past
+// the rail's end only passes the point by, and would otherwise be met with the closing speed
+// the tolerance gives it (up to v sqrt(2 tol / R), a few mm/s), in one engine and not the
+// other depending on when the search ran.
+std::optional<double> cornerContact(Vec2 d, const Path& path, double gap, double radius,
+                                    double horizon) {
+  if (gap > 0.0 && gap <= kTouchTolerance && -dot(d, path.v) > kMinClosingSpeed * length(d)) {
+    const Quartic q = separation(d, path.v, path.a, radius);
+    if (!(q(0.0) > 0.0)) return 0.0;
+    return firstCrossing(q, 0.0, horizon);
+  }
+  return meet(d, path.v, path.a, radius, horizon, true);
+}
+
 // A ball behind a cushion line (gap < 0) whose path bends back: it comes out in front while
 // moving away from the line (vn > 0, an < 0), turns at s = -vn / an, and meets the line again
 // from the table's side at the first root past that turn, if it got out of touch in between.
@@ -195,8 +210,9 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
   };
   auto corner = [&](Vec2 c) {
     const Vec2 d = path.p - c;
-    if (length(d) > limit) return;
-    if (auto s = meet(d, path.v, path.a, radius, horizon, true)) {
+    const double distance = length(d);
+    if (distance > limit) return;
+    if (auto s = cornerContact(d, path, distance - radius, radius, horizon)) {
       consider(*s, normalized(path.at(*s) - c));
     }
   };

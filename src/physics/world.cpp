@@ -250,6 +250,12 @@ struct World::Impl {
     Ball& b = balls[i];
     Vec2 normal;
     Kinematics s = now(b);
+    if (physics::touchesOnly(s, predicted, faces(s.p), phys.ball_radius)) {
+      const Kinematics rested = physics::restAgainstCushion(s, predicted, table, phys);
+      if (rested.p != s.p) b.body->SetTransform(toB2(rested.p), 0.0f);
+      if (rested.p != s.p || rested.v != s.v || rested.w != s.w) restart(b, rested);
+      return;
+    }
     if (jams.jammed(time, i, physics::JamCounter::kCushion)) {
       // In a jam: no bounce, and every face it touches at once (see JamCounter).
       double impulse = 0.0;
@@ -276,16 +282,20 @@ struct World::Impl {
     }
     recorder.cushion_pushes.clear();
     const Vec2 v_in = s.v;
-    const Vec2 v_box2d = fromB2(b.body->GetLinearVelocity());
-    // Box2D's answer stands when it pushed and gave back no energy. Its sequential solver can
-    // push a ball wedged between two faces out faster than it came (each face restores the full
-    // approach speed), and then the same law is applied by hand, one face at a time.
+    // Box2D's impulse, along the exact normal: Box2D finds a face's (and a jaw point's) normal
+    // from float vertices, microradians off, and a ball rattling in the jaws carries that on
+    // from rebound to rebound. Its answer stands when it pushed and gave back no energy; its
+    // sequential solver can push a ball wedged between two faces out faster than it came (each
+    // face restores the full approach speed), and then the same law is applied by hand, one
+    // face at a time.
+    const bool one_face = dot(normalized(pushed), predicted) > 1.0 - 1e-8;
+    const Vec2 v_box2d = one_face ? v_in + predicted * (length(pushed) / b.mass)
+                                  : fromB2(b.body->GetLinearVelocity());
     if (impulse > 0.0 && dot(v_box2d, v_box2d) <= dot(v_in, v_in)) {
       s.v = v_box2d;
-      normal = normalized(pushed);
-      // Box2D's face normal comes from float vertices and differs from the exact one by about
-      // 1e-6: what it leaves of the approach along the exact normal is rounding, and would be
-      // found as a new contact at once, forever.
+      normal = one_face ? predicted : normalized(pushed);
+      // What Box2D's float solver leaves of the approach along the normal is rounding, and
+      // would be found as a new contact at once, forever.
       const double vn = dot(s.v, predicted);
       if (vn < 0.0) s.v -= predicted * vn;
     } else {

@@ -209,6 +209,11 @@ class Run {
       case NextEvent::Kind::Cushion: {
         double impulse = 0.0;
         Kinematics k = now(a);
+        if (physics::touchesOnly(k, e.normal, faces(k.p), p_.ball_radius)) {
+          const Kinematics rested = physics::restAgainstCushion(k, e.normal, table_, p_);
+          if (rested.p != k.p || rested.v != k.v || rested.w != k.w) restart(a, rested);
+          return;
+        }
         if (jams_.jammed(t_, e.i, physics::JamCounter::kCushion)) {
           auto normals = faces(k.p);
           normals.push_back(e.normal);

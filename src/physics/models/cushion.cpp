@@ -72,6 +72,28 @@ Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p) {
   return k;
 }
 
+bool touchesOnly(const Kinematics& k, Vec2 normal, const std::vector<Vec2>& faces, double r) {
+  if (!(-dot(k.v, normal) > kMinClosingSpeed)) return true;
+  // A ball on a rail within the tolerance meets the rail's end point at up to sqrt(2 tol / R)
+  // from the rail's own normal, with the closing speed that angle gives its speed along the
+  // rail: the rail ending under it, not a hit.
+  for (Vec2 face : faces) {
+    if (dot(face, normal) >= 1.0 - kTouchTolerance / r && !(-dot(k.v, face) > kMinClosingSpeed)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+Kinematics restAgainstCushion(Kinematics k, Vec2 normal, const TableGeometry& table,
+                              const PhysicsParams& p) {
+  const double vn = dot(k.v, normal);
+  if (vn < 0.0) k.v -= normal * vn;
+  k = stopPressing(k, -normal, p);
+  setOutOfCushion(k, normal, table, p.ball_radius);
+  return k;
+}
+
 void setOutOfCushion(Kinematics& k, Vec2 normal, const TableGeometry& table, double r) {
   // Below half the tolerance a sink is the rounding of a contact met on time.
   const double sink = cushionSink(table, k.p, r);

@@ -42,4 +42,18 @@ Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p);
 /// here: micrometres of position, no velocity, so no energy.
 void setOutOfCushion(Kinematics& k, Vec2 normal, const TableGeometry& table, double r);
 
+/// True when a cushion contact is no bounce, only a touch: met with no speed into the cushion
+/// (at most kMinClosingSpeed), or at the end of a rail face the ball runs along (among
+/// `faces`, those it touches; the contact's normal within the touch tolerance of that face's):
+/// a ball rolling along a rail past a jaw point, a path tangent to a cushion, a ball crawling
+/// along a rail and pressed into it by its spin or by rounding. Neither engine bounces it or
+/// records an event (a ball frozen to a rail does not "reach a rail"): it is only kept out of
+/// the cushion (restAgainstCushion).
+bool touchesOnly(const Kinematics& k, Vec2 normal, const std::vector<Vec2>& faces, double r);
+
+/// A ball that only touches a cushion: any crawl into it stopped, the pressing spin taken
+/// away, and the ball set back out if pressed in. Never adds energy.
+Kinematics restAgainstCushion(Kinematics k, Vec2 normal, const TableGeometry& table,
+                              const PhysicsParams& p);
+
 }  // namespace nineball::physics
