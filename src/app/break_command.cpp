@@ -74,7 +74,8 @@ int runBreak(const BreakOptions& options, std::ostream& out, std::ostream& err) 
   }
   const SimResult result = simulate(scene);
   if (options.json) {
-    out << io::resultToJson(result).dump(2) << '\n';
+    io::writeResult(out, result, true);
+    out << '\n';
   } else {
     out << breakSummary(options, result);
   }

@@ -119,7 +119,8 @@ int runSim(const SimOptions& options, std::istream& in, std::ostream& out, std::
     err << prefix << "internal error: " << *fault << '\n';
     return kExitInternal;
   }
-  out << io::resultToJson(result).dump(2) << '\n' << std::flush;
+  io::writeResult(out, result, true);
+  out << '\n' << std::flush;
   if (!out) return kExitInternal;
   if (result.trace && result.trace->truncated) {
     err << prefix << traceTruncatedNote(*result.trace) << '\n';

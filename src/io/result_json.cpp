@@ -77,7 +77,9 @@ ordered_json traceToJson(const Trace& trace) {
   return j;
 }
 
-ordered_json resultToJson(const SimResult& result) {
+namespace {
+
+ordered_json resultWithoutTrace(const SimResult& result) {
   ordered_json j;
   j["time"] = result.time;
   j["steps"] = result.steps;
@@ -88,11 +90,56 @@ ordered_json resultToJson(const SimResult& result) {
   for (const BallState& b : result.balls) j["balls"].push_back(ballToJson(b));
   j["events"] = ordered_json::array();
   for (const Event& e : result.events) j["events"].push_back(eventToJson(e));
+  return j;
+}
+
+// One ball's trace, one array at a time: only one array's nodes exist at once.
+void writeBallTrace(std::ostream& out, const BallTrace& b) {
+  out << "{\"t\": " << ordered_json(b.t) << ", \"x\": " << ordered_json(b.x)
+      << ", \"y\": " << ordered_json(b.y) << ", \"vx\": " << ordered_json(b.vx)
+      << ", \"vy\": " << ordered_json(b.vy) << ", \"w\": [";
+  for (std::size_t i = 0; i < b.w.size(); ++i) {
+    out << (i ? "," : "") << ordered_json::array({b.w[i].x, b.w[i].y, b.w[i].z});
+  }
+  out << "], \"phase\": [";
+  for (std::size_t i = 0; i < b.phase.size(); ++i) {
+    out << (i ? ",\"" : "\"") << tracePhaseName(b.phase[i]) << '"';
+  }
+  out << "]}";
+}
+
+}  // namespace
+
+ordered_json resultToJson(const SimResult& result) {
+  ordered_json j = resultWithoutTrace(result);
   if (result.trace) {
     j["trace"] = traceToJson(*result.trace);
     j["trace_truncated"] = result.trace->truncated;
   }
   return j;
+}
+
+void writeResult(std::ostream& out, const SimResult& result, bool indented) {
+  std::string head = resultWithoutTrace(result).dump(indented ? 2 : -1);
+  if (!result.trace) {
+    out << head;
+    return;
+  }
+  // The closing brace (and the line break before it) goes: the trace follows as the last keys.
+  head.pop_back();
+  while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
+  const char* const gap = indented ? "\n  " : "";
+  const char* const inner = indented ? "\n    " : "";
+  out << head << (indented ? ",\n  " : ",") << "\"trace\": {";
+  bool first = true;
+  for (const BallTrace& b : result.trace->balls) {
+    out << (first ? "" : ",") << inner << '"' << b.id << "\": ";
+    writeBallTrace(out, b);
+    first = false;
+  }
+  out << (first ? "" : gap) << "}," << gap
+      << "\"trace_truncated\": " << (result.trace->truncated ? "true" : "false")
+      << (indented ? "\n}" : "}");
 }
 
 }  // namespace nineball::io

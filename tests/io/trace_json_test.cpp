@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "io/result_json.hpp"
@@ -88,6 +89,35 @@ TEST(TraceJson, ResultCarriesOneEntryPerBallKeyedByItsId) {
   for (const auto& item : t.items()) keys.push_back(item.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"t", "x", "y", "vx", "vy", "w", "phase"}));
   EXPECT_FALSE(resultToJson(SimResult{}).contains("trace"));
+}
+
+}  // namespace
+}  // namespace nineball::io
+
+namespace nineball::io {
+namespace {
+
+// writeResult streams the trace array by array; what it writes is the same document as
+// resultToJson, indented or on one line, with a trace of several balls or none.
+TEST(TraceJson, TheStreamedResultIsTheSameDocument) {
+  Scene s;
+  s.balls = {BallState::at(kCueBall, {-0.5, 0.1}), BallState::at(3, {0.4, -0.2})};
+  s.shot = Shot::withSpeed(-20.0, 3.0);
+  s.shot->tip = {0.2, -0.3};
+  for (bool traced : {true, false}) {
+    s.trace = traced ? std::optional<TraceRequest>(TraceRequest{200.0, false}) : std::nullopt;
+    const SimResult r = simulate(s);
+    for (bool indented : {true, false}) {
+      std::ostringstream out;
+      writeResult(out, r, indented);
+      const std::string text = out.str();
+      EXPECT_EQ(nlohmann::ordered_json::parse(text), resultToJson(r)) << traced << indented;
+      EXPECT_EQ(text.find('\n') == std::string::npos, !indented);
+      if (!traced) {
+        EXPECT_EQ(text, resultToJson(r).dump(indented ? 2 : -1));
+      }
+    }
+  }
 }
 
 }  // namespace
