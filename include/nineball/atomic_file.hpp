@@ -7,8 +7,10 @@ namespace nineball {
 
 /// Writes a file whole or not at all. The data go to a fresh temporary file in the target's
 /// directory (mkstemp: a unique name, never an existing file or a symlink), are flushed,
-/// fsynced and checked, and the temporary file is then renamed over the target (a symlink at
-/// the target is replaced, not followed). On any failure, or if the process is stopped by
+/// fsynced and checked, and the temporary file is then renamed over the target. The target may
+/// be new, a regular file, or a symlink to a regular file or to nothing (the link is replaced,
+/// not followed); a directory, device, FIFO or socket, or a symlink to one, is refused before
+/// anything is written. On any failure, or if the process is stopped by
 /// SIGINT, SIGTERM or SIGHUP while writing, the temporary file is removed. False with `why`
 /// naming `path` and the reason.
 bool writeFileAtomically(const std::string& path, const std::string& content, std::string& why);

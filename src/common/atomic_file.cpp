@@ -60,6 +60,35 @@ std::string reason(int err) {
   return std::strerror(err);
 }
 
+const char* kindOf(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// The one rule for what a written file may replace: nothing, a regular file, or a symlink to a
+// regular file or to nothing (the link itself is replaced, not followed). A directory, a
+// device, a FIFO or a socket, or a symlink to one, is refused: renaming over it would put a
+// regular file where a device or a pipe was.
+bool replaceable(const std::string& path, std::string& why) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return true;  // nothing there yet
+  if (S_ISREG(st.st_mode)) return true;
+  if (S_ISLNK(st.st_mode)) {
+    struct stat to {};
+    if (::stat(path.c_str(), &to) != 0 || S_ISREG(to.st_mode)) return true;
+    why = std::string("cannot write ") + path + ": it is a symlink to " + kindOf(to.st_mode) +
+          " (only a regular file, a symlink to one, or a new name is replaced)";
+    return false;
+  }
+  why = std::string("cannot write ") + path + ": it is " + kindOf(st.st_mode) +
+        " (only a regular file, a symlink to one, or a new name is replaced)";
+  return false;
+}
+
 // A fresh temporary file beside `path`; returns its descriptor and sets `name`, or -1 with
 // `why` set.
 int createTemporary(const std::string& path, const std::string& suffix, std::string& name,
@@ -72,6 +101,7 @@ int createTemporary(const std::string& path, const std::string& suffix, std::str
     why = "cannot write " + path + ": it names a directory";
     return -1;
   }
+  if (!replaceable(path, why)) return -1;
   std::string base = baseName(path);
   if (base.size() > 64) base.resize(64);
   std::vector<char> tmpl;
@@ -122,6 +152,11 @@ bool finish(const std::string& tmp, const std::string& path, std::string& why) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::chmod(tmp.c_str(), 0666 & ~mask);
+  // Checked again: a device or FIFO may have been put there while the file was written.
+  if (!replaceable(path, why)) {
+    ::unlink(tmp.c_str());
+    return false;
+  }
   if (::rename(tmp.c_str(), path.c_str()) != 0) return fail(tmp, path, why, errno);
   return true;
 }
@@ -170,11 +205,6 @@ bool canWriteFile(const std::string& path, std::string& why) {
   if (fd < 0) return false;
   ::close(fd);
   ::unlink(tmp.c_str());
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-    why = "cannot write " + path + ": it is a directory";
-    return false;
-  }
   return true;
 }
 

@@ -109,6 +109,49 @@ TEST(AtomicFile, ADirectoryOrNoNameIsRefused) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"sub"});
 }
 
+// Renaming over a device or a FIFO would replace it with a regular file (as root, /dev/null
+// itself): such a name is refused before anything is written, by every writer.
+TEST(AtomicFile, ADeviceAFifoOrASymlinkToOneIsRefusedAndLeftAlone) {
+  ScratchDir dir;
+  ASSERT_EQ(::mkfifo(dir.file("pipe").c_str(), 0600), 0);
+  ASSERT_EQ(::symlink(dir.file("pipe").c_str(), dir.file("to-pipe").c_str()), 0);
+  ASSERT_EQ(::mkdir(dir.file("sub").c_str(), 0755), 0);
+  ASSERT_EQ(::symlink(dir.file("sub").c_str(), dir.file("to-sub").c_str()), 0);
+  for (const std::string& name :
+       {dir.file("pipe"), dir.file("to-pipe"), dir.file("to-sub"), std::string("/dev/null")}) {
+    std::string why;
+    EXPECT_FALSE(canWriteFile(name, why)) << name;
+    EXPECT_NE(why.find(name), std::string::npos) << why;
+    EXPECT_FALSE(writeFileAtomically(name, "data", why)) << name;
+    EXPECT_NE(why.find("only a regular file"), std::string::npos) << why;
+    bool wrote = false;
+    EXPECT_FALSE(writeFileAtomicallyWith(
+        name, ".png", [&](const std::string&) { return wrote = true; },
+        [](const std::string&) { return true; }, why));
+    EXPECT_FALSE(wrote) << name;
+  }
+  struct stat st {};
+  ASSERT_EQ(::lstat(dir.file("pipe").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  ASSERT_EQ(::lstat(dir.file("to-pipe").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode));
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  ::rmdir(dir.file("sub").c_str());
+}
+
+TEST(AtomicFile, ADanglingSymlinkIsReplacedLikeANewName) {
+  ScratchDir dir;
+  ASSERT_EQ(::symlink(dir.file("nowhere").c_str(), dir.file("out.csv").c_str()), 0);
+  std::string why;
+  EXPECT_TRUE(canWriteFile(dir.file("out.csv"), why)) << why;
+  ASSERT_TRUE(writeFileAtomically(dir.file("out.csv"), "a,b", why)) << why;
+  struct stat st {};
+  ASSERT_EQ(::lstat(dir.file("out.csv").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISREG(st.st_mode));
+  EXPECT_EQ(readAll(dir.file("out.csv")), "a,b");
+}
+
 TEST(AtomicFile, AFullDiskLeavesNoFileAndNoTemporary) {
   // /dev/full stands in for a full disk for the writer; the directory must end up as it was.
   ScratchDir dir;
