@@ -4,6 +4,7 @@
 #include <cstring>
 #include <istream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -17,31 +18,70 @@
 namespace nineball::app {
 namespace {
 
+// The rest of an over-long line is skipped up to this much more input: a line that never ends
+// (/dev/zero) stops the run there rather than reading for ever.
+constexpr std::size_t kMaxSkipped = std::size_t{1} << 30;
+
 bool blank(const std::string& line) {
   return line.find_first_not_of(" \t\r") == std::string::npos;
 }
 
+enum class LineRead { Line, TooLong, Endless, End };
+
+// One line, never holding more than limits::kMaxInputBytes of it: a longer one is skipped to
+// its end (TooLong), or stops the input when no end comes within kMaxSkipped (Endless).
+LineRead readLine(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buf = in.rdbuf();
+  std::size_t skipped = 0;
+  bool too_long = false;
+  for (;;) {
+    const int c = buf->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      if (too_long) return LineRead::TooLong;
+      return line.empty() ? LineRead::End : LineRead::Line;
+    }
+    if (c == '\n') return too_long ? LineRead::TooLong : LineRead::Line;
+    if (too_long) {
+      if (++skipped > kMaxSkipped) return LineRead::Endless;
+      continue;
+    }
+    line.push_back(static_cast<char>(c));
+    if (line.size() > limits::kMaxInputBytes) {
+      too_long = true;
+      std::string().swap(line);
+    }
+  }
+}
+
 // What one line gives: a result, or the reason it was refused.
 struct LineOutcome {
-  nlohmann::ordered_json json;
-  bool refused = false;
+  std::optional<SimResult> result;  ///< written as it is, its trace streamed
+  nlohmann::ordered_json error;     ///< {"error", "line"} when refused
   bool partial = false;
   std::string note;  ///< a line for stderr about a result that stands (a trace cut short)
 };
 
+LineOutcome refusal(const std::string& why, long number) {
+  LineOutcome o;
+  o.error = {{"error", why}, {"line", number}};
+  return o;
+}
+
 LineOutcome simulateLine(const std::string& line, long number) {
-  auto refuse = [&](const std::string& why) {
-    return LineOutcome{{{"error", why}, {"line", number}}, true, false, {}};
-  };
-  if (line.size() > limits::kMaxInputBytes) return refuse(inputTooLarge());
   auto parsed = io::parseScene(line);
-  if (const auto* bad = std::get_if<io::ParseError>(&parsed)) return refuse(bad->message);
+  if (const auto* bad = std::get_if<io::ParseError>(&parsed)) return refusal(bad->message, number);
   const Scene& scene = std::get<Scene>(parsed);
-  const SimResult result = simulate(scene);
-  if (const auto fault = resultFault(scene, result)) return refuse("internal error: " + *fault);
-  std::string note;
-  if (result.trace && result.trace->truncated) note = traceTruncatedNote(*result.trace);
-  return {io::resultToJson(result), false, result.partial(), note};
+  SimResult result = simulate(scene);
+  if (const auto fault = resultFault(scene, result)) {
+    return refusal("internal error: " + *fault, number);
+  }
+  LineOutcome o;
+  if (result.trace && result.trace->truncated) o.note = traceTruncatedNote(*result.trace);
+  o.partial = result.partial();
+  o.result = std::move(result);
+  return o;
 }
 
 }  // namespace
@@ -57,15 +97,28 @@ int runSimLines(const SimOptions& options, std::istream& in, std::ostream& out, 
   }
   long number = 0, refused = 0, partial = 0, results = 0;
   std::string line;
-  while (std::getline(*source, line)) {
+  for (LineRead read; (read = readLine(*source, line)) != LineRead::End;) {
     ++number;
-    if (blank(line)) continue;
-    const LineOutcome o = simulateLine(line, number);
-    out << o.json.dump() << '\n';
-    if (o.refused) {
+    if (read == LineRead::Endless) {
+      const LineOutcome o =
+          refusal(inputTooLarge() + "; no end of line within " + std::to_string(kMaxSkipped >> 20) +
+                      " MiB more, so the input is read no further",
+                  number);
+      out << o.error.dump() << '\n';
+      err << prefix << "line " << number << ": " << o.error["error"].get<std::string>() << '\n';
       ++refused;
-      err << prefix << "line " << number << ": " << o.json["error"].get<std::string>() << '\n';
+      break;
+    }
+    if (read == LineRead::Line && blank(line)) continue;
+    const LineOutcome o =
+        read == LineRead::TooLong ? refusal(inputTooLarge(), number) : simulateLine(line, number);
+    if (!o.result) {
+      out << o.error.dump() << '\n';
+      ++refused;
+      err << prefix << "line " << number << ": " << o.error["error"].get<std::string>() << '\n';
     } else {
+      io::writeResult(out, *o.result, false);
+      out << '\n';
       if (!o.note.empty()) err << prefix << "line " << number << ": " << o.note << '\n';
       ++results;
       partial += o.partial ? 1 : 0;

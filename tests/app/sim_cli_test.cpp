@@ -155,6 +155,31 @@ TEST(SimCli, JsonlGivesOneLinePerSceneAndGoesOnPastABadOne) {
   EXPECT_NE(r.err.find("2 of 4 scenes refused"), std::string::npos) << r.err;
 }
 
+// A line past the 4 MiB bound is refused by its number without being held (it was read whole
+// first: a 64 MiB line cost 136 MB), and the next line is read; a line that never ends
+// (/dev/zero, which grew to 2.1 GB) stops the input after a bounded skip.
+TEST(SimCli, JsonlRefusesAnOverlongLineWithoutHoldingItAndGoesOn) {
+  std::string one_line = kGoodScene;
+  std::replace(one_line.begin(), one_line.end(), '\n', ' ');
+  TempFile lines(std::string(64u << 20, ' ') + "x\n" + one_line + "\n");
+  const Outcome r = run("sim --jsonl " + quoted(lines.path()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  std::istringstream out(r.out);
+  std::vector<nlohmann::ordered_json> docs;
+  for (std::string line; std::getline(out, line);) {
+    docs.push_back(nlohmann::ordered_json::parse(line));
+  }
+  ASSERT_EQ(docs.size(), 2u);
+  EXPECT_EQ(docs[0]["line"], 1);
+  EXPECT_NE(docs[0]["error"].get<std::string>().find("larger than 4 MiB"), std::string::npos);
+  EXPECT_EQ(docs[1]["balls"].size(), 2u);
+
+  const Outcome endless = run("sim --jsonl /dev/zero");
+  EXPECT_EQ(endless.status, 2);
+  EXPECT_NE(endless.err.find("line 1: larger than 4 MiB"), std::string::npos) << endless.err;
+  EXPECT_NE(endless.err.find("read no further"), std::string::npos) << endless.err;
+}
+
 TEST(SimCli, JsonlMatchesTheSingleSceneResultAndExitsZeroWhenAllAreGood) {
   std::string one_line = kGoodScene;
   std::replace(one_line.begin(), one_line.end(), '\n', ' ');
