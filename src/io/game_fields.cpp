@@ -31,4 +31,33 @@ rules::RuleSet rulesField(const nlohmann::json& doc, rules::Game game) {
   return *found;
 }
 
+void checkGameBalls(rules::Game game, const std::vector<BallState>& balls) {
+  bool object_ball = false, eight = false;
+  for (const BallState& b : balls) {
+    if (b.id == kCueBall) continue;
+    object_ball = true;
+    eight = eight || b.id == 8;
+    const int last = game == rules::Game::EightBall ? 15 : game == rules::Game::TenBall ? 10 : 0;
+    if (last > 0 && b.id > last) {
+      refuse("balls", std::string(rules::gameName(game)) + " has no ball " + std::to_string(b.id) +
+                          " (1-" + std::to_string(last) + ")");
+    }
+  }
+  if (!object_ball) refuse("balls", "no object ball to play (ids other than 0)");
+  if (game == rules::Game::EightBall && !eight) {
+    refuse("balls", "an eight-ball layout needs the 8 (the rack is won on it)");
+  }
+}
+
+bool decisionField(const std::string& word, rules::Game game, const std::string& path) {
+  const bool eight_ball = game == rules::Game::EightBall;
+  const char* const expected = eight_ball ? "\"play-on\" or \"rerack\" (eight-ball's choice after "
+                                            "an illegal break)"
+                                          : "\"shoot\" or \"pass\" (the choice after a push-out)";
+  if (eight_ball && (word == "play-on" || word == "rerack")) return word == "play-on";
+  if (!eight_ball && (word == "shoot" || word == "pass")) return word == "shoot";
+  refuse(path, std::string("expected ") + expected + " in " + rules::gameName(game) + ", found " +
+                   quote(word));
+}
+
 }  // namespace nineball::io

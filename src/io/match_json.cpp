@@ -38,20 +38,14 @@ rules::Call parseCall(const json& v, const std::string& path) {
   return call;
 }
 
-TurnInput parseTurn(const json& v, const std::string& path, double cue_mass) {
+TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rules::Game game) {
   expectObject(v, path);
   TurnInput turn;
   if (const json* d = optional(v, "decision")) {
     allowOnly(v, path, {"decision"});
-    const std::string choice = text(*d, member(path, "decision"));
-    // "play-on" and "rerack" answer an illegal eight-ball break, as "shoot" and "pass" do.
-    const bool shoot = choice == "shoot" || choice == "play-on";
-    if (!shoot && choice != "pass" && choice != "rerack") {
-      refuse(member(path, "decision"),
-             "expected \"shoot\", \"pass\", \"play-on\" or \"rerack\", found " + quote(choice));
-    }
+    const std::string where = member(path, "decision");
     turn.kind = TurnInput::Kind::Decision;
-    turn.shoot = shoot;
+    turn.shoot = decisionField(text(*d, where), game, where);
     return turn;
   }
   allowOnly(v, path,
@@ -133,9 +127,7 @@ MatchScript parseDocument(const json& doc) {
     for (const BallState& b : *setup.balls) {
       if (b.id == kCueBall && b.mass) cue_mass = *b.mass;
     }
-    const bool object_ball = std::any_of(setup.balls->begin(), setup.balls->end(),
-                                         [](const BallState& b) { return b.id != kCueBall; });
-    if (!object_ball) refuse("balls", "no object ball to play (ids other than 0)");
+    checkGameBalls(setup.game, *setup.balls);
   } else {
     // The rack the match would set up must fit the table like any given balls.
     check.balls = {BallState::at(
@@ -154,7 +146,7 @@ MatchScript parseDocument(const json& doc) {
       computer_plays && !optional(doc, "turns") ? kNoTurns : required(doc, "", "turns");
   if (!turns.is_array()) refuse("turns", "expected an array of turns, found " + describe(turns));
   for (std::size_t i = 0; i < turns.size(); ++i) {
-    script.turns.push_back(parseTurn(turns[i], element("turns", i), cue_mass));
+    script.turns.push_back(parseTurn(turns[i], element("turns", i), cue_mass, setup.game));
   }
   return script;
 }

@@ -50,7 +50,7 @@ PlanScene parseDocument(json doc) {
       object_balls.push_back(b.id);
     }
   }
-  if (object_balls.empty()) refuse("balls", "no object ball to play (ids other than 0)");
+  checkGameBalls(game, scene.balls);
   if (!has_cue && !in_hand) {
     refuse("balls", "needs a cue ball (id 0) unless \"ball_in_hand\" is true");
   }
@@ -59,15 +59,6 @@ PlanScene parseDocument(json doc) {
   in.physics = scene.physics;
   in.step = scene.step;
   in.balls = scene.balls;
-  if (game != rules::Game::NineBall) {
-    for (int id : object_balls) {
-      const int last = game == rules::Game::EightBall ? 15 : 10;
-      if (id > last) {
-        refuse("balls", std::string(rules::gameName(game)) + " has no ball " + std::to_string(id) +
-                            " (1-" + std::to_string(last) + ")");
-      }
-    }
-  }
   in.rack = rules::Rack(game, rule_set, object_balls, false);
   in.cue_in_hand = in_hand;
   return plan;

@@ -109,3 +109,30 @@ TEST(MatchCliGames, EightBallIllegalBreakThenRerack) {
   EXPECT_EQ(turns[2]["shooter"], "B");  // the chooser breaks the new rack
   EXPECT_TRUE(turns[1]["groups"]["A"].is_null());
 }
+
+// Ball numbers are checked against the game, as `plan` checks them (ball 16 in eight-ball
+// played 89 no-contact fouls and went partial), and a decision word of another game is
+// refused ("rerack" answered a push-out as a pass).
+TEST(MatchCliGames, BallsAndDecisionsOfAnotherGameAreRefusedByName) {
+  struct Case {
+    const char* script;
+    const char* message;
+  };
+  for (const Case& c : {
+           Case{R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":16,"x":1.1,"y":0.465}],"players":{"A":"ai:easy","B":"ai:easy"}})",
+                ": balls: eight-ball has no ball 16 (1-15)"},
+           Case{R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":3,"x":1.1,"y":0.465}],"turns":[]})",
+                ": balls: an eight-ball layout needs the 8"},
+           Case{R"({"game":"ten-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":15,"x":1.1,"y":0.465}],"turns":[]})",
+                ": balls: ten-ball has no ball 15 (1-10)"},
+           Case{R"({"turns":[{"heading_deg":0,"speed":10},{"decision":"rerack"}]})",
+                ": turns[1].decision: expected \"shoot\" or \"pass\""},
+           Case{R"({"game":"eight-ball","turns":[{"heading_deg":0,"speed":10},{"decision":"pass"}]})",
+                ": turns[1].decision: expected \"play-on\" or \"rerack\""},
+       }) {
+    const CliOutcome r = runMatch(c.script);
+    EXPECT_EQ(r.status, 2) << c.script;
+    EXPECT_TRUE(r.out.empty()) << c.script;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  }
+}
