@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "app/game/game_session.hpp"
 
@@ -127,6 +129,62 @@ TEST_F(RackFiles, ABadFileIsNotOffered) {
     std::ofstream(path) << text;
     EXPECT_FALSE(loadRack(path)) << text;
   }
+}
+
+// A saved rack is checked as strictly as a match script and dropped (deleted, so that it is not
+// refused again at every start) when it fails: ten-ball with the paper's rules ended the game
+// with an internal error, rack 2147483647 overflowed in the menu, elevation pi was accepted.
+TEST_F(RackFiles, ARackTheGameCannotPlayIsDroppedAndDeleted) {
+  const std::string path = rackSavePath();
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  const std::string head = R"({"version": 1, "seed": 1, "opponent": "human", )";
+  const std::string shot = R"({"kind": "shot", "heading_rad": 0.1, "speed": 10, "tip": [0, 0],
+                               "elevation_rad": 0})";
+  const std::vector<std::string> bad = {
+      head + R"("game": "ten-ball", "rules": "paper", "rack": 0, "racks_won": [0, 0],
+                "names": ["a", "b"], "turns": [])" +
+          "}",
+      head + R"("rules": "wpa", "rack": 2147483647, "racks_won": [0, 0], "names": ["a", "b"],
+                "turns": [])" +
+          "}",
+      head + R"("rules": "wpa", "rack": 0, "racks_won": [5, 0], "names": ["a", "b"],
+                "turns": [])" +
+          "}",
+      head + R"("rules": "wpa", "rack": 0, "racks_won": [0, 0], "names": ["a", "b"],
+                "turns": [{"kind": "shot", "heading_rad": 0.1, "speed": 10, "tip": [0, 0],
+                           "elevation_rad": 3.14159}]})",
+      head + R"("rules": "wpa", "rack": 0, "racks_won": [0, 0], "names": ["a", "b"],
+                "turns": [{"kind": "shot", "heading_rad": 0.1, "speed": 40, "tip": [0, 0],
+                           "elevation_rad": 0}]})",
+      head + R"("rules": "wpa", "rack": 0, "racks_won": [0, 0], "names": ["a", "b"],
+                "turns": [{"kind": "shot", "heading_rad": 0.1, "speed": 10, "tip": [0.4, 0.4],
+                           "elevation_rad": 0}]})",
+      head + R"("rules": "wpa", "rack": 0, "racks_won": [0, 0], "names": ["", "b"],
+                "turns": [)" +
+          shot + "]}",
+  };
+  for (const std::string& text : bad) {
+    std::ofstream(path) << text;
+    EXPECT_FALSE(loadRack(path)) << text;
+    EXPECT_FALSE(std::filesystem::exists(path)) << "kept: " << text;
+  }
+  std::ofstream(path) << head + R"("rules": "wpa", "rack": 3, "racks_won": [2, 1],
+                                  "names": ["a", "b"], "turns": [)" +
+                             shot + "]}";
+  EXPECT_TRUE(loadRack(path));
+}
+
+TEST_F(RackFiles, ANameIsCutOnACharacterBoundary) {
+  const std::string path = rackSavePath();
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  const std::string long_name = std::string(23, 'a') + "\xc3\xa9";  // 23 + a 2-byte character
+  std::ofstream(path) << R"({"version": 1, "seed": 1, "opponent": "human", "rules": "wpa",
+      "rack": 0, "racks_won": [0, 0], "turns": [], "names": [")" +
+                             long_name + R"(", "b"]})";
+  const auto rack = loadRack(path);
+  ASSERT_TRUE(rack);
+  EXPECT_EQ(rack->names[0], std::string(23, 'a'));
+  EXPECT_NO_THROW(rackToJson(*rack).dump());
 }
 
 }  // namespace

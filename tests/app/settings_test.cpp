@@ -116,6 +116,20 @@ TEST_F(SettingsFiles, ABadFileGivesTheDefaultsAndNeverThrows) {
   EXPECT_EQ(loadSettings(settingsPath()), Settings{});
 }
 
+// A name of 39 ASCII characters and an "é" was cut at 40 bytes inside the character, and
+// writing it back (Play saves the settings) ended the game with nlohmann's type_error.316.
+TEST_F(SettingsFiles, ANameIsCutOnACharacterBoundaryAndSavesAgain) {
+  write(R"({"last": {"names": [")" + std::string(39, 'n') + "\xc3\xa9" + R"(", "Bo"]}})");
+  Settings s;
+  ASSERT_NO_THROW(s = loadSettings(settingsPath()));
+  EXPECT_EQ(s.last.names[0], std::string(24, 'n'));
+  EXPECT_EQ(s.last.names[1], "Bo");
+  std::string why;
+  EXPECT_TRUE(saveSettings(s, settingsPath(), why)) << why;
+  write(R"({"last": {"names": [")" + std::string(20, 'n') + "\xc3\xa9" + R"(", "Bo"]}})");
+  EXPECT_EQ(loadSettings(settingsPath()).last.names[0], std::string(20, 'n') + "\xc3\xa9");
+}
+
 TEST_F(SettingsFiles, ABadFieldKeepsItsDefaultAndTheGoodOnesAreRead) {
   write(R"({"volume": 250, "muted": true, "aim_guide": "huge", "bank_line": "yes",
             "frame_cap": 144, "last": {"opponent": "ai:easy", "rules": "snooker",

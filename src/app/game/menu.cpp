@@ -2,10 +2,11 @@
 
 #include <algorithm>
 
+#include "app/game/player_name.hpp"
+
 namespace nineball::app {
 namespace {
 
-constexpr std::size_t kMaxNameBytes = 24;
 constexpr int kVolumeStep = 10;
 
 std::string utf8(char32_t c) {

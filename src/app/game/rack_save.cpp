@@ -1,10 +1,14 @@
 #include "app/game/rack_save.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/game/game_session.hpp"
+#include "app/game/player_name.hpp"
 #include "app/game/settings.hpp"
 #include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
@@ -24,6 +28,35 @@ const char* kindName(TurnInput::Kind k) {
       break;
   }
   return "shot";
+}
+
+// A saved rack is checked as strictly as a match script: what the game's own controls can
+// give, nothing more (an edited or damaged file must not reach the physics or the rules).
+constexpr int kMaxRackIndex = 1000000;
+constexpr std::size_t kMaxSavedTurns = 2000;
+
+void expect(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+void checkTurn(const TurnInput& t, std::size_t i) {
+  if (t.kind == TurnInput::Kind::Decision) return;
+  const std::string at = "turns[" + std::to_string(i) + "]";
+  const Shot& s = t.shot;
+  expect(std::isfinite(s.heading_rad) && std::abs(s.heading_rad) <= 8.0,
+         at + ".heading_rad: not a heading");
+  expect(s.speed >= GameSession::kMinSpeed && s.speed <= GameSession::kMaxSpeed,
+         at + ".speed: the cue gives 0.1 to 12 m/s");
+  expect(std::isfinite(s.tip.x) && std::isfinite(s.tip.y) && length(s.tip) <= GameSession::kMaxTip,
+         at + ".tip: past the cue's reach (half the radius)");
+  expect(s.elevation_rad >= 0.0 && s.elevation_rad <= degToRad(GameSession::kMaxElevationDeg),
+         at + ".elevation_rad: the cue tilts 0 to 60 degrees");
+  if (t.cue) {
+    expect(std::isfinite(t.cue->x) && std::isfinite(t.cue->y) && std::abs(t.cue->x) < 10.0 &&
+               std::abs(t.cue->y) < 10.0,
+           at + ".cue: not a place on the table");
+  }
+  if (t.call) expect(t.call->ball >= 1 && t.call->ball <= 15, at + ".call.ball: no such ball");
 }
 
 // Throws nlohmann's errors for a wrong type; rackFromJson turns them into `why`.
@@ -122,18 +155,26 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
       return std::nullopt;
     }
     r.game = *game;
+    expect(r.rules != rules::RuleSet::Paper || r.game == rules::Game::NineBall,
+           "the paper's rules are nine-ball's only");
     r.opponent = *opponent;
     r.seed = j.at("seed").get<std::uint64_t>();
     r.rack_index = j.at("rack").get<int>();
+    expect(r.rack_index >= 0 && r.rack_index <= kMaxRackIndex, "rack: not a rack number");
     for (int i = 0; i < 2; ++i) {
       r.racks_won[i] = j.at("racks_won").at(i).get<int>();
-      r.names[i] = j.at("names").at(i).get<std::string>();
+      expect(r.racks_won[i] >= 0 && r.racks_won[i] <= r.rack_index + 1,
+             "racks_won: more racks won than played");
+      const auto name = playerName(j.at("names").at(i).get<std::string>());
+      expect(name.has_value(), "names: empty or not valid UTF-8");
+      r.names[i] = *name;
     }
-    if (r.rack_index < 0 || r.racks_won[0] < 0 || r.racks_won[1] < 0) {
-      why = "negative rack or score";
-      return std::nullopt;
+    const auto& turns = j.at("turns");
+    expect(turns.is_array() && turns.size() <= kMaxSavedTurns, "turns: not a rack's turns");
+    for (const auto& t : turns) {
+      r.turns.push_back(turnFromJson(t));
+      checkTurn(r.turns.back(), r.turns.size() - 1);
     }
-    for (const auto& t : j.at("turns")) r.turns.push_back(turnFromJson(t));
     return r;
   } catch (const std::exception& e) {
     why = e.what();
@@ -148,14 +189,20 @@ bool saveRack(const SavedRack& rack, const std::string& path, std::string& why) 
 
 std::optional<SavedRack> loadRack(const std::string& path) {
   if (path.empty()) return std::nullopt;
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  std::stringstream text;
-  text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-  std::string why = "not valid JSON";
-  auto rack = j.is_discarded() ? std::nullopt : rackFromJson(j, why);
-  if (!rack) logger("game")->warn("saved rack {}: {}; not offered", path, why);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return std::nullopt;
+  std::string text, why;
+  std::optional<SavedRack> rack;
+  if (readStateFile(path, text, why)) {
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    why = "not valid JSON";
+    if (!j.is_discarded()) rack = rackFromJson(j, why);
+  }
+  if (!rack) {
+    // Kept, it would be refused again at every start.
+    logger("game")->warn("saved rack {}: {}; not offered, and deleted", path, printable(why));
+    forgetRack(path);
+  }
   return rack;
 }
 

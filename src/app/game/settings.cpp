@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/game/player_name.hpp"
 #include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
 
@@ -161,8 +162,13 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
   if (const auto* v = field(*last, "names")) {
     if (v->is_array() && v->size() == 2 && (*v)[0].is_string() && (*v)[1].is_string()) {
       for (int i = 0; i < 2; ++i) {
-        const std::string name = (*v)[i].get<std::string>();
-        if (!name.empty()) s.last.names[i] = name.substr(0, 40);
+        const std::string raw = (*v)[i].get<std::string>();
+        if (raw.empty()) continue;
+        if (const auto name = playerName(raw)) {
+          s.last.names[i] = *name;
+        } else {
+          warn(warnings, "last.names[" + std::to_string(i) + "]: not valid UTF-8");
+        }
       }
     } else {
       warn(warnings, "last.names: expected two strings");
@@ -176,20 +182,18 @@ Settings loadSettings(const std::string& path) {
     logger("game")->warn("settings: neither XDG_CONFIG_HOME nor HOME is set; using defaults");
     return {};
   }
-  std::ifstream in(path);
-  if (!in) {
+  std::string text, why;
+  if (!readStateFile(path, text, why)) {
     // No file yet is the normal first run; anything else is worth a word.
     std::error_code ec;
     if (std::filesystem::exists(path, ec)) {
-      logger("game")->warn("settings: cannot read {}; using defaults", path);
+      logger("game")->warn("settings: {}: {}; using defaults", path, why);
     } else {
       logger("game")->info("settings: no {} yet; using defaults", path);
     }
     return {};
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   std::string warnings;
   const Settings s = j.is_discarded() ? Settings{} : settingsFromJson(j, warnings);
   if (j.is_discarded()) warnings = "not valid JSON";

@@ -2,6 +2,7 @@
 
 #include "app/game/menu_screen.hpp"
 #include "app/game/rack_save.hpp"
+#include "app/game/state_file.hpp"
 #include "nineball/log.hpp"
 
 namespace nineball::app {
@@ -64,9 +65,10 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
       session.say("Rack resumed: " + describeSavedRack(*saved) + ".");
       logger("game")->info("resumed the saved rack: {} turns replayed", saved->turns.size());
       return true;
-    } catch (const IllegalAction& e) {
+    } catch (const std::exception& e) {
+      // Whatever the file held, the game goes on: the rack is dropped, never the program.
       logger("game")->warn("saved rack {} does not replay ({}); starting afresh", rack_path,
-                           e.what());
+                           printable(e.what()));
       forgetRack(rack_path);
     }
   }

@@ -1,8 +1,10 @@
 #include "app/game/state_file.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
+#include "app/game/player_name.hpp"
 #include "nineball/atomic_file.hpp"
 
 namespace nineball::app {
@@ -21,6 +23,29 @@ bool saveStateFile(const std::string& path, const std::string& text, const std::
     return false;
   }
   return writeFileAtomically(path, text, why);
+}
+
+bool readStateFile(const std::string& path, std::string& text, std::string& why) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    why = "cannot read it";
+    return false;
+  }
+  text.assign(kMaxStateFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxStateFileBytes) {
+    why = "larger than " + std::to_string(kMaxStateFileBytes >> 20) + " MiB";
+    return false;
+  }
+  return true;
+}
+
+std::string printable(const std::string& s) {
+  if (validUtf8(s)) return s;
+  std::string out;
+  for (char c : s) out += static_cast<unsigned char>(c) < 0x80 ? c : '?';
+  return out;
 }
 
 }  // namespace nineball::app
