@@ -196,8 +196,8 @@ TEST(LiveAndHeadless, AMediumRackTheComputerWinsAfterAScratchReplaysToItsEnd) {
 }
 
 TEST(LiveAndHeadless, EightBallRacksWithScratchesAndCallsAreTheSameEitherWay) {
-  const Seen seen = playCases({{rules::Game::EightBall, Level::Easy, Level::Medium, 31},
-                               {rules::Game::EightBall, Level::Medium, Level::Medium, 28}});
+  const Seen seen = playCases({{rules::Game::EightBall, Level::Easy, Level::Medium, 37},
+                               {rules::Game::EightBall, Level::Medium, Level::Medium, 34}});
   EXPECT_GE(seen.features.calls, 2);  // the 8 is called
   EXPECT_GE(seen.features.scratches, 2);
   EXPECT_GE(seen.features.cue_placed, 2);

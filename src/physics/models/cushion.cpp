@@ -65,8 +65,13 @@ Kinematics stopPressing(Kinematics k, Vec2 towards, const PhysicsParams& p) {
   // Sliding friction acts against the slip: it presses when the slip points away.
   const double pressing = -dot(u, towards);
   if (pressing <= 0.0) return k;
-  // The slip u = v + R (-w.y, w.x): cancel its component along `towards` through w alone.
-  const Vec2 du = towards * pressing;
+  // The slip u = v + R (-w.y, w.x): cancel its component along `towards` through w alone. A
+  // change q of that component changes the spin's energy by I/R^2 q (q/2 - pressing - v.t):
+  // a ball already moving away (v.t < 0) could gain up to m (v.t)^2 / 5 from it, which at a
+  // table's last millijoules is more than rounding. Only as much is cancelled as gives none.
+  const double q = std::min(pressing, std::max(0.0, 2.0 * (pressing + dot(k.v, towards))));
+  if (q <= 0.0) return k;
+  const Vec2 du = towards * q;
   k.w.x += du.y / p.ball_radius;
   k.w.y -= du.x / p.ball_radius;
   return k;
