@@ -7,6 +7,7 @@
 #include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
 #include "io/result_json.hpp"
+#include "nineball/limits.hpp"
 #include "nineball/scenes.hpp"
 
 namespace nineball::app {
@@ -22,10 +23,11 @@ std::string format(const char* fmt, double a, double b = 0.0) {
 const CLI::Validator kSpeedRange(
     [](std::string& value) -> std::string {
       double v = 0.0;
-      if (CLI::detail::lexical_cast(value, v) && v >= 0.0 && v <= 100.0) return {};
-      return "must be a number of m/s from 0 to 100, found " + value;
+      if (CLI::detail::lexical_cast(value, v) && v >= 0.0 && v <= limits::kMaxSpeed) return {};
+      return "must be a number of m/s from 0 to " + format("%g", limits::kMaxSpeed) +
+             " (every speed's limit), found " + value;
     },
-    "0..100");
+    "0..14");
 
 }  // namespace
 

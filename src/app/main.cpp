@@ -1,4 +1,6 @@
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
@@ -58,7 +60,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e, std::cout, std::cerr);  // --help
     // Every usage error exits 2, whatever CLI11's own code for it.
-    std::cerr << "nineball: " << e.what() << "\nRun with --help for more information.\n";
+    std::cerr << "nineball: " << e.what() << " (nineball --help lists the options)\n";
     return kExitBadInput;
   }
   if (!setLogLevel(log_level)) {
@@ -71,7 +73,7 @@ int run(int argc, char** argv) {
       if (o->count() > 0) {
         std::cerr << "nineball: " << o->get_name() << " is an option of the game window, not of "
                   << app.get_subcommands().front()->get_name()
-                  << "\nRun with --help for more information.\n";
+                  << " (nineball --help lists the options)\n";
         return kExitBadInput;
       }
     }
@@ -104,7 +106,15 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
-    return nineball::app::run(argc, argv);
+    const int status = nineball::app::run(argc, argv);
+    // Output that could not be written (a full disk, a closed pipe) is said, never silent.
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << "nineball: cannot write to standard output: "
+                << (errno ? std::strerror(errno) : "write error") << '\n';
+      return nineball::app::kExitBadInput;
+    }
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "nineball: internal error: " << e.what() << '\n';
   } catch (...) {

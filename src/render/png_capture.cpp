@@ -4,6 +4,7 @@
 #include <SFML/Graphics/Texture.hpp>
 
 #include "nineball/atomic_file.hpp"
+#include "render/sfml_errors.hpp"
 
 namespace nineball::render {
 
@@ -14,11 +15,17 @@ bool saveWindowPng(const sf::RenderWindow& window, const std::string& path, std:
     return false;
   }
   texture.update(window);
-  const sf::Image image = texture.copyToImage();
+  return saveImage(texture.copyToImage(), path, why);
+}
+
+bool saveImage(const sf::Image& image, const std::string& path, std::string& why) {
+  const SfmlErrorsToLog quiet;
   // SFML reports no short write, so the file is read back before it takes the name asked for.
   // SFML picks the format from the extension, so the temporary file ends as the name does.
+  const auto slash = path.rfind('/');
   const auto dot = path.rfind('.');
-  const std::string ext = dot == std::string::npos ? ".png" : path.substr(dot);
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string ext = has_ext ? path.substr(dot) : ".png";
   return writeFileAtomicallyWith(
       path, ext, [&image](const std::string& tmp) { return image.saveToFile(tmp); },
       [&image](const std::string& tmp) {

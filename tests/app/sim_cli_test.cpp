@@ -202,3 +202,28 @@ TEST(SimCli, JsonlMatchesTheSingleSceneResultAndExitsZeroWhenAllAreGood) {
 }
 
 }  // namespace
+
+namespace nineball::testing {
+namespace {
+
+// Small things the campaign found: a full stdout exited 1 and said nothing; a usage error took
+// two lines; `break --speed` took up to 100 m/s where every other speed stops at 14.
+TEST(CliEdges, AFullStdoutIsSaidAUsageErrorIsOneLineAndBreakSpeedsAreBounded) {
+  TempFile scene(R"({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0,
+                     "speed": 1}})");
+  const CliOutcome full = runNineball("sim " + shellQuoted(scene.path()) + " >/dev/full");
+  EXPECT_EQ(full.status, 2);
+  EXPECT_EQ(full.err, "nineball: cannot write to standard output: No space left on device\n");
+
+  const CliOutcome usage = runNineball("sim --no-such-option");
+  EXPECT_EQ(usage.status, 2);
+  EXPECT_EQ(std::count(usage.err.begin(), usage.err.end(), '\n'), 1) << usage.err;
+
+  const CliOutcome fast = runNineball("break --speed 14.5");
+  EXPECT_EQ(fast.status, 2);
+  EXPECT_NE(fast.err.find("from 0 to 14"), std::string::npos) << fast.err;
+  EXPECT_EQ(runNineball("break --speed 14").status, 0);
+}
+
+}  // namespace
+}  // namespace nineball::testing

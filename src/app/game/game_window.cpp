@@ -32,6 +32,7 @@
 #include "render/fonts.hpp"
 #include "render/png_capture.hpp"
 #include "render/scene_painter.hpp"
+#include "render/sfml_errors.hpp"
 
 namespace nineball::app {
 namespace {
@@ -46,31 +47,6 @@ constexpr double kMaxFrame = 0.25;
 constexpr double kIdlePoll = 0.03;
 constexpr double kIdleRedraw = 2.0;
 constexpr unsigned kAntialiasing = 0;
-
-// Sends SFML's error stream to the "sfml" logger, one line per message.
-class SfmlErrToLog : public std::stringbuf {
- public:
-  SfmlErrToLog() : saved_(sf::err().rdbuf(this)) {}
-  ~SfmlErrToLog() override {
-    sync();
-    sf::err().rdbuf(saved_);
-  }
-  SfmlErrToLog(const SfmlErrToLog&) = delete;
-  SfmlErrToLog& operator=(const SfmlErrToLog&) = delete;
-
- protected:
-  int sync() override {
-    std::istringstream lines(str());
-    for (std::string line; std::getline(lines, line);) {
-      if (!line.empty()) logger("sfml")->info("{}", line);
-    }
-    str("");
-    return 0;
-  }
-
- private:
-  std::streambuf* saved_;
-};
 
 void openWindow(sf::RenderWindow& window, bool fullscreen, unsigned width, unsigned height,
                 bool vsync) {
@@ -165,7 +141,7 @@ int runGame(const GameOptions& options_in, const GameStart& start, std::ostream&
     err << "nineball: " << why << '\n';
     return 1;
   }
-  SfmlErrToLog sfml_log;
+  const render::SfmlErrorsToLog sfml_log;
   GameOptions options = options_in;
   const bool capture = !options.screenshot.empty();
   // Refused before a window opens and frames are drawn for nothing.

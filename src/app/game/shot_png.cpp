@@ -11,6 +11,7 @@
 #include "render/ball_painter.hpp"
 #include "render/fonts.hpp"
 #include "render/palette.hpp"
+#include "render/png_capture.hpp"
 #include "render/table_painter.hpp"
 #include "render/triangle_batch.hpp"
 #include "render/view_transform.hpp"
@@ -147,14 +148,7 @@ bool writeShotPng(const Scene& scene, const SimResult& traced, const std::string
                      static_cast<float>(band.top + band.height * 0.3));
   picture.draw(legend);
   picture.display();
-  const sf::Image image = picture.getTexture().copyToImage();
-  return writeFileAtomicallyWith(
-      path, ".png", [&image](const std::string& tmp) { return image.saveToFile(tmp); },
-      [&image](const std::string& tmp) {
-        sf::Image back;
-        return back.loadFromFile(tmp) && back.getSize() == image.getSize();
-      },
-      why);
+  return render::saveImage(picture.getTexture().copyToImage(), path, why);
 }
 
 }  // namespace nineball::app
