@@ -61,7 +61,7 @@ TEST(FuzzCampaign, SpinningAndMasseShotsEndOnTheTableWithTheReferenceEngine) {
                    {"tip", {tip * std::cos(a), tip * std::sin(a)}},
                    {"elevation_deg", uniform(rng, 0.0, 89.0)}};
     } else {
-      const double w = limits::kMaxSurfaceSpeed / r / std::sqrt(3.0);
+      const double w = limits::kMaxSurfaceSpeed / r;  // each component at up to the limit
       const Vec2 v = fromAngle(uniform(rng, -kPi, kPi)) * uniform(rng, 0.0, limits::kMaxSpeed);
       ball["vx"] = v.x;
       ball["vy"] = v.y;
