@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -113,6 +114,14 @@ py::object resultToPython(SimResult result) {
   return doc;
 }
 
+// A result that breaks its promises (a ball off the table, a number not finite) is a defect
+// of the engine: raised, never returned.
+void checkResult(const Scene& scene, const SimResult& result, const std::string& where) {
+  if (const auto fault = resultFault(scene, result)) {
+    throw std::runtime_error(where + "internal error: " + *fault);
+  }
+}
+
 py::object simulateOne(py::handle scene) {
   const Scene s = parse(scene, "");
   SimResult r;
@@ -120,6 +129,7 @@ py::object simulateOne(py::handle scene) {
     const py::gil_scoped_release unlocked;
     r = simulate(s);
   }
+  checkResult(s, r, "");
   return resultToPython(std::move(r));
 }
 
@@ -139,7 +149,10 @@ py::list simulateMany(const py::iterable& scenes, int threads) {
                     [&](std::size_t k) { results[k] = simulate(parsed[k]); });
   }
   py::list out;
-  for (SimResult& r : results) out.append(resultToPython(std::move(r)));
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    checkResult(parsed[k], results[k], "scenes[" + std::to_string(k) + "]: ");
+    out.append(resultToPython(std::move(results[k])));
+  }
   return out;
 }
 

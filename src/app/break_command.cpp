@@ -75,6 +75,10 @@ int runBreak(const BreakOptions& options, std::ostream& out, std::ostream& err) 
     return kExitInternal;
   }
   const SimResult result = simulate(scene);
+  if (const auto fault = resultFault(scene, result)) {
+    err << "nineball break: internal error: " << *fault << '\n';
+    return kExitInternal;
+  }
   if (options.json) {
     io::writeResult(out, result, true);
     out << '\n';
