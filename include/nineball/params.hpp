@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace nineball {
 
@@ -19,10 +21,31 @@ enum class BallBallModel {
   Frictional,    ///< Coulomb friction of the contact points: throw and spin transfer
 };
 
-/// How a cushion sends a ball back.
-enum class CushionModel {
-  Simple,    ///< the paper's: restitution on the normal speed, Coulomb friction at the nose
-  Mathavan,  ///< the nose above the centre, friction at nose and slate (Mathavan et al. 2010)
+/// How a cushion sends a ball back: one of the cushion models of the registry
+/// (src/physics/resolve/cushion/registry.cpp), chosen by the name it declares there ("simple",
+/// the paper's; "mathavan", Mathavan et al. 2010; ...).
+class CushionModel {
+ public:
+  /// The model of that name; std::invalid_argument for a name the registry does not hold.
+  static CushionModel named(const std::string& name);
+  /// The model of that name, or nothing.
+  static std::optional<CushionModel> fromName(const std::string& name);
+  /// Every model's name, in the registry's order.
+  static std::vector<std::string> names();
+
+  /// The name it declares in the registry.
+  const char* name() const;
+  /// True when it reads `parameter` (a field of "physics" that only some cushion models read).
+  bool reads(const std::string& parameter) const;
+  /// Its place in the registry.
+  std::size_t index() const { return index_; }
+
+  bool operator==(CushionModel o) const { return index_ == o.index_; }
+  bool operator!=(CushionModel o) const { return index_ != o.index_; }
+
+ private:
+  explicit CushionModel(std::size_t index) : index_(index) {}
+  std::size_t index_;
 };
 
 /// Ball-ball friction against the sliding speed v (m/s) of the contact points:
@@ -63,9 +86,10 @@ struct PhysicsParams {
   ClothModel cloth = ClothModel::Spin;
   BallBallModel ball_ball = BallBallModel::Frictional;
   BallFriction ball_friction;  ///< read by the frictional ball-ball model
-  CushionModel cushion = CushionModel::Mathavan;
+  CushionModel cushion = CushionModel::named("mathavan");
   /// m, the cushion's nose above the slate (WPA: 62.5-64.5 % of the ball's diameter); read by
-  /// the Mathavan cushion. Follows ball_radius in a scene that sets only the radius.
+  /// the cushion models that model the nose (the registry says which). Follows ball_radius in a
+  /// scene that sets only the radius.
   double cushion_height = 1.27 * 0.028575;
   double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
   double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
@@ -109,8 +133,6 @@ struct StepParams {
 
 const char* clothModelName(ClothModel m);
 const char* ballBallModelName(BallBallModel m);
-const char* cushionModelName(CushionModel m);
-std::optional<CushionModel> cushionModelFromName(const std::string& name);
 std::optional<BallBallModel> ballBallModelFromName(const std::string& name);
 const char* contactModelName(ContactModel m);
 const char* engineName(Engine e);

@@ -17,7 +17,7 @@ PhysicsParams paperCloth() {
   PhysicsParams p = PhysicsParams::real();
   p.cloth = ClothModel::Friction;
   p.ball_ball = BallBallModel::Frictionless;
-  p.cushion = CushionModel::Simple;
+  p.cushion = CushionModel::named("simple");
   p.cue_end_mass = 0.0;
   return p;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "nineball/limits.hpp"
 #include "nineball/random.hpp"
@@ -283,7 +285,8 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
   // The models are drawn from a copy, so that every scene drawn before they existed stays.
   std::uint64_t models = rng ^ 0x6d6f64656c73ULL;
   p.ball_ball = static_cast<BallBallModel>(splitmix64(models) % 2);
-  p.cushion = static_cast<CushionModel>(splitmix64(models) % 2);
+  const std::vector<std::string> cushions = CushionModel::names();
+  p.cushion = CushionModel::named(cushions[splitmix64(models) % cushions.size()]);
   // The nose anywhere strictly between the ball's centre and its top.
   p.cushion_height = p.ball_radius * uniform(models, 1.001, 1.999);
   p.ball_friction.a = uniform(models, 0.0, 0.1);

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "physics/models/ball_contact.hpp"
-#include "physics/models/cue.hpp"
 #include "physics/motion.hpp"
+#include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/cue/cue.hpp"
 
 namespace nineball::ai {
 namespace {

@@ -111,6 +111,24 @@ std::string clothsUsing(unsigned used_by) {
   return out;
 }
 
+// "a", "a" or "b", "a", "b" or "c": the names a field may take.
+std::string oneOf(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+    out += quote(names[i]);
+  }
+  return out;
+}
+
+std::vector<std::string> cushionsReading(const std::string& parameter) {
+  std::vector<std::string> out;
+  for (const std::string& name : CushionModel::names()) {
+    if (CushionModel::named(name).reads(parameter)) out.push_back(name);
+  }
+  return out;
+}
+
 // A model chosen by name; an unknown name is refused with the names there are.
 template <typename Model>
 Model modelNamed(const json& v, const std::string& path,
@@ -177,8 +195,8 @@ PhysicsParams parsePhysics(const json& v) {
       continue;
     }
     if (key == "cushion") {
-      p.cushion = modelNamed(item.value(), field_path, cushionModelFromName, "cushion",
-                             "\"simple\" or \"mathavan\"");
+      p.cushion = modelNamed(item.value(), field_path, CushionModel::fromName, "cushion",
+                             oneOf(CushionModel::names()).c_str());
       continue;
     }
     if (key == "cushion_height") {
@@ -195,9 +213,10 @@ PhysicsParams parsePhysics(const json& v) {
     p.*(f->field) = number(item.value(), field_path, f->bounds);
   }
   if (optional(v, "cushion_height")) {
-    if (p.cushion != CushionModel::Mathavan) {
-      refuse(member(path, "cushion_height"),
-             "not used by the \"simple\" cushion (only by \"mathavan\")");
+    if (!p.cushion.reads("cushion_height")) {
+      refuse(member(path, "cushion_height"), std::string("not used by the ") +
+                                                 quote(p.cushion.name()) + " cushion (only by " +
+                                                 oneOf(cushionsReading("cushion_height")) + ")");
     }
     // Its range (between the ball's centre and top) is checkSettings's, with every setting.
   } else if (optional(v, "ball_radius")) {

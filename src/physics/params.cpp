@@ -12,7 +12,7 @@ PhysicsParams PhysicsParams::paper() {
   p.cloth = ClothModel::Friction;
   p.ball_ball = BallBallModel::Frictionless;
   p.cue_end_mass = 0.0;
-  p.cushion = CushionModel::Simple;
+  p.cushion = CushionModel::named("simple");
   return p;
 }
 
@@ -41,16 +41,6 @@ const char* ballBallModelName(BallBallModel m) {
 std::optional<BallBallModel> ballBallModelFromName(const std::string& name) {
   if (name == "frictionless") return BallBallModel::Frictionless;
   if (name == "frictional") return BallBallModel::Frictional;
-  return std::nullopt;
-}
-
-const char* cushionModelName(CushionModel m) {
-  return m == CushionModel::Simple ? "simple" : "mathavan";
-}
-
-std::optional<CushionModel> cushionModelFromName(const std::string& name) {
-  if (name == "simple") return CushionModel::Simple;
-  if (name == "mathavan") return CushionModel::Mathavan;
   return std::nullopt;
 }
 

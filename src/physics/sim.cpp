@@ -3,12 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include "nineball/limits.hpp"
 #include "nineball/world.hpp"
 #include "physics/arc_log.hpp"
+#include "physics/resolve/cushion/registry.hpp"
 #include "reference/reference_engine.hpp"
 
 namespace nineball {
@@ -51,14 +51,8 @@ std::optional<std::string> checkSettings(const Scene& scene) {
     // Box2D keeps damping as a float: it must stay finite there too.
     if (!finite(v) || v < 0.0 || v > 1e30) return std::string(name) + ": must be >= 0 and finite";
   }
-  const double r = p.ball_radius;
-  if (p.cushion == CushionModel::Mathavan &&
-      !(p.cushion_height > r && p.cushion_height < 2.0 * r)) {
-    std::ostringstream why;
-    why << "physics.cushion_height: the Mathavan cushion's nose must stand above the ball's "
-           "centre and below its top: between "
-        << r << " and " << 2.0 * r << " m for ball_radius " << r;
-    return why.str();
+  if (const auto check = physics::cushionModel(p.cushion).check) {
+    if (auto problem = check(p)) return problem;
   }
   if (st.velocity_iterations < 1) return std::string("step.velocity_iterations: must be >= 1");
   if (st.position_iterations < 0) return std::string("step.position_iterations: must be >= 0");

@@ -8,7 +8,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
@@ -16,13 +15,12 @@
 #include "physics/ball_collision.hpp"
 #include "physics/box2d_clock.hpp"
 #include "physics/contact_recorder.hpp"
-#include "physics/models/ball_contact.hpp"
-#include "physics/models/cue.hpp"
-#include "physics/models/cushion.hpp"
-#include "physics/models/jam.hpp"
-#include "physics/models/mathavan.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
+#include "physics/resolve/cue/cue.hpp"
+#include "physics/resolve/cushion/contact.hpp"
+#include "physics/resolve/cushion/simple/simple.hpp"
+#include "physics/resolve/resolver.hpp"
 
 namespace nineball {
 
@@ -49,7 +47,7 @@ constexpr double kCapPeriod = 1.0 / 60.0;
 
 }  // namespace
 
-struct World::Impl {
+struct World::Impl final : physics::EngineBalls {
   struct Ball {
     int id = 0;
     double mass = 0.0;
@@ -68,9 +66,9 @@ struct World::Impl {
   b2Body* table_body = nullptr;
   ContactRecorder recorder;
   physics::EventSearch search;
-  physics::JamCounter jams;
   std::vector<Ball> balls;
   std::vector<Event> events;
+  physics::Resolver resolver{phys, table, search.cushions, events};
   double time = 0.0;
   long steps = 0;
   long pieces = 0;             // Box2D steps taken, for the work budget
@@ -241,47 +239,52 @@ struct World::Impl {
     recorder.ball_contacts = false;
   }
 
-  // The cushion faces a ball at p touches.
-  std::vector<Vec2> faces(Vec2 p) const {
-    return physics::touchingNormals(p, phys.ball_radius, search.cushions);
+  // --- the balls as the resolver sees them ---
+  std::size_t count() const override { return balls.size(); }
+  bool onTable(std::size_t i) const override { return balls[i].body != nullptr; }
+  int id(std::size_t i) const override { return balls[i].id; }
+  double mass(std::size_t i) const override { return balls[i].mass; }
+  Vec2 centre(std::size_t i) const override { return position(balls[i]); }
+  Kinematics now(std::size_t i) const override { return now(balls[i]); }
+
+  void restart(std::size_t i, const Kinematics& s) override {
+    Ball& b = balls[i];
+    if (s.p != position(b)) b.body->SetTransform(toB2(s.p), 0.0f);
+    restart(b, s);
   }
 
-  void cushionBounce(std::size_t i, Vec2 predicted) {
+  void nextPhase(std::size_t i) override {
     Ball& b = balls[i];
-    Vec2 normal;
-    Kinematics s = now(b);
-    if (physics::touchesOnly(s, predicted, faces(s.p), phys.ball_radius)) {
-      const Kinematics rested = physics::restAgainstCushion(s, predicted, table, phys);
-      if (rested.p != s.p) b.body->SetTransform(toB2(rested.p), 0.0f);
-      if (rested.p != s.p || rested.v != s.v || rested.w != s.w) restart(b, rested);
-      return;
-    }
-    if (jams.jammed(time, i, physics::JamCounter::kCushion)) {
-      // In a jam: no bounce, and every face it touches at once (see JamCounter).
-      double impulse = 0.0;
-      auto normals = faces(s.p);
-      normals.push_back(predicted);
-      s = physics::stopAgainst(s, normals, b.mass, impulse);
-      settleOnCushion(b, s, predicted, predicted, impulse);
-      return;
-    }
-    if (phys.cushion == CushionModel::Mathavan && -dot(s.v, predicted) > physics::kRestingSpeed) {
-      double impulse = 0.0;
-      s = physics::mathavanBounce(s, predicted, b.mass, phys, impulse);
-      settleOnCushion(b, s, predicted, predicted, impulse);
-      return;
-    }
+    b.arc = physics::nextArc(b.arc, phys);
+    b.arc.start.p = position(b);
+    logArc(b);
+  }
+
+  void drop(std::size_t i, PocketId pocket) override {
+    Ball& b = balls[i];
+    b.pos = position(b);
+    b.pocket = pocket;
+    world.DestroyBody(b.body);
+    b.body = nullptr;
+    if (arc_log) arc_log->pocket(i, time, b.pos);
+  }
+
+  // The paper's law at a cushion, by Box2D's contact solver.
+  physics::CushionRebound restitutionBounce(std::size_t i, const Kinematics& s_in, Vec2 predicted,
+                                            const PhysicsParams&) override {
+    Ball& b = balls[i];
+    physics::CushionRebound hit;
+    hit.k = s_in;
     recorder.bouncing = i;
     solveContactsNow();
-    double impulse = 0.0;
     Vec2 pushed;
     for (const auto& push : recorder.cushion_pushes) {
       if (push.ball != i) continue;
-      impulse += push.impulse / k;
+      hit.impulse += push.impulse / k;
       pushed = pushed - Vec2{push.normal.x, push.normal.y} * (push.impulse / k);
     }
     recorder.cushion_pushes.clear();
-    const Vec2 v_in = s.v;
+    const Vec2 v_in = s_in.v;
     // Box2D's impulse, along the exact normal: Box2D finds a face's (and a jaw point's) normal
     // from float vertices, microradians off, and a ball rattling in the jaws carries that on
     // from rebound to rebound. Its answer stands when it pushed and gave back no energy; its
@@ -291,173 +294,71 @@ struct World::Impl {
     const bool one_face = dot(normalized(pushed), predicted) > 1.0 - 1e-8;
     const Vec2 v_box2d = one_face ? v_in + predicted * (length(pushed) / b.mass)
                                   : fromB2(b.body->GetLinearVelocity());
-    if (impulse > 0.0 && dot(v_box2d, v_box2d) <= dot(v_in, v_in)) {
-      s.v = v_box2d;
-      normal = one_face ? predicted : normalized(pushed);
+    if (hit.impulse > 0.0 && dot(v_box2d, v_box2d) <= dot(v_in, v_in)) {
+      hit.k.v = v_box2d;
+      hit.normal = one_face ? predicted : normalized(pushed);
       // What Box2D's float solver leaves of the approach along the normal is rounding, and
       // would be found as a new contact at once, forever.
-      const double vn = dot(s.v, predicted);
-      if (vn < 0.0) s.v -= predicted * vn;
+      const double vn = dot(hit.k.v, predicted);
+      if (vn < 0.0) hit.k.v -= predicted * vn;
     } else {
-      if (impulse <= 0.0) {
+      if (hit.impulse <= 0.0) {
         // Box2D found no contact to push on (a touch it rounds away).
         logger("physics")->debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
       } else {
         logger("physics")->debug("t={:.6f} ball {}: Box2D's bounce gained energy; by hand", time,
                                  b.id);
       }
-      normal = predicted;
-      s = physics::bounceOffCushion(s, normal, b.mass, phys, impulse);
+      hit.normal = predicted;
+      hit.k = physics::bounceOffCushion(hit.k, hit.normal, b.mass, phys, hit.impulse);
     }
 #ifdef NINEBALL_BREAK_ENERGY
-    s.v = s.v * 1.01;  // deliberately broken, to show that the checks catch it
+    hit.k.v = hit.k.v * 1.01;  // deliberately broken, to show that the checks catch it
 #endif
-    settleOnCushion(b, s, normal, predicted, impulse);
+    return hit;
   }
 
-  // After the bounce itself: the rail's friction, the pressing spin taken away, the ball set
-  // out of the cushion, and the event.
-  void settleOnCushion(Ball& b, Kinematics s, Vec2 normal, Vec2 predicted, double impulse) {
-    // Mathavan's model holds the nose's friction already.
-    if (phys.cushion == CushionModel::Simple) {
-      s = physics::cushionFriction(s, normal, impulse, b.mass, phys);
-    }
-    s = physics::stopPressing(s, -normal, phys);
-    const Vec2 was = s.p;
-    physics::setOutOfCushion(s, predicted, table, phys.ball_radius);
-    if (s.p != was) b.body->SetTransform(toB2(s.p), 0.0f);
-    restart(b, s);
-    Event e;
-    e.type = EventType::Cushion;
-    e.t = time;
-    e.a = b.id;
-    e.va = s.v;
-    events.push_back(e);
-    logger("physics")->trace("t={:.6f} ball {} - cushion", time, b.id);
-  }
-
-  void pushBallEvent(Ball& a, Ball& b, Vec2 va, Vec2 vb) {
-    Event e;
-    e.type = EventType::BallBall;
-    e.t = time;
-    e.a = a.id;
-    e.b = b.id;
-    e.va = va;
-    e.vb = vb;
-    events.push_back(e);
-    logger("physics")->trace("t={:.6f} ball {} - ball {}", time, a.id, b.id);
-  }
-
-  void ballContact(std::size_t i, std::size_t j) {
+  // Box2D's simultaneous solver ("contacts": "box2d"): every touching pair at once.
+  bool solvedBallContact(std::size_t i, std::size_t j) override {
+    if (sp.contacts != ContactModel::Box2D) return false;
     Ball& a = balls[i];
     Ball& b = balls[j];
-    if (sp.contacts == ContactModel::Box2D) {
-      // Box2D's simultaneous solver: every touching pair at once.
-      recorder.ball_contacts = true;
-      solveContactsNow();
-      auto hits = recorder.ball_hits;
-      for (auto& [x, y] : hits) {
-        if (x > y) std::swap(x, y);
-      }
-      std::sort(hits.begin(), hits.end());
-      hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
-      std::vector<bool> changed(balls.size(), false);
-      for (auto [x, y] : hits) changed[x] = changed[y] = true;
-      for (std::size_t m = 0; m < balls.size(); ++m) {
-        if (!changed[m]) continue;
-        Kinematics s = now(balls[m]);
-        s.v = fromB2(balls[m].body->GetLinearVelocity());
-        restart(balls[m], s);
-      }
-      for (auto [x, y] : hits) {
-        pushBallEvent(balls[x], balls[y], balls[x].arc.start.v, balls[y].arc.start.v);
-      }
-      // Box2D's sequential solver, in floats, can leave the pair it was called for still
-      // closing: the same contact would be found again at the same instant, without end. It is
-      // then resolved by hand, as the pairwise model does.
-      const Vec2 n = normalized(position(b) - position(a));
-      const double closing = dot(now(a).v - now(b).v, n);
-      if (!hits.empty() && !(closing > physics::kMinClosingSpeed)) {
-        // Box2D leaves positions alone: a pair pressed past the touch tolerance would be met
-        // again at once for ever. It is set back to touching, as the pairwise model does.
-        setPairApart(a, b);
-        return;
-      }
-      logger("physics")->debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand",
-                               time, a.id, b.id, hits.empty() ? 0.0 : closing);
+    recorder.ball_contacts = true;
+    solveContactsNow();
+    auto hits = recorder.ball_hits;
+    for (auto& [x, y] : hits) {
+      if (x > y) std::swap(x, y);
     }
-    if (jams.jammed(time, i, j)) {
-      settleJam(i, j);
-      return;
-    }
-    Kinematics sa = now(a), sb = now(b);
-    physics::collideBalls(sa, sb, a.mass, b.mass, phys);
-    placeApart(a, b, sa, sb);
-    pushBallEvent(a, b, sa.v, sb.v);
-  }
-
-  // Balls pressed together are set back to touching (see setApart), and follow `sa`, `sb`.
-  void placeApart(Ball& a, Ball& b, Kinematics sa, Kinematics sb) {
-    const Vec2 pa = sa.p, pb = sb.p;
-    physics::setApart(sa, sb, table, phys.ball_radius);
-    if (sa.p != pa) a.body->SetTransform(toB2(sa.p), 0.0f);
-    if (sb.p != pb) b.body->SetTransform(toB2(sb.p), 0.0f);
-    restart(a, sa);
-    restart(b, sb);
-  }
-
-  void setPairApart(Ball& a, Ball& b) {
-    const Kinematics sa = now(a), sb = now(b);
-    if (2.0 * phys.ball_radius - length(sb.p - sa.p) > 0.5 * physics::kTouchTolerance) {
-      placeApart(a, b, sa, sb);
-    }
-  }
-
-  // A contact of i and j in a jam: every ball touching them settled at once (see settleJam).
-  void settleJam(std::size_t i, std::size_t j) {
-    std::vector<Vec2> centres(balls.size());
-    std::vector<bool> on_table(balls.size());
+    std::sort(hits.begin(), hits.end());
+    hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+    std::vector<bool> changed(balls.size(), false);
+    for (auto [x, y] : hits) changed[x] = changed[y] = true;
     for (std::size_t m = 0; m < balls.size(); ++m) {
-      on_table[m] = balls[m].body != nullptr;
-      if (on_table[m]) centres[m] = position(balls[m]);
+      if (!changed[m]) continue;
+      Kinematics s = now(balls[m]);
+      s.v = fromB2(balls[m].body->GetLinearVelocity());
+      restart(balls[m], s);
     }
-    physics::Jam jam;
-    std::vector<std::size_t> members;
-    std::tie(members, jam.pairs) = physics::jamAround(centres, on_table, i, j, phys.ball_radius);
-    for (std::size_t m : members) {
-      jam.balls.push_back({m, now(balls[m]), balls[m].mass, faces(centres[m])});
+    for (auto [x, y] : hits) {
+      resolver.ballEvent(time, *this, x, y, balls[x].arc.start.v, balls[y].arc.start.v);
     }
-    physics::settleJam(jam, phys);
-    physics::setJamApart(jam, table, phys.ball_radius);
-    std::vector<bool> changed(jam.balls.size());
-    for (std::size_t m = 0; m < jam.balls.size(); ++m) {
-      const physics::JamBall& jb = jam.balls[m];
-      Ball& b = balls[jb.index];
-      changed[m] = m < 2 || jb.k.v != now(b).v || jb.k.p != centres[jb.index];
-      if (jb.k.p != centres[jb.index]) b.body->SetTransform(toB2(jb.k.p), 0.0f);
-      if (changed[m]) restart(b, jb.k);
+    // Box2D's sequential solver, in floats, can leave the pair it was called for still
+    // closing: the same contact would be found again at the same instant, without end. It is
+    // then resolved by hand, as the pairwise model does.
+    const Vec2 n = normalized(position(b) - position(a));
+    const double closing = dot(now(a).v - now(b).v, n);
+    if (!hits.empty() && !(closing > physics::kMinClosingSpeed)) {
+      // Box2D leaves positions alone: a pair pressed past the touch tolerance would be met
+      // again at once for ever. It is set back to touching, as the pairwise model does.
+      const Kinematics sa = now(a), sb = now(b);
+      if (2.0 * phys.ball_radius - length(sb.p - sa.p) > 0.5 * physics::kTouchTolerance) {
+        resolver.placeApart(*this, i, j, sa, sb);
+      }
+      return true;
     }
-    for (auto [x, y] : jam.pairs) {
-      if (!changed[x] && !changed[y]) continue;
-      pushBallEvent(balls[jam.balls[x].index], balls[jam.balls[y].index], jam.balls[x].k.v,
-                    jam.balls[y].k.v);
-    }
-  }
-
-  void drop(std::size_t i, PocketId pocket) {
-    Ball& b = balls[i];
-    b.pos = position(b);
-    b.pocket = pocket;
-    world.DestroyBody(b.body);
-    b.body = nullptr;
-    if (arc_log) arc_log->pocket(i, time, b.pos);
-    Event e;
-    e.type = EventType::Pocket;
-    e.t = time;
-    e.a = b.id;
-    e.pocket = pocket;
-    events.push_back(e);
-    logger("physics")->debug("t={:.6f} ball {} pocketed in {}", time, b.id, pocketName(pocket));
+    logger("physics")->debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand", time,
+                             a.id, b.id, hits.empty() ? 0.0 : closing);
+    return false;
   }
 
   // Kinetic energy, rotation included, of every ball on the table: a contact in a jam
@@ -495,24 +396,7 @@ struct World::Impl {
   }
 
   void resolveUnchecked(const NextEvent& e) {
-    switch (e.kind) {
-      case NextEvent::Kind::None:
-        return;
-      case NextEvent::Kind::PhaseEnd:
-        balls[e.i].arc = physics::nextArc(balls[e.i].arc, phys);
-        balls[e.i].arc.start.p = position(balls[e.i]);
-        logArc(balls[e.i]);
-        return;
-      case NextEvent::Kind::Ball:
-        ballContact(e.i, e.j);
-        return;
-      case NextEvent::Kind::Cushion:
-        cushionBounce(e.i, e.normal);
-        return;
-      case NextEvent::Kind::Pocket:
-        drop(e.i, e.pocket);
-        return;
-    }
+    resolver.resolve(e, *this);
   }
 
   // Runs to `end` in pieces, each ending at the next event, at the travel limit or at `end`;

@@ -2,20 +2,15 @@
 
 #include <chrono>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
 #include "physics/arc_log.hpp"
-#include "physics/ball_collision.hpp"
-#include "physics/models/ball_contact.hpp"
-#include "physics/models/cue.hpp"
-#include "physics/models/cushion.hpp"
-#include "physics/models/jam.hpp"
-#include "physics/models/mathavan.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
+#include "physics/resolve/cue/cue.hpp"
+#include "physics/resolve/resolver.hpp"
 
 namespace nineball::reference {
 namespace {
@@ -30,10 +25,13 @@ struct Ball {
   bool on_table = true;
 };
 
-class Run {
+class Run final : public physics::EngineBalls {
  public:
   explicit Run(const Scene& scene)
-      : p_(scene.physics), table_(buildTable(scene.table, p_.ball_radius)), search_(table_, p_) {
+      : p_(scene.physics),
+        table_(buildTable(scene.table, p_.ball_radius)),
+        search_(table_, p_),
+        resolver_(p_, table_, search_.cushions, events_) {
     for (const BallState& b : scene.balls) {
       Ball ball;
       ball.state = b;
@@ -83,7 +81,7 @@ class Run {
       const NextEvent e = search_.next(movers, t_, end);
       t_ = e.t;
       if (e.kind == NextEvent::Kind::None) break;
-      resolve(e);
+      resolver_.resolve(e, *this);
       if (++resolved_ >= limits::kMaxEvents) {
         exhausted_ = true;
         logger("physics")->info("t={:.6f}: work budget spent ({} events); stopped", t_, resolved_);
@@ -138,129 +136,34 @@ class Run {
     if (i < log_.ids().size()) log_.record(i, b.arc);
   }
 
-  void pushBallEvent(const Ball& a, const Ball& b, Vec2 va, Vec2 vb) {
-    Event ev;
-    ev.type = EventType::BallBall;
-    ev.t = t_;
-    ev.a = a.state.id;
-    ev.b = b.state.id;
-    ev.va = va;
-    ev.vb = vb;
-    events_.push_back(ev);
+  // --- the balls as the resolver sees them ---
+  std::size_t count() const override { return balls_.size(); }
+  bool onTable(std::size_t i) const override { return balls_[i].on_table; }
+  int id(std::size_t i) const override { return balls_[i].state.id; }
+  double mass(std::size_t i) const override { return *balls_[i].state.mass; }
+  Vec2 centre(std::size_t i) const override { return now(balls_[i]).p; }
+  Kinematics now(std::size_t i) const override { return now(balls_[i]); }
+  void restart(std::size_t i, const Kinematics& k) override { restart(balls_[i], k); }
+
+  void nextPhase(std::size_t i) override {
+    balls_[i].arc = physics::nextArc(balls_[i].arc, p_);
+    logArc(balls_[i]);
   }
 
-  // As World's: every ball touching i and j settled at once.
-  void settleJam(std::size_t i, std::size_t j) {
-    std::vector<Vec2> centres(balls_.size());
-    std::vector<bool> on_table(balls_.size());
-    for (std::size_t m = 0; m < balls_.size(); ++m) {
-      on_table[m] = balls_[m].on_table;
-      if (on_table[m]) centres[m] = now(balls_[m]).p;
-    }
-    physics::Jam jam;
-    std::vector<std::size_t> members;
-    std::tie(members, jam.pairs) = physics::jamAround(centres, on_table, i, j, p_.ball_radius);
-    for (std::size_t m : members) {
-      jam.balls.push_back({m, now(balls_[m]), *balls_[m].state.mass, faces(centres[m])});
-    }
-    physics::settleJam(jam, p_);
-    physics::setJamApart(jam, table_, p_.ball_radius);
-    std::vector<bool> changed(jam.balls.size());
-    for (std::size_t m = 0; m < jam.balls.size(); ++m) {
-      const physics::JamBall& jb = jam.balls[m];
-      Ball& b = balls_[jb.index];
-      changed[m] = m < 2 || jb.k.v != now(b).v || jb.k.p != centres[jb.index];
-      if (changed[m]) restart(b, jb.k);
-    }
-    for (auto [x, y] : jam.pairs) {
-      if (!changed[x] && !changed[y]) continue;
-      pushBallEvent(balls_[jam.balls[x].index], balls_[jam.balls[y].index], jam.balls[x].k.v,
-                    jam.balls[y].k.v);
-    }
-  }
-
-  std::vector<Vec2> faces(Vec2 p) const {
-    return physics::touchingNormals(p, p_.ball_radius, search_.cushions);
-  }
-
-  void resolve(const NextEvent& e) {
-    Ball& a = balls_[e.i];
-    switch (e.kind) {
-      case NextEvent::Kind::None:
-        return;
-      case NextEvent::Kind::PhaseEnd:
-        a.arc = physics::nextArc(a.arc, p_);
-        logArc(a);
-        return;
-      case NextEvent::Kind::Ball: {
-        Ball& b = balls_[e.j];
-        if (jams_.jammed(t_, e.i, e.j)) {
-          settleJam(e.i, e.j);
-          return;
-        }
-        Kinematics ka = now(a), kb = now(b);
-        physics::collideBalls(ka, kb, *a.state.mass, *b.state.mass, p_);
-        physics::setApart(ka, kb, table_, p_.ball_radius);
-        restart(a, ka);
-        restart(b, kb);
-        pushBallEvent(a, b, ka.v, kb.v);
-        return;
-      }
-      case NextEvent::Kind::Cushion: {
-        double impulse = 0.0;
-        Kinematics k = now(a);
-        if (physics::touchesOnly(k, e.normal, faces(k.p), p_.ball_radius)) {
-          const Kinematics rested = physics::restAgainstCushion(k, e.normal, table_, p_);
-          if (rested.p != k.p || rested.v != k.v || rested.w != k.w) restart(a, rested);
-          return;
-        }
-        if (jams_.jammed(t_, e.i, physics::JamCounter::kCushion)) {
-          auto normals = faces(k.p);
-          normals.push_back(e.normal);
-          k = physics::stopAgainst(k, normals, *a.state.mass, impulse);
-        } else if (p_.cushion == CushionModel::Mathavan &&
-                   -dot(k.v, e.normal) > physics::kRestingSpeed) {
-          k = physics::mathavanBounce(k, e.normal, *a.state.mass, p_, impulse);
-        } else {
-          k = physics::bounceOffCushion(k, e.normal, *a.state.mass, p_, impulse);
-        }
-        // Mathavan's model holds the nose's friction already.
-        if (p_.cushion == CushionModel::Simple) {
-          k = physics::cushionFriction(k, e.normal, impulse, *a.state.mass, p_);
-        }
-        k = physics::stopPressing(k, -e.normal, p_);
-        physics::setOutOfCushion(k, e.normal, table_, p_.ball_radius);
-        restart(a, k);
-        Event ev;
-        ev.type = EventType::Cushion;
-        ev.t = t_;
-        ev.a = a.state.id;
-        ev.va = k.v;
-        events_.push_back(ev);
-        return;
-      }
-      case NextEvent::Kind::Pocket: {
-        a.state.pos = now(a).p;
-        a.state.pocket = e.pocket;
-        a.on_table = false;
-        if (e.i < log_.ids().size()) log_.pocket(e.i, t_, a.state.pos);
-        Event ev;
-        ev.type = EventType::Pocket;
-        ev.t = t_;
-        ev.a = a.state.id;
-        ev.pocket = e.pocket;
-        events_.push_back(ev);
-        return;
-      }
-    }
+  void drop(std::size_t i, PocketId pocket) override {
+    Ball& a = balls_[i];
+    a.state.pos = now(a).p;
+    a.state.pocket = pocket;
+    a.on_table = false;
+    if (i < log_.ids().size()) log_.pocket(i, t_, a.state.pos);
   }
 
   PhysicsParams p_;
   TableGeometry table_;
   physics::EventSearch search_;
-  physics::JamCounter jams_;
   std::vector<Ball> balls_;
   std::vector<Event> events_;
+  physics::Resolver resolver_;
   physics::ArcLog log_;  // filled only when the scene asks for a trace
   long resolved_ = 0;
   bool exhausted_ = false;

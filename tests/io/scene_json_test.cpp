@@ -324,15 +324,15 @@ TEST(SceneJson, ReadsTheBallBallModelAndItsFriction) {
 
 TEST(SceneJson, ReadsTheCushionModelTheCueAndElevation) {
   Scene s = accepted(scene(R"("physics": {"cushion": "simple"})"));
-  EXPECT_EQ(s.physics.cushion, CushionModel::Simple);
+  EXPECT_EQ(s.physics.cushion, CushionModel::named("simple"));
   s = accepted(scene(R"("physics": {"cushion_height": 0.037})"));
-  EXPECT_EQ(s.physics.cushion, CushionModel::Mathavan);
+  EXPECT_EQ(s.physics.cushion, CushionModel::named("mathavan"));
   EXPECT_DOUBLE_EQ(s.physics.cushion_height, 0.037);
   // The nose follows a ball whose radius is set alone: 63.5 % of its diameter.
   s = accepted(scene(R"("physics": {"ball_radius": 0.03})"));
   EXPECT_DOUBLE_EQ(s.physics.cushion_height, 1.27 * 0.03);
   EXPECT_EQ(accepted(scene(R"("physics": {"preset": "paper"})")).physics.cushion,
-            CushionModel::Simple);
+            CushionModel::named("simple"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion": "rubber"})"), "physics.cushion",
                         "unknown cushion model"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion_height": 0.02})"), "physics.cushion_height",

@@ -47,7 +47,7 @@ inline TableDef longTable() {
 inline PhysicsParams constantDeceleration(PhysicsParams p = PhysicsParams::real()) {
   p.cloth = ClothModel::Friction;
   p.ball_ball = BallBallModel::Frictionless;
-  p.cushion = CushionModel::Simple;
+  p.cushion = CushionModel::named("simple");
   return p;
 }
 

@@ -2,7 +2,7 @@
 // of Mathavan et al. 2010, ../shared/physics-models.md): a rolling ball at 1 m/s, angles from
 // the rail's normal, at 1, 2 and 3 m/s, from the model alone and from a whole world. Tolerance
 // 1 deg, the issue's; the speed kept head-on within 0.02.
-#include "physics/models/mathavan.hpp"
+#include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ Rebound rebound(double incidence_deg, double speed, double topspin, double side,
 
 TEST(Mathavan, RollingBallMatchesThePublishedFigures) {
   const PhysicsParams p = PhysicsParams::real();
-  ASSERT_EQ(p.cushion, CushionModel::Mathavan);
+  ASSERT_EQ(p.cushion, CushionModel::named("mathavan"));
   const double published[][3] = {{0, 0.0, 0.0},     {15, 12.05, 19.3}, {30, 24.29, 36.5},
                                  {45, 40.04, 54.5}, {60, 58.95, 71.4}, {75, 76.17, 82.8}};
   for (const auto& [incidence, after, rolling] : published) {

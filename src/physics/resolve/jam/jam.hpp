@@ -10,13 +10,6 @@
 
 namespace nineball::physics {
 
-/// Two balls meeting with centres along a -> b: the paper's oblique collision (normal part by
-/// the 1-D restitution law, tangential part kept). When they part slower than a ball can
-/// bounce, spin that would press them together again is stopped: else they would meet in an
-/// endless run of ever smaller bounces. Positions and the rest of the spin are kept.
-void collideBalls(Kinematics& a, Kinematics& b, double mass_a, double mass_b,
-                  const PhysicsParams& p);
-
 /// A ball of a jam (see JamCounter): its state, mass and the cushion faces it touches
 /// (normals into the table).
 struct JamBall {
@@ -48,11 +41,5 @@ void settleJam(Jam& jam, const PhysicsParams& p);
 /// setApart for every pair of a jam, swept a few times: setting one pair apart may press one
 /// of them into a third.
 void setJamApart(Jam& jam, const TableGeometry& table, double r);
-
-/// Balls the cloth presses together (a perfectly inelastic pair, the one behind with more
-/// topspin) are met again each time they overlap by the touch tolerance, and set back to
-/// touching here: each moved half the overlap along the normal, except one that the move
-/// would sink into a cushion. Micrometres of position, no velocity: no energy.
-void setApart(Kinematics& a, Kinematics& b, const TableGeometry& table, double r);
 
 }  // namespace nineball::physics

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "nineball/params.hpp"
-#include "physics/models/ball_contact.hpp"
+#include "physics/resolve/ball_ball/ball_contact.hpp"
 
 namespace nineball::physics {
 namespace {

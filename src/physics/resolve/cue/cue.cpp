@@ -1,4 +1,4 @@
-#include "physics/models/cue.hpp"
+#include "physics/resolve/cue/cue.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,9 +11,9 @@
 
 #include "nineball/params.hpp"
 #include "nineball/random.hpp"
-#include "physics/models/cushion.hpp"
-#include "physics/models/mathavan.hpp"
 #include "physics/motion.hpp"
+#include "physics/resolve/cushion/contact.hpp"
+#include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 
 namespace nineball::physics {
 namespace {

@@ -1,4 +1,4 @@
-#include "physics/models/jam.hpp"
+#include "physics/resolve/jam/jam_counter.hpp"
 
 #include <algorithm>
 

@@ -1,7 +1,8 @@
-#include "physics/models/mathavan.hpp"
+#include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace nineball::physics {
 namespace {
@@ -109,6 +110,31 @@ Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsP
   k.v = x * s.vx + y * s.vy;
   k.w = {x.x * s.wx + y.x * s.wy, x.y * s.wx + y.y * s.wy, s.wz};
   return k;
+}
+
+namespace {
+
+// The nose is the contact point: it must stand above the centre (else the impulse would lift
+// the ball) and below the top (else it misses the ball).
+std::optional<std::string> checkHeight(const PhysicsParams& p) {
+  const double r = p.ball_radius;
+  if (p.cushion_height > r && p.cushion_height < 2.0 * r) return std::nullopt;
+  std::ostringstream why;
+  why << "physics.cushion_height: the Mathavan cushion's nose must stand above the ball's "
+         "centre and below its top: between "
+      << r << " and " << 2.0 * r << " m for ball_radius " << r;
+  return why.str();
+}
+
+}  // namespace
+
+CushionModelDef mathavan2010Cushion() {
+  CushionModelDef m;
+  m.name = "mathavan";
+  m.bounce = mathavanBounce;
+  m.reads = {"cushion_height"};
+  m.check = checkHeight;
+  return m;
 }
 
 }  // namespace nineball::physics

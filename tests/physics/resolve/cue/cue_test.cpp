@@ -1,6 +1,6 @@
 // The cue strike: the paper's spin at a level cue, squirt against TP A.31, and the swerve of
 // an elevated cue against the closed form of the sliding phase.
-#include "physics/models/cue.hpp"
+#include "physics/resolve/cue/cue.hpp"
 
 #include <gtest/gtest.h>
 

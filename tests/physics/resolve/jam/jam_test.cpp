@@ -1,5 +1,5 @@
 // A jam: contacts met again and again at one instant (see JamCounter), settled as one.
-#include "physics/models/jam.hpp"
+#include "physics/resolve/jam/jam.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,9 @@
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
 #include "physics/ball_collision.hpp"
-#include "physics/models/ball_contact.hpp"
-#include "physics/models/cushion.hpp"
+#include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/cushion/contact.hpp"
+#include "physics/resolve/jam/jam_counter.hpp"
 
 namespace nineball::physics {
 namespace {

@@ -12,24 +12,12 @@ namespace nineball::physics {
 /// restitution under it either (its restitution threshold is set to the same value).
 constexpr double kRestingSpeed = 1e-4;
 
-/// The paper's cushion (section 7): the normal part of the velocity reversed and scaled by
-/// cushion_restitution, the tangential part kept. `normal` is the unit normal from the
-/// cushion to the ball. Returns the normal impulse the cushion gave (kg m/s) in `impulse`.
-Kinematics bounceOffCushion(Kinematics k, Vec2 normal, double mass, const PhysicsParams& p,
-                            double& impulse);
-
-/// Friction at the cushion nose (spin cloth only): it acts on the slip of the contact point,
 /// A perfectly inelastic stop against every face in `normals` at once: the velocity nearest
 /// to today's that enters none of them (in a wedge, often none at all). Pair by pair the
 /// same stop only creeps towards it, by a factor of the wedge's angle each time.
 /// `impulse` is the size of the impulse given.
 Kinematics stopAgainst(Kinematics k, const std::vector<Vec2>& normals, double mass,
                        double& impulse);
-
-/// Coulomb with cushion_friction times the normal impulse, capped where the point stops
-/// slipping; side spin changes the angle off the rail, and the rail changes the side spin.
-Kinematics cushionFriction(Kinematics k, Vec2 normal, double normal_impulse, double mass,
-                           const PhysicsParams& p);
 
 /// A ball that rests against an obstacle (normal speed under kRestingSpeed) while its own
 /// slip drives it into it: the obstacle takes the part of the spin that presses, so that the

@@ -2,6 +2,7 @@
 
 #include "nineball/params.hpp"
 #include "physics/motion.hpp"
+#include "physics/resolve/cushion/registry.hpp"
 
 namespace nineball::physics {
 
@@ -18,5 +19,9 @@ namespace nineball::physics {
 /// `inward` is the cushion's normal, into the table; `impulse` is the total P.
 Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
                           double& impulse);
+
+/// "mathavan": mathavanBounce, reading cushion_height, which must stand between the ball's
+/// centre and its top.
+CushionModelDef mathavan2010Cushion();
 
 }  // namespace nineball::physics

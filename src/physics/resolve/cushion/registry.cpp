@@ -1,0 +1,55 @@
+#include "physics/resolve/cushion/registry.hpp"
+
+#include <stdexcept>
+
+#include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
+#include "physics/resolve/cushion/simple/simple.hpp"
+
+namespace nineball {
+namespace physics {
+
+const std::vector<CushionModelDef>& cushionModels() {
+  static const std::vector<CushionModelDef> models{
+      simpleCushion(),
+      mathavan2010Cushion(),
+  };
+  return models;
+}
+
+const CushionModelDef& cushionModel(CushionModel m) {
+  return cushionModels()[m.index()];
+}
+
+}  // namespace physics
+
+std::optional<CushionModel> CushionModel::fromName(const std::string& name) {
+  const auto& models = physics::cushionModels();
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    if (name == models[i].name) return CushionModel(i);
+  }
+  return std::nullopt;
+}
+
+CushionModel CushionModel::named(const std::string& name) {
+  if (auto m = fromName(name)) return *m;
+  throw std::invalid_argument("no cushion model named \"" + name + "\"");
+}
+
+std::vector<std::string> CushionModel::names() {
+  std::vector<std::string> out;
+  for (const auto& m : physics::cushionModels()) out.emplace_back(m.name);
+  return out;
+}
+
+bool CushionModel::reads(const std::string& parameter) const {
+  for (const std::string& r : physics::cushionModel(*this).reads) {
+    if (r == parameter) return true;
+  }
+  return false;
+}
+
+const char* CushionModel::name() const {
+  return physics::cushionModel(*this).name;
+}
+
+}  // namespace nineball

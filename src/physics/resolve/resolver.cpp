@@ -1,0 +1,174 @@
+#include "physics/resolve/resolver.hpp"
+
+#include <tuple>
+
+#include "nineball/log.hpp"
+#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/cushion/contact.hpp"
+#include "physics/resolve/cushion/registry.hpp"
+#include "physics/resolve/cushion/simple/simple.hpp"
+#include "physics/resolve/jam/jam.hpp"
+
+namespace nineball::physics {
+
+bool EngineBalls::solvedBallContact(std::size_t, std::size_t) {
+  return false;
+}
+
+CushionRebound EngineBalls::restitutionBounce(std::size_t i, const Kinematics& k, Vec2 predicted,
+                                              const PhysicsParams& p) {
+  CushionRebound hit;
+  hit.normal = predicted;
+  hit.k = bounceOffCushion(k, predicted, mass(i), p, hit.impulse);
+  return hit;
+}
+
+Resolver::Resolver(const PhysicsParams& p, const TableGeometry& table, const Cushions& cushions,
+                   std::vector<Event>& events)
+    : p_(p), table_(table), cushions_(cushions), events_(events) {}
+
+void Resolver::resolve(const NextEvent& e, EngineBalls& balls) {
+  switch (e.kind) {
+    case NextEvent::Kind::None:
+      return;
+    case NextEvent::Kind::PhaseEnd:
+      balls.nextPhase(e.i);
+      return;
+    case NextEvent::Kind::Ball:
+      ballContact(e.t, balls, e.i, e.j);
+      return;
+    case NextEvent::Kind::Cushion:
+      cushionContact(e.t, balls, e.i, e.normal);
+      return;
+    case NextEvent::Kind::Pocket:
+      pocket(e.t, balls, e.i, e.pocket);
+      return;
+  }
+}
+
+void Resolver::ballEvent(double t, const EngineBalls& balls, std::size_t i, std::size_t j, Vec2 va,
+                         Vec2 vb) {
+  Event e;
+  e.type = EventType::BallBall;
+  e.t = t;
+  e.a = balls.id(i);
+  e.b = balls.id(j);
+  e.va = va;
+  e.vb = vb;
+  events_.push_back(e);
+  logger("physics")->trace("t={:.6f} ball {} - ball {}", t, e.a, e.b);
+}
+
+void Resolver::placeApart(EngineBalls& balls, std::size_t i, std::size_t j, Kinematics sa,
+                          Kinematics sb) const {
+  setApart(sa, sb, table_, p_.ball_radius);
+  balls.restart(i, sa);
+  balls.restart(j, sb);
+}
+
+void Resolver::ballContact(double t, EngineBalls& balls, std::size_t i, std::size_t j) {
+  if (balls.solvedBallContact(i, j)) return;
+  if (jams_.jammed(t, i, j)) {
+    settleJam(t, balls, i, j);
+    return;
+  }
+  Kinematics sa = balls.now(i), sb = balls.now(j);
+  collideBalls(sa, sb, balls.mass(i), balls.mass(j), p_);
+  placeApart(balls, i, j, sa, sb);
+  ballEvent(t, balls, i, j, sa.v, sb.v);
+}
+
+// A contact of i and j in a jam: every ball touching them settled at once (see settleJam).
+void Resolver::settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j) {
+  const std::size_t n = balls.count();
+  std::vector<Vec2> centres(n);
+  std::vector<bool> on_table(n);
+  for (std::size_t m = 0; m < n; ++m) {
+    on_table[m] = balls.onTable(m);
+    if (on_table[m]) centres[m] = balls.centre(m);
+  }
+  Jam jam;
+  std::vector<std::size_t> members;
+  std::tie(members, jam.pairs) = jamAround(centres, on_table, i, j, p_.ball_radius);
+  for (std::size_t m : members) {
+    jam.balls.push_back({m, balls.now(m), balls.mass(m), faces(centres[m])});
+  }
+  physics::settleJam(jam, p_);
+  setJamApart(jam, table_, p_.ball_radius);
+  std::vector<bool> changed(jam.balls.size());
+  for (std::size_t m = 0; m < jam.balls.size(); ++m) {
+    const JamBall& jb = jam.balls[m];
+    changed[m] = m < 2 || jb.k.v != balls.now(jb.index).v || jb.k.p != centres[jb.index];
+    if (changed[m]) balls.restart(jb.index, jb.k);
+  }
+  for (auto [x, y] : jam.pairs) {
+    if (!changed[x] && !changed[y]) continue;
+    ballEvent(t, balls, jam.balls[x].index, jam.balls[y].index, jam.balls[x].k.v, jam.balls[y].k.v);
+  }
+}
+
+void Resolver::cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted) {
+  Kinematics k = balls.now(i);
+  const double mass = balls.mass(i);
+  if (touchesOnly(k, predicted, faces(k.p), p_.ball_radius)) {
+    const Kinematics rested = restAgainstCushion(k, predicted, table_, p_);
+    if (rested.p != k.p || rested.v != k.v || rested.w != k.w) balls.restart(i, rested);
+    return;
+  }
+  if (jams_.jammed(t, i, JamCounter::kCushion)) {
+    // In a jam: no bounce, and every face it touches at once (see JamCounter).
+    double impulse = 0.0;
+    auto normals = faces(k.p);
+    normals.push_back(predicted);
+    k = stopAgainst(k, normals, mass, impulse);
+    settleOnCushion(t, balls, i, k, predicted, predicted, impulse);
+    return;
+  }
+  const CushionModelDef& model = cushionModel(p_.cushion);
+  if (model.bounce && -dot(k.v, predicted) > kRestingSpeed) {
+    double impulse = 0.0;
+    k = model.bounce(k, predicted, mass, p_, impulse);
+    settleOnCushion(t, balls, i, k, predicted, predicted, impulse);
+    return;
+  }
+  const CushionRebound hit = balls.restitutionBounce(i, k, predicted, p_);
+  settleOnCushion(t, balls, i, hit.k, hit.normal, predicted, hit.impulse);
+}
+
+// After the bounce itself: the rail's friction, the pressing spin taken away, the ball set
+// out of the cushion, and the event.
+void Resolver::settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k,
+                               Vec2 normal, Vec2 predicted, double impulse) {
+  // A model with a rebound of its own holds the nose's friction already.
+  if (!cushionModel(p_.cushion).bounce) {
+    k = cushionFriction(k, normal, impulse, balls.mass(i), p_);
+  }
+  k = stopPressing(k, -normal, p_);
+  setOutOfCushion(k, predicted, table_, p_.ball_radius);
+  balls.restart(i, k);
+  Event e;
+  e.type = EventType::Cushion;
+  e.t = t;
+  e.a = balls.id(i);
+  e.va = k.v;
+  events_.push_back(e);
+  logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
+}
+
+void Resolver::pocket(double t, EngineBalls& balls, std::size_t i, PocketId pocket) {
+  balls.drop(i, pocket);
+  Event e;
+  e.type = EventType::Pocket;
+  e.t = t;
+  e.a = balls.id(i);
+  e.pocket = pocket;
+  events_.push_back(e);
+  logger("physics")->debug("t={:.6f} ball {} pocketed in {}", t, e.a, pocketName(pocket));
+}
+
+std::vector<Vec2> Resolver::faces(Vec2 p) const {
+  return touchingNormals(p, p_.ball_radius, cushions_);
+}
+
+}  // namespace nineball::physics
