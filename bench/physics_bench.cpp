@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "game/planner_evaluate.hpp"
+#include "nineball/engine.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/world.hpp"
 #include "physics/ball_collision.hpp"
 #include "physics/contact_times.hpp"
 #include "physics/motion.hpp"
@@ -34,7 +34,8 @@ void BM_StepFullRackMoving(benchmark::State& state) {
   const Scene scene = breakScene();
   for (auto _ : state) {
     state.PauseTiming();
-    World w(scene.table, scene.physics, scene.step);
+    const std::unique_ptr<Engine> w_engine = makeEngine(scene.table, scene.physics, scene.step);
+    Engine& w = *w_engine;
     for (const BallState& b : scene.balls) w.addBall(b);
     w.strike(kCueBall, *scene.shot);
     w.runFor(0.15);  // the cue ball has reached the rack
@@ -63,7 +64,8 @@ void BM_RollingAmongRestingBalls(benchmark::State& state) {
   }
   for (auto _ : state) {
     state.PauseTiming();
-    World w(TableDef{}, PhysicsParams{}, StepParams{});
+    const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, PhysicsParams{}, StepParams{});
+    Engine& w = *w_engine;
     for (const BallState& b : balls) w.addBall(b);
     state.ResumeTiming();
     w.runUntilRest();
@@ -96,7 +98,8 @@ std::vector<BallState> movingGrid(int n) {
 void BM_MovingGridToRest(benchmark::State& state) {
   const std::vector<BallState> balls = movingGrid(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    World w(TableDef{}, PhysicsParams{}, StepParams{});
+    const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, PhysicsParams{}, StepParams{});
+    Engine& w = *w_engine;
     for (const BallState& b : balls) w.addBall(b);
     w.runUntilRest();
     benchmark::DoNotOptimize(w.time());

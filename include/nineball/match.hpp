@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "nineball/ball.hpp"
+#include "nineball/engine.hpp"
 #include "nineball/params.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/shot.hpp"
 #include "nineball/table.hpp"
-#include "nineball/world.hpp"
 
 namespace nineball {
 
@@ -91,8 +91,8 @@ class Match {
   bool cueBehindHeadString() const;
 
   const rules::Rack& rack() const { return rack_; }
-  World& world() { return *world_; }
-  const World& world() const { return *world_; }
+  Engine& world() { return *world_; }
+  const Engine& world() const { return *world_; }
   std::vector<BallState> balls() const { return world_->balls(); }
 
  private:
@@ -103,7 +103,7 @@ class Match {
   Vec2 freeSpotOnLine(Vec2 from, Vec2 step_dir) const;
 
   MatchSetup setup_;
-  std::unique_ptr<World> world_;
+  std::unique_ptr<Engine> world_;
   rules::Rack rack_;
   bool in_progress_ = false;
   bool push_out_ = false;

@@ -64,10 +64,34 @@ enum class ContactModel {
   Box2D,     ///< Box2D's own simultaneous contact solver
 };
 
-/// Which solver runs a scene.
-enum class Engine {
-  Box2D,      ///< Box2D moves the bodies, resolves the cushions and fires the pocket sensors
-  Reference,  ///< the exact event-based solver of the same model: no Box2D, no time step
+/// Which engine runs a scene: one of the engines of the registry
+/// (src/physics/engines/registry.cpp), chosen by the name it declares there ("box2d", Box2D's
+/// bodies and pieces; "reference", the exact event-based solver with no time step).
+class EngineKind {
+ public:
+  /// The engine of that name; std::invalid_argument for a name the registry does not hold.
+  static EngineKind named(const std::string& name);
+  /// The engine of that name, or nothing.
+  static std::optional<EngineKind> fromName(const std::string& name);
+  /// Every engine's name, in the registry's order.
+  static std::vector<std::string> names();
+
+  /// The name it declares in the registry.
+  const char* name() const;
+  /// True when it reads `field` of the scene's "step" (its solver settings).
+  bool reads(const std::string& field) const;
+  /// What it lacks that the fields it does not read are for ("has no time step"), to say why
+  /// a scene that sets one is refused.
+  const char* lacks() const;
+  /// Its place in the registry.
+  std::size_t index() const { return index_; }
+
+  bool operator==(EngineKind o) const { return index_ == o.index_; }
+  bool operator!=(EngineKind o) const { return index_ != o.index_; }
+
+ private:
+  explicit EngineKind(std::size_t index) : index_(index) {}
+  std::size_t index_;
 };
 
 /// Physical parameters, SI units. Every field can be overridden in a scene.
@@ -113,7 +137,7 @@ struct StepParams {
   int position_iterations = 3;
   double scale = 50.0;  ///< Box2D units per metre (k)
   ContactModel contacts = ContactModel::Pairwise;
-  Engine engine = Engine::Box2D;
+  EngineKind engine = EngineKind::named("box2d");
   double max_time = 600.0;  ///< s, a run to rest gives up after this long
   /// The plain fixed-rate reference: every ball, resting or not, stepped at every step, no
   /// skipping of idle work. Steps still split where a ball would outrun Box2D's travel limit.
@@ -135,8 +159,6 @@ const char* clothModelName(ClothModel m);
 const char* ballBallModelName(BallBallModel m);
 std::optional<BallBallModel> ballBallModelFromName(const std::string& name);
 const char* contactModelName(ContactModel m);
-const char* engineName(Engine e);
-std::optional<Engine> engineFromName(const std::string& name);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
 std::optional<ContactModel> contactModelFromName(const std::string& name);
 

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "nineball/accuracy.hpp"
+#include "nineball/engine.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/world.hpp"
 
 namespace nineball {
 namespace {
@@ -27,7 +27,7 @@ TableDef openTable() {
   return {60.0, 20.0};
 }
 
-const Event* firstEvent(const World& w, EventType type) {
+const Event* firstEvent(const Engine& w, EventType type) {
   for (const Event& e : w.events()) {
     if (e.type == type) return &e;
   }
@@ -38,7 +38,7 @@ double relErr(double got, double want, double scale) {
   return std::abs(got - want) / scale * 100.0;
 }
 
-void runToEvent(World& w, EventType type, double max_seconds) {
+void runToEvent(Engine& w, EventType type, double max_seconds) {
   const long limit = w.steps() + std::lround(max_seconds * w.stepParams().hz);
   while (!firstEvent(w, type) && w.steps() < limit && !w.atRest()) w.step();
 }
@@ -49,7 +49,8 @@ std::pair<double, double> cutShot(const StepParams& sp, double cut_deg, double u
   PhysicsParams p = paperCloth();
   p.rolling_friction = 0.0;
   p.ball_restitution = e;
-  World w(openTable(), p, sp);
+  const std::unique_ptr<Engine> w_engine = makeEngine(openTable(), p, sp);
+  Engine& w = *w_engine;
   const double r = p.ball_radius;
   const double offset = 2.0 * r * std::sin(degToRad(cut_deg));
   w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}, {}});
@@ -75,7 +76,8 @@ double headOn(const StepParams& sp) {
       PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
       p.ball_restitution = e;
-      World w(openTable(), p, sp);
+      const std::unique_ptr<Engine> w_engine = makeEngine(openTable(), p, sp);
+      Engine& w = *w_engine;
       const double u = 10.0, m1 = 0.170;
       w.addBall({0, {-0.5, 0.0}, {u, 0.0}, m1, {}, {}});
       w.addBall({1, {0.0, 0.0}, {}, m2, {}, {}});
@@ -96,7 +98,8 @@ double cushion(const StepParams& sp) {
     for (double speed : {0.2, 2.0, 8.0}) {
       PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
-      World w(TableDef{}, p, sp);
+      const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, p, sp);
+      Engine& w = *w_engine;
       // Towards the top cushion between the pockets, `angle` from its normal.
       const Vec2 v = Vec2{std::sin(degToRad(angle)), std::cos(degToRad(angle))} * speed;
       w.addBall({0, {-0.6 - v.x / v.y * 0.3, 0.3}, v, {}, {}, {}});
@@ -119,7 +122,8 @@ double cushionGap(const StepParams& sp) {
   for (double speed : {0.2, 3.0}) {
     PhysicsParams p = paperCloth();
     p.rolling_friction = 0.0;
-    World w(TableDef{}, p, sp);
+    const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, p, sp);
+    Engine& w = *w_engine;
     w.addBall({0, {-0.6, 0.3}, {0.0, speed}, {}, {}, {}});
     double y0 = 0.0;
     const long limit = w.steps() + std::lround(2.0 * sp.hz);
@@ -147,7 +151,8 @@ double bankKiss(const StepParams& sp) {
       PhysicsParams p = paperCloth();
       p.rolling_friction = 0.0;
       p.ball_restitution = 1.0;
-      World w(TableDef{}, p, sp);
+      const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, p, sp);
+      Engine& w = *w_engine;
       const double r = p.ball_radius, e = p.cushion_restitution;
       const double top = w.table().def.width / 2.0 - r;
       const Vec2 v_in = Vec2{1.0, 1.0} * (speed / std::sqrt(2.0));
@@ -176,7 +181,8 @@ double stopping(const StepParams& sp) {
   for (double v0 : {0.5, 2.0, 5.0}) {
     PhysicsParams p = paperCloth();
     p.rolling_friction = 0.2;
-    World w(openTable(), p, sp);
+    const std::unique_ptr<Engine> w_engine = makeEngine(openTable(), p, sp);
+    Engine& w = *w_engine;
     w.addBall({0, {-25.0, 0.0}, {v0, 0.0}, {}, {}, {}});
     w.runUntilRest();
     const double a = p.rolling_friction * p.gravity;
@@ -193,7 +199,8 @@ double cradle(const StepParams& sp) {
   PhysicsParams p = paperCloth();
   p.rolling_friction = 0.0;
   p.ball_restitution = 1.0;
-  World w(openTable(), p, sp);
+  const std::unique_ptr<Engine> w_engine = makeEngine(openTable(), p, sp);
+  Engine& w = *w_engine;
   const double r = p.ball_radius, u = 3.0;
   w.addBall({0, {-0.3, 0.0}, {u, 0.0}, {}, {}, {}});
   for (int i = 1; i <= 3; ++i) w.addBall({i, {2.0 * r * (i - 1), 0.0}, {}, {}, {}, {}});
@@ -214,7 +221,8 @@ double stunToRoll(const StepParams& sp) {
   for (double v0 : {1.0, 3.0, 6.0}) {
     PhysicsParams p = PhysicsParams::real();
     p.rolling_friction = 0.0;
-    World w(openTable(), p, sp);
+    const std::unique_ptr<Engine> w_engine = makeEngine(openTable(), p, sp);
+    Engine& w = *w_engine;
     w.addBall({0, {-5.0, 0.0}, {}, {}, {}, {}});
     w.strike(0, Shot::withSpeed(0.0, v0));
     const double mu_g = p.sliding_friction * p.gravity;

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "nineball/engine.hpp"
 #include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
-#include "nineball/world.hpp"
 #include "physics/motion.hpp"
 
 namespace nineball {
@@ -80,7 +80,8 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   StressReport scratch;
   StressReport& rep = count ? report : scratch;
   Checker check(rep, s.name);
-  World w(s.table, s.physics, s.step);
+  const std::unique_ptr<Engine> w_engine = makeEngine(s.table, s.physics, s.step);
+  Engine& w = *w_engine;
   for (const BallState& b : s.balls) w.addBall(b);
   if (s.shot) w.strike(kCueBall, *s.shot);
   const double r = s.physics.ball_radius;
@@ -141,7 +142,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   return hash.value();
 }
 
-Scene sceneOf(const Scenario& s, Engine engine) {
+Scene sceneOf(const Scenario& s, EngineKind engine) {
   Scene scene;
   scene.table = s.table;
   scene.physics = s.physics;
@@ -160,11 +161,12 @@ std::uint64_t runReference(const Scenario& s, const StressOptions& o, StressRepo
   StressReport scratch;
   StressReport& rep = count ? report : scratch;
   Checker check(rep, "reference engine: " + s.name);
-  const Scene scene = sceneOf(s, Engine::Reference);
+  const Scene scene = sceneOf(s, EngineKind::named("reference"));
   const SimResult r = simulate(scene);
   const double radius = s.physics.ball_radius;
   // The energy the run starts with, the cue strike included: the same strike as Box2D's.
-  World start(s.table, s.physics, s.step);
+  const std::unique_ptr<Engine> start_engine = makeEngine(s.table, s.physics, s.step);
+  Engine& start = *start_engine;
   for (const BallState& b : s.balls) start.addBall(b);
   if (s.shot) start.strike(kCueBall, *s.shot);
   const double e_start = energy(start.balls(), radius, s.physics.ball_mass);

@@ -110,7 +110,7 @@ SimResult runWith(Scene s, const StepParams& step) {
 
 StepParams referenceStep() {
   StepParams s;
-  s.engine = Engine::Reference;
+  s.engine = EngineKind::named("reference");
   return s;
 }
 
@@ -387,7 +387,7 @@ bool WholeShotReport::withinTolerance() const {
 
 WholeShotReport compareWholeShots(const StepParams& box2d_step) {
   StepParams box2d = box2d_step;
-  box2d.engine = Engine::Box2D;
+  box2d.engine = EngineKind::named("box2d");
   WholeShotReport report;
   const std::vector<Scene> scenes = wholeShotScenes();
   for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -417,7 +417,7 @@ WholeShotReport compareWholeShots(const StepParams& box2d_step) {
 
 BreakComparison compareBreak(const StepParams& box2d_step) {
   StepParams box2d = box2d_step;
-  box2d.engine = Engine::Box2D;
+  box2d.engine = EngineKind::named("box2d");
   const Scene brk = breakScene();
   const SimResult got = runWith(brk, box2d);
   const SimResult want = runWith(brk, referenceStep());

@@ -134,7 +134,7 @@ void compareInterleaved(std::ostream& out, int repeats) {
 
 StepParams referenceStep() {
   StepParams s;
-  s.engine = Engine::Reference;
+  s.engine = EngineKind::named("reference");
   return s;
 }
 

@@ -28,7 +28,7 @@ std::vector<int> objectBalls(const std::vector<BallState>& balls) {
 
 Match::Match(const MatchSetup& setup)
     : setup_(setup),
-      world_(std::make_unique<World>(setup.table, setup.physics, setup.step)),
+      world_(makeEngine(setup.table, setup.physics, setup.step)),
       rack_(setup.game, setup.rules, {}, !setup.balls) {
   std::vector<BallState> balls;
   if (setup.balls) {

@@ -8,7 +8,7 @@
 
 #include "game/planner_geometry.hpp"
 #include "game/shot_summary.hpp"
-#include "nineball/world.hpp"
+#include "nineball/engine.hpp"
 
 namespace nineball::ai {
 namespace {
@@ -82,7 +82,8 @@ std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
 }
 
 std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) const {
-  World world(in_.table, in_.physics, step_);
+  const std::unique_ptr<Engine> engine = makeEngine(in_.table, in_.physics, step_);
+  Engine& world = *engine;
   if (c.cue) {
     for (const BallState& b : ballsWithCueAt(*c.cue)) world.addBall(b);
   } else {

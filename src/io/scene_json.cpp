@@ -411,10 +411,10 @@ StepParams parseStep(const json& v) {
   }
   if (const json* p = optional(v, "engine")) {
     const std::string name = text(*p, "step.engine");
-    auto engine = engineFromName(name);
+    auto engine = EngineKind::fromName(name);
     if (!engine) {
       refuse("step.engine",
-             "unknown engine " + quote(name) + " (expected \"box2d\" or \"reference\")");
+             "unknown engine " + quote(name) + " (expected " + oneOf(EngineKind::names()) + ")");
     }
     s.engine = *engine;
   }
@@ -444,15 +444,18 @@ void refuseWhatNothingReads(const json& doc, const Scene& scene) {
                  " cloth carries no spin (only the \"spin\" cloth does)");
     }
   }
-  if (scene.step.engine != Engine::Reference) return;
-  const json& step = doc.at("step");
+  const json* step = optional(doc, "step");
+  if (!step) return;
   for (const char* key :
        {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "baseline"}) {
-    if (optional(step, key)) {
-      refuse(member("step", key),
-             "not used by the reference engine, which has no time step "
-             "and no Box2D (only by the \"box2d\" engine)");
+    if (!optional(*step, key) || scene.step.engine.reads(key)) continue;
+    std::vector<std::string> readers;
+    for (const std::string& name : EngineKind::names()) {
+      if (EngineKind::named(name).reads(key)) readers.push_back(name);
     }
+    refuse(member("step", key), std::string("not used by the ") + scene.step.engine.name() +
+                                    " engine, which " + scene.step.engine.lacks() +
+                                    " (only by the " + oneOf(readers) + " engine)");
   }
 }
 

@@ -48,16 +48,6 @@ const char* contactModelName(ContactModel m) {
   return m == ContactModel::Pairwise ? "pairwise" : "box2d";
 }
 
-const char* engineName(Engine e) {
-  return e == Engine::Box2D ? "box2d" : "reference";
-}
-
-std::optional<Engine> engineFromName(const std::string& name) {
-  if (name == "box2d") return Engine::Box2D;
-  if (name == "reference") return Engine::Reference;
-  return std::nullopt;
-}
-
 std::optional<ClothModel> clothModelFromName(const std::string& name) {
   if (name == "spin") return ClothModel::Spin;
   if (name == "friction") return ClothModel::Friction;

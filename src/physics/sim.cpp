@@ -5,11 +5,10 @@
 #include <set>
 #include <string>
 
+#include "nineball/engine.hpp"
 #include "nineball/limits.hpp"
-#include "nineball/world.hpp"
 #include "physics/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
-#include "reference/reference_engine.hpp"
 
 namespace nineball {
 namespace {
@@ -167,8 +166,8 @@ std::optional<std::string> resultFault(const Scene& scene, const SimResult& resu
 }
 
 SimResult simulate(const Scene& scene) {
-  if (scene.step.engine == Engine::Reference) return reference::simulate(scene);
-  World world(scene.table, scene.physics, scene.step);
+  const std::unique_ptr<Engine> engine = makeEngine(scene.table, scene.physics, scene.step);
+  Engine& world = *engine;
   if (scene.trace) world.logArcs();
   for (const BallState& b : scene.balls) world.addBall(b);
   if (scene.shot) world.strike(kCueBall, *scene.shot);

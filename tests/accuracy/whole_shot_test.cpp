@@ -161,7 +161,7 @@ TEST(WholeShots, ComparisonCatchesAChangedCushion) {
   int out_of_tolerance = 0, with_cushions = 0;
   double worst_mm = 0.0;
   for (Scene s : wholeShotScenes()) {
-    s.step.engine = Engine::Reference;
+    s.step.engine = EngineKind::named("reference");
     const SimResult want = simulate(s);
     if (cushionEventCount(want.events) == 0) continue;
     ++with_cushions;

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 
 namespace nineball::ai {
 namespace {

@@ -371,7 +371,7 @@ TEST(SceneJson, RefusesAParameterNoModelReads) {
   EXPECT_TRUE(refusedAt(scene(R"("step": {"scale": 50, "engine": "reference"})"), "step.scale",
                         "no time step"));
   const Scene r = accepted(scene(R"("step": {"engine": "reference", "max_time": 5})"));
-  EXPECT_EQ(r.step.engine, Engine::Reference);
+  EXPECT_EQ(r.step.engine, EngineKind::named("reference"));
 }
 
 TEST(SceneJson, ReadsANamedTable) {

@@ -10,7 +10,7 @@
 
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 
 namespace nineball::physics {
 namespace {

@@ -74,7 +74,7 @@ TEST(GoldenBreak, PinnedHash) {
 
 TEST(GoldenBreak, ReferenceEnginePinnedHash) {
   nineball::Scene scene = nineball::breakScene(1, 10.0);
-  scene.step.engine = nineball::Engine::Reference;
+  scene.step.engine = nineball::EngineKind::named("reference");
   const nineball::SimResult r = nineball::simulate(scene);
   EXPECT_EQ(hashResult(r), hashResult(nineball::simulate(scene)));
   constexpr std::uint64_t kPinned = 0x34cfc4ba705f21dfULL;

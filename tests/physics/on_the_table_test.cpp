@@ -12,7 +12,7 @@
 namespace nineball {
 namespace {
 
-Scene cueBallScene(Vec2 at, Shot shot, Engine engine) {
+Scene cueBallScene(Vec2 at, Shot shot, EngineKind engine) {
   Scene s;
   s.balls = {BallState::at(kCueBall, at)};
   s.shot = shot;
@@ -30,7 +30,7 @@ TEST(OnTheTable, TheMasseShotThatWentThroughTheRailStaysOnTheTable) {
   Shot shot = Shot::withSpeed(81.50146726146184, 10.422766520861908);
   shot.tip = {-0.23121752481619767, 0.35510525349906796};
   shot.elevation_rad = degToRad(81.90203616341398);
-  for (Engine engine : {Engine::Box2D, Engine::Reference}) {
+  for (EngineKind engine : {EngineKind::named("box2d"), EngineKind::named("reference")}) {
     const Scene s = cueBallScene({0.02895148154814775, -0.12755246621588656}, shot, engine);
     const SimResult r = simulate(s);
     EXPECT_FALSE(resultFault(s, r).has_value()) << *resultFault(s, r);
@@ -63,7 +63,7 @@ TEST(OnTheTable, SpinningBallsStayOnTheTableWithBothEngines) {
         fromAngle(uniform(rng, 0.0, 2.0 * kPi)) * uniform(rng, 0.0, limits::kMaxSpeed));
     spun.w = {uniform(rng, -max_spin, max_spin), uniform(rng, -max_spin, max_spin),
               uniform(rng, -max_spin, max_spin)};
-    for (Engine engine : {Engine::Box2D, Engine::Reference}) {
+    for (EngineKind engine : {EngineKind::named("box2d"), EngineKind::named("reference")}) {
       expectOnTheTable(cueBallScene(at, shot, engine), "shot " + std::to_string(i));
       Scene s;
       s.balls = {spun};
@@ -75,7 +75,8 @@ TEST(OnTheTable, SpinningBallsStayOnTheTableWithBothEngines) {
 
 // A result with a ball outside the cushions is named as a defect, not printed.
 TEST(OnTheTable, AResultWithABallOffTheTableIsAFault) {
-  const Scene s = cueBallScene({0.0, 0.0}, Shot::withSpeed(0.0, 1.0), Engine::Reference);
+  const Scene s =
+      cueBallScene({0.0, 0.0}, Shot::withSpeed(0.0, 1.0), EngineKind::named("reference"));
   SimResult r = simulate(s);
   EXPECT_FALSE(resultFault(s, r).has_value());
   r.balls[0].pos = {-38.4, 25.9};

@@ -19,7 +19,7 @@
 #include "nineball/sim.hpp"
 #include "nineball/table.hpp"
 #include "nineball/vec2.hpp"
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 
 namespace nineball::physics_test {
 

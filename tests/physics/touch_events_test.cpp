@@ -20,7 +20,7 @@ std::vector<std::pair<EventType, int>> eventsOf(const SimResult& r) {
   return out;
 }
 
-SimResult run(Scene s, Engine engine) {
+SimResult run(Scene s, EngineKind engine) {
   s.step.engine = engine;
   return simulate(s);
 }
@@ -33,11 +33,11 @@ TEST(TouchEvents, ABallRollingAlongARailPastASidePocketTouchesNoJaw) {
   ball.w = {0.0, 1.5 / r, 0.0};  // rolling
   Scene s;
   s.balls = {ball};
-  for (Engine engine : {Engine::Box2D, Engine::Reference}) {
+  for (EngineKind engine : {EngineKind::named("box2d"), EngineKind::named("reference")}) {
     const SimResult result = run(s, engine);
     for (const Event& e : result.events) {
       EXPECT_NE(e.type, EventType::Cushion)
-          << (engine == Engine::Box2D ? "box2d" : "reference") << " at t = " << e.t;
+          << (engine == EngineKind::named("box2d") ? "box2d" : "reference") << " at t = " << e.t;
     }
   }
 }
@@ -58,7 +58,8 @@ TEST(TouchEvents, BothEnginesGiveTheSameEventsAtCushionRestitutionZero) {
     if (length(a - b) < 0.06) continue;
     s.balls = {BallState::at(kCueBall, a), BallState::at(1, b)};
     s.shot = Shot::withSpeed(uniform(rng, -180.0, 180.0), uniform(rng, 0.5, 6.0));
-    EXPECT_EQ(eventsOf(run(s, Engine::Box2D)), eventsOf(run(s, Engine::Reference)))
+    EXPECT_EQ(eventsOf(run(s, EngineKind::named("box2d"))),
+              eventsOf(run(s, EngineKind::named("reference"))))
         << "shot " << i << ", cushion restitution " << s.physics.cushion_restitution;
     ++compared;
   }

@@ -22,13 +22,13 @@ constexpr double kBox2DTolerance = 1e-6;
 // The two engines' traces of a shot that is not chaotic, sample by sample.
 constexpr double kEnginesAgree = 1e-5;
 
-constexpr Engine kEngines[] = {Engine::Box2D, Engine::Reference};
+const EngineKind kEngines[] = {EngineKind::named("box2d"), EngineKind::named("reference")};
 
-double tolerance(Engine e) {
-  return e == Engine::Reference ? kReferenceTolerance : kBox2DTolerance;
+double tolerance(EngineKind e) {
+  return e == EngineKind::named("reference") ? kReferenceTolerance : kBox2DTolerance;
 }
 
-Scene stunShot(Engine engine, double v0) {
+Scene stunShot(EngineKind engine, double v0) {
   Scene s;
   s.step.engine = engine;
   s.balls = {BallState::at(0, {-0.9, 0.0})};
@@ -40,7 +40,7 @@ Scene stunShot(Engine engine, double v0) {
 
 // A follow shot into one ball, which then runs into cushions: not chaotic, so that the
 // engines must agree along the whole path.
-Scene followShot(Engine engine, TraceRequest trace) {
+Scene followShot(EngineKind engine, TraceRequest trace) {
   Scene s;
   s.step.engine = engine;
   s.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.0, 0.03})};
@@ -51,7 +51,7 @@ Scene followShot(Engine engine, TraceRequest trace) {
   return s;
 }
 
-Scene breakShot(Engine engine, TraceRequest trace) {
+Scene breakShot(EngineKind engine, TraceRequest trace) {
   Scene s = breakScene(1, 10.0);
   s.step.engine = engine;
   s.trace = trace;
@@ -71,7 +71,7 @@ TEST(Trace, StunShotSlidesThenRollsAsThePapersClosedFormSays) {
   // t1 = 2 v0 / (7 mu_s g), then rolls at 5/7 v0 losing mu_r g per second.
   const PhysicsParams p;
   const double g = p.gravity, mus = p.sliding_friction, mur = p.rolling_friction;
-  for (Engine engine : kEngines) {
+  for (EngineKind engine : kEngines) {
     for (double v0 : {1.0, 2.5}) {
       const Scene scene = stunShot(engine, v0);
       const SimResult r = simulate(scene);
@@ -81,7 +81,7 @@ TEST(Trace, StunShotSlidesThenRollsAsThePapersClosedFormSays) {
       const double t1 = 2.0 * v0 / (7.0 * mus * g);
       const double x1 = -0.9 + v0 * t1 - 0.5 * mus * g * t1 * t1;
       // The grid (201 instants over 1 s at 200 Hz) and the instant the slide ends.
-      ASSERT_EQ(b.size(), 202u) << engineName(engine);
+      ASSERT_EQ(b.size(), 202u) << engine.name();
       EXPECT_TRUE(std::any_of(b.t.begin(), b.t.end(), [&](double t) {
         return std::abs(t - t1) < 1e-12;
       })) << "the slide's end is sampled";
@@ -101,9 +101,9 @@ TEST(Trace, StunShotSlidesThenRollsAsThePapersClosedFormSays) {
         const double wy = sliding ? 2.5 * mus * g * t / p.ball_radius : v / p.ball_radius;
         EXPECT_NEAR(b.w[i].y, wy, 1e-9 * wy + 1e-9) << t;
       }
-      EXPECT_LT(worst_speed, 1e-9) << engineName(engine);
-      EXPECT_LT(worst_x, tolerance(engine)) << engineName(engine);
-      std::cout << "[ measured ] stun shot trace, " << engineName(engine) << ", v0 " << v0
+      EXPECT_LT(worst_speed, 1e-9) << engine.name();
+      EXPECT_LT(worst_x, tolerance(engine)) << engine.name();
+      std::cout << "[ measured ] stun shot trace, " << engine.name() << ", v0 " << v0
                 << ": worst speed error " << worst_speed << " m/s, worst position error " << worst_x
                 << " m\n";
     }
@@ -114,7 +114,7 @@ TEST(Trace, EverySampleLiesOnTheArcFromTheSampleBefore) {
   // From each sample's state the closed form (beginArc, stateAt evaluated here) must reach the
   // next sample's position: every phase change and event instant is itself a sample, so no
   // pair of samples straddles one (positions are continuous across contacts).
-  for (Engine engine : kEngines) {
+  for (EngineKind engine : kEngines) {
     const SimResult r = simulate(breakShot(engine, {100.0, false}));
     ASSERT_TRUE(r.trace);
     const PhysicsParams p;
@@ -131,15 +131,15 @@ TEST(Trace, EverySampleLiesOnTheArcFromTheSampleBefore) {
       }
     }
     EXPECT_GT(pairs, 1000u);
-    EXPECT_LT(worst, tolerance(engine)) << engineName(engine);
-    std::cout << "[ measured ] break trace, " << engineName(engine) << ": " << pairs
+    EXPECT_LT(worst, tolerance(engine)) << engine.name();
+    std::cout << "[ measured ] break trace, " << engine.name() << ": " << pairs
               << " sample pairs, worst distance off the arc " << worst << " m\n";
   }
 }
 
 TEST(Trace, BothEnginesTraceTheSamePath) {
-  const SimResult box2d = simulate(followShot(Engine::Box2D, {200.0, false}));
-  const SimResult exact = simulate(followShot(Engine::Reference, {200.0, false}));
+  const SimResult box2d = simulate(followShot(EngineKind::named("box2d"), {200.0, false}));
+  const SimResult exact = simulate(followShot(EngineKind::named("reference"), {200.0, false}));
   ASSERT_TRUE(box2d.trace && exact.trace);
   ASSERT_EQ(box2d.trace->balls.size(), 2u);
   double worst = 0.0;
@@ -164,7 +164,7 @@ TEST(Trace, BothEnginesTraceTheSamePath) {
 }
 
 TEST(Trace, EventsOnlyGivesOneSamplePerEventPerBall) {
-  for (Engine engine : kEngines) {
+  for (EngineKind engine : kEngines) {
     const SimResult r = simulate(breakShot(engine, {0.0, true}));
     ASSERT_TRUE(r.trace);
     const std::set<double> instants = eventInstants(r);
@@ -195,7 +195,7 @@ TEST(Trace, EventsOnlyGivesOneSamplePerEventPerBall) {
 }
 
 TEST(Trace, HzTraceHoldsTheGridTheEventsAndTheEnd) {
-  for (Engine engine : kEngines) {
+  for (EngineKind engine : kEngines) {
     const SimResult r = simulate(followShot(engine, {50.0, false}));
     ASSERT_TRUE(r.trace);
     const std::vector<double>& t = r.trace->balls[0].t;
@@ -219,7 +219,7 @@ TEST(Trace, HzTraceHoldsTheGridTheEventsAndTheEnd) {
 
 TEST(Trace, ALongRunKeepsItsEarliestSamplesWithinTheBound) {
   // Two balls at 10 kHz for 60 s would need 1,200,000 samples: the earliest 1,000,000 stay.
-  Scene s = followShot(Engine::Reference, {limits::kMaxTraceHz, false});
+  Scene s = followShot(EngineKind::named("reference"), {limits::kMaxTraceHz, false});
   s.physics.rolling_friction = 0.001;
   s.until = 60.0;
   const SimResult r = simulate(s);
@@ -233,7 +233,7 @@ TEST(Trace, ALongRunKeepsItsEarliestSamplesWithinTheBound) {
 }
 
 TEST(Trace, NoTraceUnlessAsked) {
-  Scene s = stunShot(Engine::Box2D, 1.0);
+  Scene s = stunShot(EngineKind::named("box2d"), 1.0);
   s.trace.reset();
   EXPECT_FALSE(simulate(s).trace);
 }

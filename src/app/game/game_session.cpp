@@ -217,7 +217,7 @@ bool GameSession::placeCue(Vec2 pos) {
 }
 
 AimGuide GameSession::aimGuide() const {
-  const World& w = match_->world();
+  const Engine& w = match_->world();
   return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(),
                          heading_);
 }
@@ -368,7 +368,7 @@ std::optional<rules::Call> GameSession::call() const {
 
 bool GameSession::clickCall(Vec2 pos) {
   if (!callRequired()) return false;
-  const World& w = match_->world();
+  const Engine& w = match_->world();
   const double r = w.physics().ball_radius;
   if (const auto pocket = pocketNear(w.table(), pos, 3.0 * r)) {
     call_pocket_ = pocket;

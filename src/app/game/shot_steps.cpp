@@ -10,7 +10,7 @@ void ShotSteps::begin(const Match& match) {
 
 bool ShotSteps::take(Match& match, int steps, double max_time,
                      std::vector<audio::Impact>& impacts) {
-  const World& world = match.world();
+  const Engine& world = match.world();
   for (int i = 0; i < steps; ++i) {
     previous = current;
     // The match's own steps: a rack played in the window ends as the same rack played headless.

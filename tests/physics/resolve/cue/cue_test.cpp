@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 #include "physics/motion.hpp"
 
 namespace nineball::physics {

@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "nineball/params.hpp"
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 
 namespace nineball::physics {
 namespace {

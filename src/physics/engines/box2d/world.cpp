@@ -1,4 +1,4 @@
-#include "nineball/world.hpp"
+#include "physics/engines/box2d/world.hpp"
 
 #include <box2d/box2d.h>
 
@@ -15,6 +15,7 @@
 #include "physics/ball_collision.hpp"
 #include "physics/box2d_clock.hpp"
 #include "physics/contact_recorder.hpp"
+#include "physics/engines/registry.hpp"
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 #include "physics/resolve/cue/cue.hpp"
@@ -627,5 +628,20 @@ const PhysicsParams& World::physics() const {
 const StepParams& World::stepParams() const {
   return impl_->sp;
 }
+
+namespace physics {
+
+EngineDef box2dEngine() {
+  EngineDef e;
+  e.name = "box2d";
+  e.make = [](const TableDef& table, const PhysicsParams& physics,
+              const StepParams& step) -> std::unique_ptr<Engine> {
+    return std::make_unique<World>(table, physics, step);
+  };
+  e.reads = {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "baseline"};
+  return e;
+}
+
+}  // namespace physics
 
 }  // namespace nineball
