@@ -54,6 +54,10 @@ int cushionEventCount(const std::vector<Event>& events);
 /// per process and the same on every run. Their step settings are the defaults (Box2D).
 std::vector<Scene> wholeShotScenes();
 
+/// True when `scene` is not chaotic in the reference engine (see kStableHeadingRad): the test
+/// a shot passes to be kept in the suite, for suites of other settings (another model).
+bool isStableShot(const Scene& scene);
+
 /// One run against the reference run of the same scene.
 struct ShotComparison {
   /// The events in the same order, each the same (type, balls, pocket); rest and miscue

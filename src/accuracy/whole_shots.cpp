@@ -286,6 +286,10 @@ int cushionEventCount(const std::vector<Event>& events) {
   return static_cast<int>(countOf(events, EventType::Cushion));
 }
 
+bool isStableShot(const Scene& scene) {
+  return stable(scene, runWith(scene, referenceStep()));
+}
+
 std::vector<Scene> wholeShotScenes() {
   static const std::vector<Scene> scenes = generateScenes();
   return scenes;
