@@ -80,16 +80,19 @@ std::string rackWithFouls() {
 class XvfbGame {
  public:
   XvfbGame(const std::string& dir, const std::string& args) {
-    // Another test's Xvfb may take the display between the look and the start, and a loaded
-    // machine may take seconds to start one: a server that exits is tried on the next display.
-    display_ = 400 + getpid() % 500;
-    for (int tries = 0; tries < 20; ++tries, ++display_) {
-      if (access(("/tmp/.X" + std::to_string(display_) + "-lock").c_str(), F_OK) == 0) continue;
-      xvfb_ = spawn("exec Xvfb :" + std::to_string(display_) +
-                    " -screen 0 1280x800x24 -nolisten tcp 2>/dev/null");
-      if (serverUp()) break;
-      kill(xvfb_, SIGTERM);
-      waitpid(xvfb_, nullptr, 0);
+    // Xvfb picks a free display itself and says which (-displayfd): the other Xvfb tests,
+    // run at the same time, choose theirs by number, and a number chosen here could meet one.
+    const std::string said = dir + "/display";
+    xvfb_ = spawn("exec Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>'" + said +
+                  "' 2>/dev/null");
+    for (int i = 0; i < 600 && display_ < 0; ++i) {
+      const std::string text = slurp(said);
+      if (!text.empty() && text.back() == '\n') display_ = std::stoi(text);
+      if (display_ < 0) pause(0.1);
+    }
+    for (int i = 0;
+         i < 100 && display_ >= 0 && std::system(x("xdpyinfo >/dev/null 2>&1").c_str()) != 0; ++i) {
+      pause(0.1);
     }
     // Under LeakSanitizer the software GL driver leaks a little from code it cannot name:
     // such leaks do not fail the run (as the other Xvfb tests).
@@ -135,17 +138,7 @@ class XvfbGame {
     return pid;
   }
 
-  // Waits up to 60 s for the server to answer; false as soon as it has exited.
-  bool serverUp() {
-    for (int i = 0; i < 600; ++i) {
-      if (std::system(x("xdpyinfo >/dev/null 2>&1").c_str()) == 0) return true;
-      if (waitpid(xvfb_, nullptr, WNOHANG) == xvfb_) return false;
-      pause(0.1);
-    }
-    return false;
-  }
-
-  int display_ = 0;
+  int display_ = -1;
   pid_t xvfb_ = -1;
   pid_t game_ = -1;
   bool exited_ = false;
