@@ -4,6 +4,7 @@
 
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"
+#include "physics/resolve/cushion/stronge_compliant/stronge_compliant.hpp"
 
 namespace nineball {
 namespace physics {
@@ -12,6 +13,7 @@ const std::vector<CushionModelDef>& cushionModels() {
   static const std::vector<CushionModelDef> models{
       simpleCushion(),
       mathavan2010Cushion(),
+      strongeCompliantCushion(),
   };
   return models;
 }
