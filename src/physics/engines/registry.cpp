@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "common/named.hpp"
 #include "physics/engines/box2d/world.hpp"
 #include "physics/engines/reference/reference_engine.hpp"
 
@@ -24,10 +25,7 @@ std::unique_ptr<Engine> makeEngine(const TableDef& table, const PhysicsParams& p
 }
 
 std::optional<EngineKind> EngineKind::fromName(const std::string& name) {
-  const auto& all = physics::engines();
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (name == all[i].name) return EngineKind(i);
-  }
+  if (const auto i = placeNamed(physics::engines(), name)) return EngineKind(*i);
   return std::nullopt;
 }
 
@@ -37,9 +35,7 @@ EngineKind EngineKind::named(const std::string& name) {
 }
 
 std::vector<std::string> EngineKind::names() {
-  std::vector<std::string> out;
-  for (const auto& e : physics::engines()) out.emplace_back(e.name);
-  return out;
+  return namesOf(physics::engines());
 }
 
 const char* EngineKind::name() const {
@@ -51,10 +47,7 @@ const char* EngineKind::lacks() const {
 }
 
 bool EngineKind::reads(const std::string& field) const {
-  for (const std::string& r : physics::engines()[index_].reads) {
-    if (r == field) return true;
-  }
-  return false;
+  return holds(physics::engines()[index_].reads, field);
 }
 
 }  // namespace nineball

@@ -1,6 +1,8 @@
 #include "physics/engines/reference/reference_engine.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,11 +13,245 @@
 #include "physics/motion.hpp"
 #include "physics/next_event.hpp"
 #include "physics/resolve/cue/cue.hpp"
+#include "physics/resolve/resolver.hpp"
 
 namespace nineball::reference {
+namespace {
 
 using physics::Kinematics;
 using physics::NextEvent;
+
+/// The reference engine ("reference"): the exact event-based solver, with no Box2D and no time
+/// step. Between events every ball follows the closed form of its phase; each event (a
+/// contact, a phase ending, a pocket) is the root of a polynomial in time, found to full
+/// precision, and resolved by the same resolver as the Box2D engine. It is the yardstick the
+/// Box2D engine is measured against. Its steps are only where a caller asks it to stop (a
+/// frame of the window); a run to rest takes none.
+class ReferenceEngine final : public Engine, private physics::EngineBalls {
+ public:
+  ReferenceEngine(const TableDef& table, const PhysicsParams& physics, const StepParams& step);
+
+  void addBall(const BallState& b) override {
+    Ball ball;
+    ball.state = b;
+    ball.state.mass = b.mass.value_or(p_.ball_mass);
+    ball.on_table = !b.pocket;
+    ball.arc = physics::beginArc(t_, {b.pos, b.vel, b.w}, p_);
+    balls_.push_back(ball);
+    changed();
+    if (!logging_) return;
+    log_.addBall(b.id);
+    if (b.pocket) {
+      log_.pocket(balls_.size() - 1, t_, b.pos);
+    } else {
+      logArc(balls_.back());
+    }
+  }
+
+  bool strike(int ball_id, const Shot& shot) override {
+    Ball& b = balls_[indexOf(ball_id)];
+    if (!b.on_table)
+      throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
+    if (length(shot.tip) > p_.miscue_limit) {
+      Event e;
+      e.type = EventType::Miscue;
+      e.t = t_;
+      e.a = ball_id;
+      events_.push_back(e);
+      return false;
+    }
+    const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
+    // At the arc's own start its centre is the one it was given, to the bit.
+    const Vec2 at = b.arc.t0 == t_ ? b.arc.start.p : now(b).p;
+    b.arc = physics::beginArc(t_, {at, s.v, s.w}, p_);
+    logArc(b);
+    changed();
+    return true;
+  }
+
+  void placeBall(int ball_id, Vec2 pos) override {
+    Ball& b = balls_[indexOf(ball_id)];
+    b.on_table = true;
+    b.state.pocket.reset();
+    b.state.pos = pos;
+    restart(b, {pos, {}, {}});
+    changed();
+  }
+
+  void step() override {
+    const double end = boundary(++steps_);
+    if (!exhausted_) run(end, false, end);
+    t_ = end;
+  }
+
+  void runFor(double seconds) override {
+    const double end = t_ + seconds;
+    run(end, false, end);
+    if (!exhausted_) t_ = end;
+  }
+
+  void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {}) override;
+  bool stepTowardRest(double deadline) override {
+    if (!runOver(deadline)) run(std::min(boundary(++steps_), deadline), true, deadline);
+    return runOver(deadline);
+  }
+
+  void logArcs() override { logging_ = true; }
+
+  const physics::ArcLog* arcLog() const override { return logging_ ? &log_ : nullptr; }
+
+  bool atRest() const override { return settled(); }
+  bool exhausted() const override { return exhausted_; }
+  const std::string& budgetSpent() const override { return budget_spent_; }
+  double time() const override { return t_; }
+  long steps() const override { return steps_; }
+  std::vector<BallState> balls() const override {
+    std::vector<BallState> out;
+    out.reserve(balls_.size());
+    for (const Ball& b : balls_) {
+      BallState s = b.state;
+      if (b.on_table) {
+        const Kinematics k = now(b);
+        s.pos = k.p;
+        s.vel = k.v;
+        s.w = k.w;
+      } else {
+        s.vel = {};
+        s.w = {};
+      }
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  const std::vector<Event>& events() const override { return events_; }
+  void clearEvents() override { events_.clear(); }
+  const TableGeometry& table() const override { return table_; }
+  const PhysicsParams& physics() const override { return p_; }
+  const StepParams& stepParams() const override { return sp_; }
+
+ private:
+  struct Ball {
+    BallState state;  // id, mass, and where a pocketed ball dropped
+    physics::Arc arc;
+    bool on_table = true;
+  };
+
+  std::size_t indexOf(int id) const {
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      if (balls_[i].state.id == id) return i;
+    }
+    throw std::invalid_argument("no ball with id " + std::to_string(id));
+  }
+
+  bool settled() const {
+    for (const Ball& b : balls_) {
+      if (b.on_table && b.arc.translating()) return false;
+    }
+    return true;
+  }
+
+  // Runs until `end`, or until every ball has stopped when `to_rest`. Each event is searched
+  // for from the last change up to `horizon`, and kept while it lies beyond `end`: a run cut
+  // into steps finds the same events, to the bit, as one run to the same horizon.
+  void run(double end, bool to_rest, double horizon) {
+    bool was_settled = settled();
+    while (t_ < end && !(to_rest && settled()) && !exhausted_) {
+      if (!pending_ || pending_horizon_ != horizon) {
+        movers_.clear();
+        for (const Ball& b : balls_) movers_.push_back({b.on_table ? &b.arc : nullptr, true});
+        pending_ = search_.next(movers_, from_, horizon);
+        pending_horizon_ = horizon;
+      }
+      const NextEvent e = *pending_;
+      if (e.kind == NextEvent::Kind::None || e.t > end) {
+        // Kept: the same search would find the same event from the next step.
+        t_ = std::min(e.t, end);
+        break;
+      }
+      t_ = from_ = e.t;
+      pending_.reset();
+      resolver_.resolve(e, *this);
+      if (++resolved_ >= limits::kMaxEvents) {
+        exhausted_ = true;
+        budget_spent_ = std::to_string(limits::kMaxEvents) + " contacts";
+        logger("physics")->info("t={:.6f}: work budget spent ({} events); stopped", t_, resolved_);
+        break;
+      }
+      if (!was_settled && settled()) {
+        Event rest;
+        rest.type = EventType::AllAtRest;
+        rest.t = t_;
+        events_.push_back(rest);
+      }
+      was_settled = settled();
+    }
+  }
+
+  // A ball was added, struck or placed: the event kept is void, and the next search starts now.
+  void changed() {
+    pending_.reset();
+    from_ = t_;
+  }
+
+  double boundary(long n) const { return static_cast<double>(n) / sp_.hz; }
+
+  bool runOver(double deadline) const { return settled() || t_ >= deadline || exhausted_; }
+
+  physics::Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, t_, p_); }
+
+  void restart(Ball& b, const physics::Kinematics& k) {
+    b.arc = physics::beginArc(t_, k, p_);
+    logArc(b);
+  }
+
+  // Only balls the log knows (a trace was asked for) are logged.
+  void logArc(const Ball& b) {
+    const auto i = static_cast<std::size_t>(&b - balls_.data());
+    if (logging_ && i < log_.ids().size()) log_.record(i, b.arc);
+  }
+
+  // --- the balls as the resolver sees them ---
+  std::size_t count() const override { return balls_.size(); }
+  bool onTable(std::size_t i) const override { return balls_[i].on_table; }
+  int id(std::size_t i) const override { return balls_[i].state.id; }
+  double mass(std::size_t i) const override { return *balls_[i].state.mass; }
+  Vec2 centre(std::size_t i) const override { return now(balls_[i]).p; }
+  physics::Kinematics now(std::size_t i) const override { return now(balls_[i]); }
+  void restart(std::size_t i, const physics::Kinematics& k) override { restart(balls_[i], k); }
+
+  void nextPhase(std::size_t i) override {
+    balls_[i].arc = physics::nextArc(balls_[i].arc, p_);
+    logArc(balls_[i]);
+  }
+
+  void drop(std::size_t i, PocketId pocket) override {
+    Ball& a = balls_[i];
+    a.state.pos = now(a).p;
+    a.state.pocket = pocket;
+    a.on_table = false;
+    if (i < log_.ids().size()) log_.pocket(i, t_, a.state.pos);
+  }
+
+  PhysicsParams p_;
+  StepParams sp_;
+  TableGeometry table_;
+  physics::EventSearch search_;
+  std::vector<Ball> balls_;
+  std::vector<Event> events_;
+  physics::Resolver resolver_;
+  std::vector<physics::Mover> movers_;         // kept from event to event: no allocation per event
+  std::optional<physics::NextEvent> pending_;  // found, not yet reached
+  double pending_horizon_ = 0.0;
+  double from_ = 0.0;    // the time of the last change, where the next search starts
+  physics::ArcLog log_;  // filled only once logArcs() has been called
+  bool logging_ = false;
+  long resolved_ = 0;
+  long steps_ = 0;
+  bool exhausted_ = false;
+  std::string budget_spent_;
+  double t_ = 0.0;
+};
 
 ReferenceEngine::ReferenceEngine(const TableDef& table, const PhysicsParams& physics,
                                  const StepParams& step)
@@ -24,130 +260,6 @@ ReferenceEngine::ReferenceEngine(const TableDef& table, const PhysicsParams& phy
       table_(buildTable(table, p_.ball_radius)),
       search_(table_, p_),
       resolver_(p_, table_, search_.cushions, events_) {}
-
-void ReferenceEngine::addBall(const BallState& b) {
-  Ball ball;
-  ball.state = b;
-  ball.state.mass = b.mass.value_or(p_.ball_mass);
-  ball.on_table = !b.pocket;
-  ball.arc = physics::beginArc(t_, {b.pos, b.vel, b.w}, p_);
-  balls_.push_back(ball);
-  changed();
-  if (!logging_) return;
-  log_.addBall(b.id);
-  if (b.pocket) {
-    log_.pocket(balls_.size() - 1, t_, b.pos);
-  } else {
-    logArc(balls_.back());
-  }
-}
-
-std::size_t ReferenceEngine::indexOf(int id) const {
-  for (std::size_t i = 0; i < balls_.size(); ++i) {
-    if (balls_[i].state.id == id) return i;
-  }
-  throw std::invalid_argument("no ball with id " + std::to_string(id));
-}
-
-bool ReferenceEngine::strike(int ball_id, const Shot& shot) {
-  Ball& b = balls_[indexOf(ball_id)];
-  if (!b.on_table) throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
-  if (length(shot.tip) > p_.miscue_limit) {
-    Event e;
-    e.type = EventType::Miscue;
-    e.t = t_;
-    e.a = ball_id;
-    events_.push_back(e);
-    return false;
-  }
-  const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
-  // At the arc's own start its centre is the one it was given, to the bit.
-  const Vec2 at = b.arc.t0 == t_ ? b.arc.start.p : now(b).p;
-  b.arc = physics::beginArc(t_, {at, s.v, s.w}, p_);
-  logArc(b);
-  changed();
-  return true;
-}
-
-void ReferenceEngine::placeBall(int ball_id, Vec2 pos) {
-  Ball& b = balls_[indexOf(ball_id)];
-  b.on_table = true;
-  b.state.pocket.reset();
-  b.state.pos = pos;
-  restart(b, {pos, {}, {}});
-  changed();
-}
-
-bool ReferenceEngine::settled() const {
-  for (const Ball& b : balls_) {
-    if (b.on_table && b.arc.translating()) return false;
-  }
-  return true;
-}
-
-void ReferenceEngine::run(double end, bool to_rest, double horizon) {
-  bool was_settled = settled();
-  while (t_ < end && !(to_rest && settled()) && !exhausted_) {
-    if (!pending_ || pending_horizon_ != horizon) {
-      movers_.clear();
-      for (const Ball& b : balls_) movers_.push_back({b.on_table ? &b.arc : nullptr, true});
-      pending_ = search_.next(movers_, from_, horizon);
-      pending_horizon_ = horizon;
-    }
-    const NextEvent e = *pending_;
-    if (e.kind == NextEvent::Kind::None || e.t > end) {
-      // Kept: the same search would find the same event from the next step.
-      t_ = std::min(e.t, end);
-      break;
-    }
-    t_ = from_ = e.t;
-    pending_.reset();
-    resolver_.resolve(e, *this);
-    if (++resolved_ >= limits::kMaxEvents) {
-      exhausted_ = true;
-      budget_spent_ = std::to_string(limits::kMaxEvents) + " contacts";
-      logger("physics")->info("t={:.6f}: work budget spent ({} events); stopped", t_, resolved_);
-      break;
-    }
-    if (!was_settled && settled()) {
-      Event rest;
-      rest.type = EventType::AllAtRest;
-      rest.t = t_;
-      events_.push_back(rest);
-    }
-    was_settled = settled();
-  }
-}
-
-void ReferenceEngine::changed() {
-  pending_.reset();
-  from_ = t_;
-}
-
-double ReferenceEngine::boundary(long n) const {
-  return static_cast<double>(n) / sp_.hz;
-}
-
-bool ReferenceEngine::runOver(double deadline) const {
-  return settled() || t_ >= deadline || exhausted_;
-}
-
-void ReferenceEngine::step() {
-  const double end = boundary(++steps_);
-  if (!exhausted_) run(end, false, end);
-  t_ = end;
-}
-
-void ReferenceEngine::runFor(double seconds) {
-  const double end = t_ + seconds;
-  run(end, false, end);
-  if (!exhausted_) t_ = end;
-}
-
-bool ReferenceEngine::stepTowardRest(double deadline) {
-  if (!runOver(deadline)) run(std::min(boundary(++steps_), deadline), true, deadline);
-  return runOver(deadline);
-}
 
 void ReferenceEngine::runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop) {
   const double deadline = t_ + sp_.max_time;
@@ -166,47 +278,7 @@ void ReferenceEngine::runUntilRest(const std::function<bool(const std::vector<Ev
   }
 }
 
-void ReferenceEngine::logArcs() {
-  logging_ = true;
-}
-
-const physics::ArcLog* ReferenceEngine::arcLog() const {
-  return logging_ ? &log_ : nullptr;
-}
-
-std::vector<BallState> ReferenceEngine::balls() const {
-  std::vector<BallState> out;
-  out.reserve(balls_.size());
-  for (const Ball& b : balls_) {
-    BallState s = b.state;
-    if (b.on_table) {
-      const Kinematics k = now(b);
-      s.pos = k.p;
-      s.vel = k.v;
-      s.w = k.w;
-    } else {
-      s.vel = {};
-      s.w = {};
-    }
-    out.push_back(s);
-  }
-  return out;
-}
-
-Kinematics ReferenceEngine::now(const Ball& b) const {
-  return physics::stateAt(b.arc, t_, p_);
-}
-
-void ReferenceEngine::restart(Ball& b, const Kinematics& k) {
-  b.arc = physics::beginArc(t_, k, p_);
-  logArc(b);
-}
-
-// Only balls the log knows (a trace was asked for) are logged.
-void ReferenceEngine::logArc(const Ball& b) {
-  const auto i = static_cast<std::size_t>(&b - balls_.data());
-  if (logging_ && i < log_.ids().size()) log_.record(i, b.arc);
-}
+}  // namespace
 
 physics::EngineDef referenceEngine() {
   physics::EngineDef e;

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "common/named.hpp"
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"
 #include "physics/resolve/cushion/stronge_compliant/stronge_compliant.hpp"
@@ -25,10 +26,7 @@ const CushionModelDef& cushionModel(CushionModel m) {
 }  // namespace physics
 
 std::optional<CushionModel> CushionModel::fromName(const std::string& name) {
-  const auto& models = physics::cushionModels();
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    if (name == models[i].name) return CushionModel(i);
-  }
+  if (const auto i = placeNamed(physics::cushionModels(), name)) return CushionModel(*i);
   return std::nullopt;
 }
 
@@ -38,16 +36,11 @@ CushionModel CushionModel::named(const std::string& name) {
 }
 
 std::vector<std::string> CushionModel::names() {
-  std::vector<std::string> out;
-  for (const auto& m : physics::cushionModels()) out.emplace_back(m.name);
-  return out;
+  return namesOf(physics::cushionModels());
 }
 
 bool CushionModel::reads(const std::string& parameter) const {
-  for (const std::string& r : physics::cushionModel(*this).reads) {
-    if (r == parameter) return true;
-  }
-  return false;
+  return holds(physics::cushionModel(*this).reads, parameter);
 }
 
 const char* CushionModel::name() const {
