@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "game/planner_evaluate.hpp"
+#include "ai/planner_evaluate.hpp"
 #include "nineball/engine.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/random.hpp"

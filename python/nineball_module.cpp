@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "game/parallel_map.hpp"
+#include "ai/parallel_map.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
 #include "nineball/sim.hpp"

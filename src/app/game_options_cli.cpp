@@ -1,11 +1,12 @@
 // The game window's options, parsed by nineball (which starts the window in nineball-game)
 // and by nineball-game alike, so that both refuse the same things in the same words.
+#include "app/game_options_cli.hpp"
+
 #include <cctype>
 #include <charconv>
 
 #include "app/cli_checks.hpp"
-#include "app/game/opponent.hpp"
-#include "app/game_command.hpp"
+#include "app/opponent.hpp"
 
 namespace nineball::app {
 namespace {

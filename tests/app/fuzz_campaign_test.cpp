@@ -18,12 +18,12 @@
 #include <vector>
 
 #include "app/cli_runner.hpp"
-#include "app/game/game_session.hpp"
-#include "app/game/rack_save.hpp"
-#include "app/game/settings.hpp"
 #include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/table.hpp"
+#include "window/game_session.hpp"
+#include "window/rack_save.hpp"
+#include "window/settings.hpp"
 
 namespace nineball::testing {
 namespace {
@@ -322,11 +322,12 @@ TEST_F(SavedFiles, AnySavedFieldLoadsSavesAndResumesWithoutEndingTheProgram) {
                             {{"names", {randomText(rng), randomText(rng)}},
                              {"game", i % 2 ? json("ten-ball") : extreme(rng)},
                              {"rules", i % 3 ? json("paper") : extreme(rng)}}}};
-    std::ofstream(settingsPath()) << settings.dump(-1, ' ', false, json::error_handler_t::ignore);
-    Settings s;
-    ASSERT_NO_THROW(s = loadSettings(settingsPath())) << i;
+    std::ofstream(window::settingsPath())
+        << settings.dump(-1, ' ', false, json::error_handler_t::ignore);
+    window::Settings s;
+    ASSERT_NO_THROW(s = window::loadSettings(window::settingsPath())) << i;
     std::string why;
-    ASSERT_NO_THROW(saveSettings(s, settingsPath(), why)) << i;
+    ASSERT_NO_THROW(window::saveSettings(s, window::settingsPath(), why)) << i;
 
     json turn = {{"kind", i % 5 ? "shot" : "decision"},
                  {"heading_rad", extreme(rng)},
@@ -344,22 +345,22 @@ TEST_F(SavedFiles, AnySavedFieldLoadsSavesAndResumesWithoutEndingTheProgram) {
                        {"names", {randomText(rng), randomText(rng)}},
                        {"opponent", "human"},
                        {"turns", {turn}}};
-    const std::string path = rackSavePath();
+    const std::string path = window::rackSavePath();
     std::ofstream(path) << rack.dump(-1, ' ', false, json::error_handler_t::ignore);
-    std::optional<SavedRack> loaded;
-    ASSERT_NO_THROW(loaded = loadRack(path)) << i;
+    std::optional<window::SavedRack> loaded;
+    ASSERT_NO_THROW(loaded = window::loadRack(path)) << i;
     if (!loaded) {
       EXPECT_FALSE(std::filesystem::exists(path)) << "a refused rack is deleted";
       continue;
     }
-    ASSERT_NO_THROW(rackToJson(*loaded).dump()) << i;
+    ASSERT_NO_THROW(window::rackToJson(*loaded).dump()) << i;
     MatchSetup setup;
     setup.game = loaded->game;
     setup.rules = loaded->rules;
     setup.seed = loaded->seed;
     try {
-      GameSession session(setup);
-      replayRack(session, *loaded);
+      window::GameSession session(setup);
+      window::replayRack(session, *loaded);
     } catch (const IllegalAction&) {
       // Refused as the game refuses it: the rack is dropped with a warning.
     }

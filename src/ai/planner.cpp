@@ -1,0 +1,216 @@
+// The search: generate candidates, simulate each, re-simulate the best with small errors in
+// aim and speed, and keep the shot whose outcomes are worth most on average.
+#include "nineball/planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "ai/parallel_map.hpp"
+#include "ai/planner_candidates.hpp"
+#include "ai/planner_evaluate.hpp"
+#include "ai/planner_geometry.hpp"
+#include "ai/planner_lookahead.hpp"
+#include "ai/planner_robust.hpp"
+#include "nineball/log.hpp"
+#include "nineball/random.hpp"
+
+namespace nineball::ai {
+namespace {
+
+// A shot worth this much to the shooter is as good as what the opponent would get from the
+// same position: the line between shooting and passing after a push-out.
+constexpr double kEven = 0.5;
+// Below this best worth the aimed shots leave the opponent an easy shot or foul: sweep every
+// direction too.
+constexpr double kSweepBelow = 0.3;
+// The break is chaotic: averaging a few candidates over cueing errors is all that helps, and
+// each break costs as much as many ordinary shots.
+constexpr int kBreakRobustTop = 4;
+// A level judges what a position leaves by its own cueing: this multiple of its aim error,
+// and never finer than the floor (degrees).
+constexpr double kJudgingAimOfNoise = 1.5;
+constexpr double kMinJudgingAimDeg = 0.15;
+// The break aims at a whole rack: a player errs far less there than on a pot.
+constexpr double kBreakNoiseScale = 1.0 / 3.0;
+// Executed speeds stay within what a cue can give (m/s).
+constexpr double kMinExecutedSpeed = 0.05;
+constexpr double kMaxExecutedSpeed = 13.0;
+
+std::vector<Candidate> candidatesFor(const SearchContext& ctx, const Evaluator& eval) {
+  const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
+  if (ctx.in.cue_in_hand || !cue) {
+    return ctx.in.rack.isBreak() ? breakShots(ctx, eval) : inHandShots(ctx, eval);
+  }
+  return shotsFrom(ctx, ctx.in.balls, cue->pos, std::nullopt);
+}
+
+// Candidates best first by their simulated worth, then by how promising they looked.
+std::vector<std::size_t> ranking(const std::vector<Candidate>& cands,
+                                 const std::vector<double>& values) {
+  std::vector<std::size_t> order(cands.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (values[a] != values[b]) return values[a] > values[b];
+    return cands[a].prior > cands[b].prior;
+  });
+  return order;
+}
+
+// Simulates the next shot after the best candidates that keep the table (position play by
+// simulation rather than geometry); their worth and gains are updated. Returns the shots taken.
+long lookFurther(const SearchContext& ctx, const Evaluator& eval,
+                 const std::vector<Candidate>& cands, std::vector<double>& values,
+                 std::vector<double>& gains, int threads) {
+  std::vector<std::size_t> picked;
+  for (std::size_t i : ranking(cands, values)) {
+    if (static_cast<int>(picked.size()) >= ctx.level.lookahead_top) break;
+    if (values[i] >= kContinueBase && values[i] < 1.0) picked.push_back(i);
+  }
+  std::vector<LookAhead> found(picked.size());
+  parallelFor(picked.size(), threads,
+              [&](std::size_t k) { found[k] = lookAhead(ctx, eval, cands[picked[k]]); });
+  long sims = 0;
+  for (std::size_t k = 0; k < picked.size(); ++k) {
+    gains[picked[k]] = found[k].value - values[picked[k]];
+    values[picked[k]] = found[k].value;
+    sims += found[k].simulations;
+  }
+  return sims;
+}
+
+}  // namespace
+
+PlanInput planInputFrom(const Match& match) {
+  PlanInput in;
+  in.table = match.world().table().def;
+  in.physics = match.world().physics();
+  in.step = match.world().stepParams();
+  in.balls = match.balls();
+  in.rack = match.rack();
+  in.cue_in_hand = match.cueInHand();
+  in.behind_head_string = match.cueBehindHeadString();
+  return in;
+}
+
+Planner::Planner(Level level, std::uint64_t seed, int threads)
+    : level_(level),
+      settings_(LevelSettings::of(level)),
+      rng_state_(seed),
+      threads_(std::max(threads, 1)) {}
+
+Plan Planner::plan(const PlanInput& in) {
+  const auto started = std::chrono::steady_clock::now();
+  const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
+  const Evaluator eval(in, table,
+                       std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg));
+  const SearchContext ctx{in, table, settings_, in.physics.ball_radius, in.rack.legalFirstBalls()};
+  const BallState* cue = findOnTable(in.balls, kCueBall);
+  const bool placing = in.cue_in_hand || !cue;
+  const bool breaking = placing && in.rack.isBreak();
+  const int robust_top =
+      breaking ? std::min(settings_.robust_top, kBreakRobustTop) : settings_.robust_top;
+
+  std::vector<Candidate> cands = candidatesFor(ctx, eval);
+  if (in.rack.pushOutAvailable() && !placing && settings_.push_out_headings > 0) {
+    const auto push_outs = pushOutShots(ctx, settings_.push_out_headings);
+    cands.insert(cands.end(), push_outs.begin(), push_outs.end());
+  }
+  assignCalls(ctx, cands);
+  std::vector<double> values;
+  std::vector<double> gains;  // what the look ahead added to a candidate's worth
+  long sims = 0;
+  auto simulateFrom = [&](std::size_t first) {
+    values.resize(cands.size(), 0.0);
+    gains.resize(cands.size(), 0.0);
+    parallelFor(cands.size() - first, threads_,
+                [&](std::size_t i) { values[first + i] = eval.value(cands[first + i]); });
+    sims += static_cast<long>(cands.size() - first);
+  };
+  auto choose = [&] {
+    const std::vector<std::size_t> order = ranking(cands, values);
+    RobustChoice choice;
+    if (order.empty()) return choice;
+    choice.index = order.front();
+    choice.value = values[choice.index];
+    const std::size_t top = std::min<std::size_t>(order.size(), std::max(robust_top, 0));
+    if (settings_.robust_steps > 0 && top > 0) {
+      const std::vector<std::size_t> ranked(order.begin(), order.begin() + top);
+      choice = chooseRobustly(cands, ranked, eval, settings_, threads_,
+                              breaking ? kBreakNoiseScale : 1.0, !breaking, gains);
+      sims += choice.simulations;
+    }
+    return choice;
+  };
+
+  simulateFrom(0);
+  if (!breaking && settings_.lookahead_top > 0) {
+    sims += lookFurther(ctx, eval, cands, values, gains, threads_);
+  }
+  RobustChoice choice = choose();
+  if (choice.value < kSweepBelow && !placing && settings_.sweep_headings > 0) {
+    const std::size_t first = cands.size();
+    std::vector<Candidate> sweep = sweepShots(ctx, settings_.sweep_headings);
+    assignCalls(ctx, sweep);
+    cands.insert(cands.end(), sweep.begin(), sweep.end());
+    simulateFrom(first);
+    choice = choose();
+  }
+
+  Plan plan;
+  plan.simulations = static_cast<int>(sims);
+  plan.value = choice.value;
+  if (!cands.empty()) {
+    const Candidate& c = cands[choice.index];
+    plan.turn.kind = c.kind == ShotKind::PushOut ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
+    plan.turn.shot = c.shot;
+    plan.turn.shot.heading_rad += choice.aim_shift;
+    plan.turn.cue = c.cue;
+    plan.turn.call = c.call;
+    plan.kind = c.kind;
+    plan.target = c.target;
+    plan.pocket = c.pocket;
+    plan.first = c.first;
+  }
+  last_think_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  think_seconds_ += last_think_seconds_;
+  simulations_ += sims;
+  logger("ai")->info("{}: {} of {} value {:.3f} ({} candidates, {} simulated, {:.0f} ms)",
+                     levelName(level_), shotKindName(plan.kind), plan.target, plan.value,
+                     cands.size(), sims, 1000.0 * last_think_seconds_);
+  return plan;
+}
+
+bool Planner::shootAfterPushOut(const PlanInput& in) {
+  PlanInput after = in;
+  if (after.rack.awaitingDecision()) after.rack.decide(true);
+  const bool shoot = plan(after).value >= kEven;
+  logger("ai")->info("{}: after the push-out: {}", levelName(level_), shoot ? "shoot" : "pass");
+  return shoot;
+}
+
+TurnInput Planner::execute(const Plan& plan) {
+  TurnInput turn = plan.turn;
+  const double aim_error = gaussian(rng_state_);
+  const double speed_error = gaussian(rng_state_);
+  const double scale = plan.kind == ShotKind::Break ? kBreakNoiseScale : 1.0;
+  turn.shot.heading_rad += scale * degToRad(settings_.aim_noise_deg) * aim_error;
+  turn.shot.speed =
+      std::clamp(turn.shot.speed * (1.0 + scale * settings_.speed_noise * speed_error),
+                 kMinExecutedSpeed, kMaxExecutedSpeed);
+  return turn;
+}
+
+TurnInput Planner::turnFor(const Match& match) {
+  const PlanInput in = planInputFrom(match);
+  if (match.rack().awaitingDecision()) {
+    TurnInput turn;
+    turn.kind = TurnInput::Kind::Decision;
+    turn.shoot = shootAfterPushOut(in);
+    return turn;
+  }
+  return execute(plan(in));
+}
+
+}  // namespace nineball::ai

@@ -1,0 +1,158 @@
+#include "ai/planner_evaluate.hpp"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <mutex>
+#include <stdexcept>
+
+#include "ai/planner_geometry.hpp"
+#include "nineball/engine.hpp"
+#include "play/shot_summary.hpp"
+
+namespace nineball::ai {
+namespace {
+
+// A planned shot that still rolls after this long (s) is cut short: its outcome is as good as
+// known, and a pathological one must not stall the search.
+constexpr double kMaxShotTime = 40.0;
+
+constexpr double kLeaveBase = 0.45;
+constexpr double kLeaveSpread = 0.4;
+// A position worth this to whoever shoots from it when the chance of a pot there is c:
+// a pot keeps the table (about 0.75), a miss gives it away (about 0.25).
+constexpr double kShooterBase = 0.25;
+constexpr double kShooterSpread = 0.5;
+
+bool contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+// A foul nothing later in the shot can undo: the cue ball pocketed, or (unless `any_first`,
+// as on a push-out) its first contact with a ball it may not hit first.
+bool foulDecided(const std::vector<Event>& events, const std::vector<int>& legal_first,
+                 bool any_first) {
+  bool first_seen = false;
+  for (const Event& e : events) {
+    if (e.type == EventType::Pocket && e.a == kCueBall) return true;
+    if (any_first || e.type != EventType::BallBall || first_seen) continue;
+    if (e.a != kCueBall && e.b != kCueBall) continue;
+    first_seen = true;
+    if (!contains(legal_first, e.a == kCueBall ? e.b : e.a)) return true;
+  }
+  return false;
+}
+
+// The evaluator builds and frees a world for every candidate (Box2D allocates over 100 KiB for
+// each). With glibc's default trim threshold of 128 KiB every free gave the heap back to the
+// kernel and the next world faulted it in again: a fifth of the planner's time went to brk
+// and page faults. Keeping up to 64 MiB of freed heap costs nothing else.
+void keepFreedHeap() {
+  static std::once_flag once;
+  std::call_once(once, [] { mallopt(M_TRIM_THRESHOLD, 64 << 20); });
+}
+
+}  // namespace
+
+Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg)
+    : in_(in),
+      table_(table),
+      step_(in.step),
+      sigma_rad_(degToRad(judging_aim_deg)),
+      legal_first_(in.rack.legalFirstBalls()) {
+  keepFreedHeap();
+  step_.max_time = std::min(step_.max_time, kMaxShotTime);
+}
+
+std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
+  std::vector<BallState> balls;
+  balls.reserve(in_.balls.size() + 1);
+  BallState cue_ball;
+  cue_ball.id = kCueBall;
+  for (const BallState& b : in_.balls) {
+    if (b.id == kCueBall) {
+      cue_ball.mass = b.mass;
+      continue;
+    }
+    if (!b.pocket) balls.push_back(b);
+  }
+  cue_ball.pos = cue;
+  balls.insert(balls.begin(), cue_ball);
+  return balls;
+}
+
+std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) const {
+  const std::unique_ptr<Engine> engine = makeEngine(in_.table, in_.physics, step_);
+  Engine& world = *engine;
+  if (c.cue) {
+    for (const BallState& b : ballsWithCueAt(*c.cue)) world.addBall(b);
+  } else {
+    for (const BallState& b : in_.balls) {
+      if (!b.pocket) world.addBall(b);
+    }
+  }
+  world.strike(kCueBall, shot);
+  // Under WPA rules a scratch or a wrong first ball is a foul whatever follows, and a foul is
+  // worth the same wherever the balls stop (ball in hand): the rest of the shot is not run.
+  const bool push_out = c.kind == ShotKind::PushOut;
+  const bool may_stop = in_.rack.rules() == rules::RuleSet::Wpa && !in_.rack.isBreak();
+  world.runUntilRest([&](const std::vector<Event>& events) {
+    return may_stop && foulDecided(events, legal_first_, push_out);
+  });
+  rules::ShotSummary summary = play::summarize(world.events());
+  summary.call = c.call;
+  Outcome o{{}, in_.rack, {}, summary.cue_pocketed};
+  try {
+    o.verdict = o.rack.shoot(summary, push_out);
+  } catch (const std::logic_error&) {
+    return std::nullopt;
+  }
+  o.balls = world.balls();
+  for (int spotted : o.verdict.to_spot) {
+    for (BallState& b : o.balls) {
+      if (b.id != spotted) continue;
+      b.pocket.reset();
+      b.pos = table_.footSpot();
+    }
+  }
+  return o;
+}
+
+double Evaluator::value(const Candidate& c, const Shot& shot) const {
+  const std::optional<Outcome> o = outcome(c, shot);
+  return o ? score(*o) : 0.0;  // the rules take no shot now: nothing to gain
+}
+
+double Evaluator::chanceFrom(const std::vector<BallState>& after, const rules::Rack& rack,
+                             Vec2 cue) const {
+  double best = 0.0;
+  for (int ball : rack.legalFirstBalls()) {
+    best = std::max(best,
+                    bestPotChance(table_, in_.physics.ball_radius, after, cue, ball, sigma_rad_));
+  }
+  return best;
+}
+
+double Evaluator::score(const Outcome& o) const {
+  const rules::Verdict& verdict = o.verdict;
+  const rules::Player me = in_.rack.shooter();
+  if (verdict.winner) return *verdict.winner == me ? 1.0 : 0.0;
+  const BallState* cue = findOnTable(o.balls, kCueBall);
+  double chance = kInHandChance;
+  if (!verdict.ball_in_hand) {
+    if (cue && !o.cue_pocketed) {
+      chance = chanceFrom(o.balls, o.rack, cue->pos);
+    } else if (verdict.cue_to_head_spot) {
+      chance = chanceFrom(o.balls, o.rack, {table_.headStringX(), 0.0});
+    }
+  }
+  if (verdict.next == me) return kContinueBase + kContinueSpread * chance;
+  if (verdict.legal() && verdict.decision == rules::Decision::PlayOrPass) {
+    const double shooter = kShooterBase + kShooterSpread * chance;
+    return std::min(shooter, 1.0 - shooter);
+  }
+  if (verdict.legal()) return kLeaveBase - kLeaveSpread * chance;
+  return kFoulValueTop * (1.0 - chance);
+}
+
+}  // namespace nineball::ai

@@ -1,0 +1,226 @@
+#include "nineball/match.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "nineball/scenes.hpp"
+#include "nineball/sim.hpp"
+#include "play/shot_summary.hpp"
+
+namespace nineball {
+namespace {
+
+// Spotting walks the long axis in steps this small (m) looking for room.
+constexpr double kSpotStep = 0.0005;
+// A cue ball exactly on the head string counts as behind it.
+constexpr double kLineTolerance = 1e-9;
+
+std::vector<int> objectBalls(const std::vector<BallState>& balls) {
+  std::vector<int> ids;
+  for (const BallState& b : balls) {
+    if (b.id != kCueBall && !b.pocket) ids.push_back(b.id);
+  }
+  return ids;
+}
+
+}  // namespace
+
+Match::Match(const MatchSetup& setup)
+    : setup_(setup),
+      world_(makeEngine(setup.table, setup.physics, setup.step)),
+      rack_(setup.game, setup.rules, {}, !setup.balls) {
+  std::vector<BallState> balls;
+  if (setup.balls) {
+    balls = *setup.balls;
+  } else {
+    BallState cue;
+    cue.id = kCueBall;
+    cue.pos = {world_->table().headStringX(), 0.0};
+    balls.push_back(cue);
+    for (const BallState& b :
+         rackFor(setup.game, setup.table, setup.physics.ball_radius, setup.seed)) {
+      balls.push_back(b);
+    }
+  }
+  cue_pocketed_ = true;
+  for (const BallState& b : balls) {
+    world_->addBall(b);
+    if (b.id == kCueBall && !b.pocket) cue_pocketed_ = false;
+  }
+  if (cue_pocketed_ && std::none_of(balls.begin(), balls.end(),
+                                    [](const BallState& b) { return b.id == kCueBall; })) {
+    BallState cue;
+    cue.id = kCueBall;
+    cue.pos = {world_->table().headStringX(), 0.0};
+    cue.pocket = PocketId::TopLeft;  // off the table until placed
+    world_->addBall(cue);
+  }
+  rack_ = rules::Rack(setup.game, setup.rules, objectBalls(balls), !setup.balls);
+}
+
+Match::~Match() = default;
+
+bool Match::cueInHand() const {
+  return rack_.isBreak() || rack_.ballInHand() || cue_pocketed_;
+}
+
+bool Match::cueBehindHeadString() const {
+  return rack_.isBreak();
+}
+
+std::optional<std::string> Match::cuePlacementProblem(Vec2 pos) const {
+  if (!std::isfinite(pos.x) || !std::isfinite(pos.y)) return "the cue position is not a number";
+  const double r = world_->physics().ball_radius;
+  if (!world_->table().ballFits(pos, r)) return "the cue ball would be off the table";
+  if (cueBehindHeadString() && pos.x > world_->table().headStringX() + kLineTolerance) {
+    return "on the break the cue ball goes behind the head string (x <= " +
+           std::to_string(world_->table().headStringX()) + ")";
+  }
+  for (const BallState& b : world_->balls()) {
+    if (b.id == kCueBall || b.pocket) continue;
+    if (length(b.pos - pos) < 2.0 * r - 1e-7) {
+      return "the cue ball would be on ball " + std::to_string(b.id);
+    }
+  }
+  return std::nullopt;
+}
+
+void Match::placeCue(Vec2 pos) {
+  world_->placeBall(kCueBall, pos);
+  cue_pocketed_ = false;
+}
+
+Vec2 Match::freeSpotOnLine(Vec2 from, Vec2 step_dir) const {
+  const double r = world_->physics().ball_radius;
+  const auto balls = world_->balls();
+  for (int dir : {1, -1}) {
+    for (Vec2 p = from; world_->table().insideLoop(p); p += step_dir * (dir * kSpotStep)) {
+      bool ok = world_->table().ballFits(p, r);
+      for (const BallState& b : balls) {
+        if (b.pocket) continue;
+        ok = ok && length(b.pos - p) >= 2.0 * r;
+      }
+      if (ok) return p;
+    }
+  }
+  return from;
+}
+
+void Match::spot(int ball) {
+  // WPA: on the foot spot, or as close behind it on the long axis as it fits.
+  const Vec2 p = freeSpotOnLine(world_->table().footSpot(), {1.0, 0.0});
+  world_->placeBall(ball, p);
+  rack_.respot(ball);
+}
+
+void Match::rerack() {
+  // The same rack as at the start (same seed), the cue ball back in hand on the head string.
+  for (const BallState& b :
+       rackFor(setup_.game, setup_.table, setup_.physics.ball_radius, setup_.seed)) {
+    world_->placeBall(b.id, b.pos);
+  }
+  placeCue({world_->table().headStringX(), 0.0});
+}
+
+void Match::returnCueToHeadSpot() {
+  const Vec2 head{world_->table().headStringX(), 0.0};
+  placeCue(freeSpotOnLine(head, {-1.0, 0.0}));
+}
+
+void Match::beginShot(const TurnInput& turn) {
+  if (in_progress_) throw IllegalAction("a shot is still rolling");
+  if (rack_.over()) throw IllegalAction("the game is over");
+  if (turn.kind == TurnInput::Kind::Decision) {
+    throw IllegalAction("a decision is not a shot");
+  }
+  if (rack_.pendingDecision() == rules::Decision::RerackOrPlayOn) {
+    throw IllegalAction("the illegal break waits for the opponent's decision (play on or rerack)");
+  }
+  if (rack_.awaitingDecision()) {
+    throw IllegalAction(rack_.game() != rules::Game::TenBall
+                            ? "the push-out waits for the opponent's decision (shoot or pass)"
+                            : "the turn waits for the opponent's decision (shoot or pass)");
+  }
+  const bool push_out = turn.kind == TurnInput::Kind::PushOut;
+  if (push_out && !rack_.pushOutAvailable()) throw IllegalAction("no push-out is allowed now");
+  if (!push_out && rack_.callRequired() && !turn.call) {
+    throw IllegalAction(
+        std::string("every ") +
+        (rack_.game() == rules::Game::EightBall ? "shot at the 8" : "shot after the break") +
+        " in " + rules::gameName(rack_.game()) +
+        " is called: the turn needs \"call\": {\"ball\", \"pocket\"}");
+  }
+  if (turn.call && !rack_.isBreak()) {
+    const auto& on = rack_.ballsOnTable();
+    if (std::find(on.begin(), on.end(), turn.call->ball) == on.end()) {
+      throw IllegalAction("the called ball " + std::to_string(turn.call->ball) +
+                          " is not on the table");
+    }
+  }
+  if (turn.cue) {
+    if (!cueInHand()) throw IllegalAction("the cue ball is not in hand");
+    if (auto problem = cuePlacementProblem(*turn.cue)) throw IllegalAction(*problem);
+    placeCue(*turn.cue);
+  } else if (cue_pocketed_) {
+    throw IllegalAction("ball in hand after a scratch: the turn must place the cue ball (\"cue\")");
+  }
+  ball_on_at_start_ = rack_.ballOn();
+  push_out_ = push_out;
+  call_ = turn.call;
+  world_->clearEvents();
+  world_->strike(kCueBall, turn.shot);
+  shot_deadline_ = world_->time() + setup_.step.max_time;
+  in_progress_ = true;
+}
+
+bool Match::stepShot() {
+  if (!in_progress_) throw IllegalAction("no shot is rolling");
+  return world_->stepTowardRest(shot_deadline_);
+}
+
+TurnRecord Match::finishShot() {
+  if (!in_progress_) throw IllegalAction("no shot is rolling");
+  while (!stepShot()) {
+  }
+  in_progress_ = false;
+  rules::ShotSummary summary = play::summarize(world_->events());
+  summary.call = call_;
+  TurnRecord rec;
+  rec.call = call_;
+  rec.shooter = rack_.shooter();
+  rec.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
+  rec.verdict = rack_.shoot(summary, push_out_);
+  for (int b : rec.verdict.to_spot) spot(b);
+  if (summary.cue_pocketed) {
+    if (rec.verdict.cue_to_head_spot) {
+      returnCueToHeadSpot();
+    } else {
+      cue_pocketed_ = true;
+    }
+  }
+  rec.ball_on = rack_.ballOn();
+  return rec;
+}
+
+TurnRecord Match::play(const TurnInput& turn) {
+  if (turn.kind == TurnInput::Kind::Decision) {
+    if (rack_.over()) throw IllegalAction("the game is over");
+    if (!rack_.awaitingDecision()) throw IllegalAction("no push-out waits for a decision");
+    TurnRecord rec;
+    rec.kind = TurnInput::Kind::Decision;
+    rec.shooter = rack_.shooter();
+    rec.answered = rack_.pendingDecision();
+    rec.shoot = turn.shoot;
+    rack_.decide(turn.shoot);
+    if (rack_.isBreak()) rerack();
+    rec.verdict.shooter = rec.shooter;
+    rec.verdict.next = rack_.shooter();
+    rec.ball_on = rack_.ballOn();
+    return rec;
+  }
+  beginShot(turn);
+  return finishShot();
+}
+
+}  // namespace nineball

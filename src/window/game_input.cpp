@@ -1,0 +1,410 @@
+#include "window/game_input.hpp"
+
+#include <cmath>
+
+#include "render/cue_stick_shape.hpp"
+#include "render/hud_layout.hpp"
+#include "window/frame_builder.hpp"
+
+namespace nineball::window {
+namespace {
+
+using Key = sf::Keyboard::Key;
+using render::Overlay;
+
+// One tap of an arrow turns the aim this far (deg) or changes the speed this much (m/s).
+constexpr double kAimNudgeDeg = 0.1;
+constexpr double kSpeedNudge = 0.1;
+// Held keys repeat after this delay (s), slowly for a while, then fast.
+constexpr double kHoldDelay = 0.3;
+constexpr double kSlowPhase = 1.0;
+constexpr double kAimSlowDegPerS = 4.0;
+constexpr double kAimFastDegPerS = 30.0;
+constexpr double kAimFineDegPerS = 1.0;
+constexpr double kSpeedPerS = 3.0;
+constexpr double kSpinStep = 0.1;
+// Degrees of cue elevation per E / Q press: a few presses reach a swerve, twelve a masse.
+constexpr double kElevationStepDeg = 5.0;
+// The cue ball in hand moves this fast with W A S D (m/s), in steps no longer than this (m).
+constexpr double kCueMoveSpeed = 0.4;
+constexpr double kCueMoveStep = 0.002;
+// A power drag shorter than this (m) is a click: it aims, it does not shoot.
+constexpr double kMinPull = 0.01;
+
+bool inside(const render::PixelRect& r, Vec2 p) {
+  return r.contains(p);
+}
+
+// Rate of a held key: nothing until it repeats, slow, then fast.
+double heldRate(double held, double slow, double fast) {
+  if (held < kHoldDelay) return 0.0;
+  return held < kHoldDelay + kSlowPhase ? slow : fast;
+}
+
+}  // namespace
+
+bool GameInput::dialogOpen() const {
+  return activeOverlay(session_, ui_) != Overlay::None;
+}
+
+void GameInput::handle(const sf::Event& event, const render::ViewTransform& view) {
+  switch (event.type) {
+    case sf::Event::KeyPressed:
+      shift_ = event.key.shift;
+      if (held_.count(event.key.code) == 0) {
+        held_[event.key.code] = 0.0;
+        keyPressed(event.key);
+      }
+      break;
+    case sf::Event::KeyReleased:
+      shift_ = event.key.shift;
+      held_.erase(event.key.code);
+      break;
+    case sf::Event::LostFocus:
+      held_.clear();
+      break;
+    case sf::Event::MouseButtonPressed: {
+      const Vec2 px{static_cast<double>(event.mouseButton.x),
+                    static_cast<double>(event.mouseButton.y)};
+      if (event.mouseButton.button == sf::Mouse::Left) {
+        mousePressed(px, view);
+      } else if (event.mouseButton.button == sf::Mouse::Right && ui_.drag == Drag::Power) {
+        session_.setSpeed(ui_.speed_before_drag);
+        ui_.drag = Drag::None;
+        ui_.pull = 0.0;
+      }
+      break;
+    }
+    case sf::Event::MouseMoved:
+      mouseMoved({static_cast<double>(event.mouseMove.x), static_cast<double>(event.mouseMove.y)},
+                 view);
+      break;
+    case sf::Event::MouseButtonReleased:
+      if (event.mouseButton.button == sf::Mouse::Left) mouseReleased();
+      break;
+    default:
+      break;
+  }
+}
+
+void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
+  const Overlay overlay = activeOverlay(session_, ui_);
+  if (key.code == Key::F1) requests_.toggle_fullscreen = true;
+  if (key.code == Key::F12) requests_.screenshot = true;
+  if (session_.replaying()) {
+    if (key.code != Key::F1 && key.code != Key::F12) session_.stopReplay();
+    return;
+  }
+  if (overlay == Overlay::ConfirmQuit) {
+    if (key.code == Key::Y || key.code == Key::Enter) requests_.quit = true;
+    if (key.code == Key::N || key.code == Key::Escape) ui_.confirm_quit = false;
+    return;
+  }
+  if (key.code == Key::Escape) {
+    if (ui_.help) {
+      ui_.help = false;
+    } else if (ui_.drag == Drag::Power) {
+      session_.setSpeed(ui_.speed_before_drag);
+      ui_.drag = Drag::None;
+      ui_.pull = 0.0;
+    } else {
+      ui_.confirm_quit = true;
+    }
+    return;
+  }
+  if (key.code == Key::H) {
+    ui_.help = !ui_.help;
+    return;
+  }
+  if (overlay == Overlay::Help) return;
+  if (key.code == Key::O) {
+    switchOpponent();
+    return;
+  }
+  if (key.code == Key::V && overlay != Overlay::ConfirmQuit && ui_.drag == Drag::None) {
+    session_.startReplay(key.shift);
+    return;
+  }
+  if (computer_.controls(session_)) return;
+  if (overlay == Overlay::PushOutChoice) {
+    if (key.code == Key::S) session_.decide(true);
+    if (key.code == Key::P) session_.decide(false);
+    return;
+  }
+  if (overlay == Overlay::GameOver) {
+    if (key.code == Key::R || key.code == Key::Enter) session_.rematch();
+    return;
+  }
+  if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
+  if (session_.practice() && practiceKey(key)) return;
+  switch (key.code) {
+    case Key::Space:
+      session_.shoot();
+      break;
+    case Key::Left:
+      session_.setHeading(session_.heading() + degToRad(kAimNudgeDeg));
+      break;
+    case Key::Right:
+      session_.setHeading(session_.heading() - degToRad(kAimNudgeDeg));
+      break;
+    case Key::Up:
+      session_.setSpeed(session_.speed() + kSpeedNudge);
+      break;
+    case Key::Down:
+      session_.setSpeed(session_.speed() - kSpeedNudge);
+      break;
+    case Key::T:
+      session_.setTip(session_.tip() + Vec2{0.0, kSpinStep});
+      break;
+    case Key::B:
+      session_.setTip(session_.tip() - Vec2{0.0, kSpinStep});
+      break;
+    case Key::L:
+      session_.setTip(session_.tip() - Vec2{kSpinStep, 0.0});
+      break;
+    case Key::R:
+      session_.setTip(session_.tip() + Vec2{kSpinStep, 0.0});
+      break;
+    case Key::E:
+      session_.setElevation(session_.elevation() + degToRad(kElevationStepDeg));
+      break;
+    case Key::Q:
+      session_.setElevation(session_.elevation() - degToRad(kElevationStepDeg));
+      break;
+    case Key::C:
+      session_.setTip({});
+      session_.setElevation(0.0);
+      break;
+    case Key::P:
+      session_.togglePushOut();
+      break;
+    case Key::K:
+      session_.callObvious();
+      break;
+    default:
+      break;
+  }
+}
+
+bool GameInput::practiceKey(const sf::Event::KeyEvent& key) {
+  const int code = static_cast<int>(key.code);
+  for (auto [first, last] : {std::pair{Key::Num1, Key::Num9}, {Key::Numpad1, Key::Numpad9}}) {
+    if (code >= static_cast<int>(first) && code <= static_cast<int>(last)) {
+      session_.toggleBall(1 + code - static_cast<int>(first), ui_.pointer);
+      return true;
+    }
+  }
+  if (key.code == Key::U || key.code == Key::BackSpace) {
+    session_.undoShot();
+    return true;
+  }
+  if (key.code == Key::Y) {
+    session_.retryShot();
+    return true;
+  }
+  return false;
+}
+
+void GameInput::switchOpponent() {
+  if (ui_.drag != Drag::None) return;
+  if (session_.practice()) {
+    session_.say("Practice is played alone: pick an opponent in a game from the menu.");
+    return;
+  }
+  const app::Opponent next = app::nextOpponent(computer_.opponent());
+  computer_.setOpponent(session_, next);
+  if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word
+  session_.say(next ? "Player 2 is now the computer, " + std::string(ai::levelName(*next)) +
+                          " level (O changes it)."
+                    : "Two players: Player 2 plays at this computer too (O changes it).");
+}
+
+void GameInput::update(double seconds) {
+  for (auto& [key, held] : held_) held += seconds;
+  if (session_.replaying() || dialogOpen() || computer_.controls(session_)) return;
+  if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
+  auto heldFor = [&](Key k) {
+    const auto it = held_.find(k);
+    return it == held_.end() ? -1.0 : it->second;
+  };
+  double turn_deg = 0.0;
+  for (auto [key, sign] : {std::pair{Key::Left, 1.0}, {Key::Right, -1.0}}) {
+    const double h = heldFor(key);
+    if (h < 0.0) continue;
+    const double rate = shift_ ? (h < kHoldDelay ? 0.0 : kAimFineDegPerS)
+                               : heldRate(h, kAimSlowDegPerS, kAimFastDegPerS);
+    turn_deg += sign * rate * seconds;
+  }
+  if (turn_deg != 0.0) session_.setHeading(session_.heading() + degToRad(turn_deg));
+  for (auto [key, sign] : {std::pair{Key::Up, 1.0}, {Key::Down, -1.0}}) {
+    const double h = heldFor(key);
+    if (h >= kHoldDelay) session_.setSpeed(session_.speed() + sign * kSpeedPerS * seconds);
+  }
+  if (session_.cueInHand()) {
+    Vec2 d;
+    if (heldFor(Key::W) >= 0.0) d.y += 1.0;
+    if (heldFor(Key::S) >= 0.0) d.y -= 1.0;
+    if (heldFor(Key::A) >= 0.0) d.x -= 1.0;
+    if (heldFor(Key::D) >= 0.0) d.x += 1.0;
+    if (d != Vec2{}) moveCueBy(normalized(d) * (kCueMoveSpeed * seconds));
+  }
+}
+
+void GameInput::moveCueBy(Vec2 d) {
+  // Small steps, so that a fast frame does not jump over a ball; stop at the first refusal.
+  const int n = std::max(1, static_cast<int>(std::ceil(length(d) / kCueMoveStep)));
+  for (int i = 0; i < n; ++i) {
+    const Vec2 next = session_.cuePosition() + d / static_cast<double>(n);
+    if (session_.placementProblem(next)) {
+      session_.placeCue(next);  // says why it cannot go there
+      return;
+    }
+    session_.placeCue(next);
+  }
+}
+
+void GameInput::setTipFromIcon(Vec2 px, const render::ViewTransform& view) {
+  const render::HudLayout layout = render::HudLayout::of(view);
+  const Vec2 d = (px - layout.spin_centre) / layout.spin_radius;
+  session_.setTip({d.x, -d.y});
+}
+
+void GameInput::clickButton(bool left) {
+  switch (activeOverlay(session_, ui_)) {
+    case Overlay::ConfirmQuit:
+      if (left) {
+        requests_.quit = true;
+      } else {
+        ui_.confirm_quit = false;
+      }
+      break;
+    case Overlay::Help:
+      if (!left) ui_.help = false;
+      break;
+    case Overlay::PushOutChoice:
+      session_.decide(left);
+      break;
+    case Overlay::GameOver:
+      if (left) {
+        session_.rematch();
+      } else {
+        requests_.quit = true;
+      }
+      break;
+    case Overlay::None:
+      break;
+  }
+}
+
+void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
+  if (session_.replaying()) {
+    session_.stopReplay();
+    return;
+  }
+  const Overlay overlay = activeOverlay(session_, ui_);
+  const bool computer_turn = computer_.controls(session_);
+  if (computer_turn && overlay == Overlay::PushOutChoice) return;
+  if (overlay != Overlay::None) {
+    const render::HudLayout layout =
+        render::HudLayout::of(view, overlay, dialogKeepClear(session_));
+    if (inside(layout.button_left, px)) clickButton(true);
+    if (inside(layout.button_right, px)) clickButton(false);
+    return;
+  }
+  if (session_.phase() != Phase::Aiming || computer_turn) return;
+  const render::HudLayout layout = render::HudLayout::of(view);
+  if (length(px - layout.spin_centre) <= layout.spin_radius * 1.1) {
+    ui_.drag = Drag::Spin;
+    setTipFromIcon(px, view);
+    return;
+  }
+  if (const auto tilt = layout.tiltAt(px)) {
+    ui_.drag = Drag::Tilt;
+    session_.setElevation(*tilt);
+    return;
+  }
+  const Vec2 m = view.toWorld(px);
+  const double r = session_.match().world().physics().ball_radius;
+  if (session_.practice()) {
+    if (const auto id = session_.ballAt(m)) {
+      ui_.drag = Drag::Ball;
+      ui_.ghost = render::CueGhost{m, true, "", *id};
+      return;
+    }
+  }
+  if (session_.cueInHand() && length(m - session_.cuePosition()) <= 1.6 * r) {
+    ui_.drag = Drag::Cue;
+    ui_.ghost = render::CueGhost{session_.cuePosition(), true, ""};
+    return;
+  }
+  const double hy = view.table().width / 2.0 + render::SceneLayout::kRail;
+  if (std::abs(m.y) > hy) return;  // a click in the HUD bands does not shoot
+  ui_.drag = Drag::Power;
+  ui_.drag_anchor = m;
+  ui_.pull = 0.0;
+  ui_.speed_before_drag = session_.speed();
+  session_.setPower(0.0);
+}
+
+void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
+  const Vec2 m = view.toWorld(px);
+  ui_.pointer = m;
+  switch (ui_.drag) {
+    case Drag::Ball: {
+      const int id = ui_.ghost ? ui_.ghost->id : kCueBall;
+      const auto problem = session_.ballPlacementProblem(id, m);
+      ui_.ghost = render::CueGhost{m, !problem, problem.value_or(""), id};
+      return;
+    }
+    case Drag::Spin:
+      setTipFromIcon(px, view);
+      return;
+    case Drag::Tilt:
+      session_.setElevation(render::HudLayout::of(view).tiltToward(px));
+      return;
+    case Drag::Cue: {
+      const auto problem = session_.placementProblem(m);
+      ui_.ghost = render::CueGhost{m, !problem, problem.value_or("")};
+      return;
+    }
+    case Drag::Power: {
+      const Vec2 dir = fromAngle(session_.heading());
+      ui_.pull = std::clamp(dot(ui_.drag_anchor - m, dir), 0.0, render::CueStickShape::kMaxPull);
+      session_.setPower(ui_.pull / render::CueStickShape::kMaxPull);
+      return;
+    }
+    case Drag::None:
+      break;
+  }
+  if (session_.phase() != Phase::Aiming || dialogOpen() || computer_.controls(session_)) return;
+  const Vec2 cue = session_.cuePosition();
+  if (length(m - cue) > 1e-6) session_.setHeading(std::atan2(m.y - cue.y, m.x - cue.x));
+}
+
+void GameInput::mouseReleased() {
+  const Drag drag = ui_.drag;
+  ui_.drag = Drag::None;
+  if (computer_.controls(session_)) {
+    ui_.pull = 0.0;
+    ui_.ghost.reset();
+    return;
+  }
+  if (drag == Drag::Cue) {
+    if (ui_.ghost) session_.placeCue(ui_.ghost->pos);
+    ui_.ghost.reset();
+  } else if (drag == Drag::Ball) {
+    if (ui_.ghost) session_.moveBall(ui_.ghost->id, ui_.ghost->pos);
+    ui_.ghost.reset();
+  } else if (drag == Drag::Power) {
+    const bool strike = ui_.pull >= kMinPull;
+    ui_.pull = 0.0;
+    if (!strike) {
+      session_.setSpeed(ui_.speed_before_drag);
+      session_.clickCall(ui_.drag_anchor);  // a click calls a pocket (or a ten-ball ball)
+    } else {
+      session_.shoot();
+    }
+  }
+}
+
+}  // namespace nineball::window

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <SFML/Window/Event.hpp>
+#include <map>
+
+#include "render/view_transform.hpp"
+#include "window/computer_player.hpp"
+#include "window/game_session.hpp"
+#include "window/ui_state.hpp"
+
+namespace nineball::window {
+
+/// What the window itself must do after an input.
+struct WindowRequests {
+  bool quit = false;
+  bool toggle_fullscreen = false;
+  bool screenshot = false;
+};
+
+/// Turns mouse and keyboard into play: the pointer aims, a drag back sets the power and the
+/// release strikes; the paper's keys (arrows, Space, T/B, H) and the rest of the scheme. While
+/// the computer has the turn only the window's keys work (Esc, H, F1, F12, O).
+class GameInput {
+ public:
+  GameInput(GameSession& session, UiState& ui, ComputerPlayer& computer)
+      : session_(session), ui_(ui), computer_(computer) {}
+
+  /// Handles one window event; `view` maps the pointer to the table.
+  void handle(const sf::Event& event, const render::ViewTransform& view);
+  /// Applies held keys over one frame of `seconds`.
+  void update(double seconds);
+
+  WindowRequests& requests() { return requests_; }
+  /// True while a key is down (its repeat moves the aim, the power or the cue ball).
+  bool keysHeld() const { return !held_.empty(); }
+
+ private:
+  void keyPressed(const sf::Event::KeyEvent& key);
+  void mousePressed(Vec2 px, const render::ViewTransform& view);
+  void mouseMoved(Vec2 px, const render::ViewTransform& view);
+  void mouseReleased();
+  void setTipFromIcon(Vec2 px, const render::ViewTransform& view);
+  void clickButton(bool left);
+  void moveCueBy(Vec2 d);
+  bool dialogOpen() const;
+  void switchOpponent();
+  /// Practice's own keys (1-9, U, Backspace, Y); true when the key was one of them.
+  bool practiceKey(const sf::Event::KeyEvent& key);
+
+  GameSession& session_;
+  UiState& ui_;
+  ComputerPlayer& computer_;
+  WindowRequests requests_;
+  std::map<sf::Keyboard::Key, double> held_;  // key -> seconds held
+  bool shift_ = false;
+};
+
+}  // namespace nineball::window

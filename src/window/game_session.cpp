@@ -1,0 +1,607 @@
+#include "window/game_session.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "nineball/log.hpp"
+#include "play/shot_summary.hpp"
+#include "window/shot_call.hpp"
+#include "window/turn_message.hpp"
+
+namespace nineball::window {
+namespace {
+
+// Catch-up in one frame, s of play: past this a slow frame slows the game down.
+constexpr double kMaxCatchUp = 0.25;
+// A shot still rolling after this long (s, simulated) is run to rest at once.
+constexpr double kMaxShotTime = 120.0;
+// Search step (m) for a free spot for the cue ball in hand.
+constexpr double kSpotSearchStep = 0.01;
+
+std::string formatSpeed(double mps) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", mps);
+  return s;
+}
+
+}  // namespace
+
+GameSession::GameSession(const MatchSetup& setup, bool practice)
+    : setup_(setup),
+      clock_(setup.step.dt(),
+             std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * setup.step.hz)))) {
+  if (practice) {
+    const Match racked(setup);
+    practice_ = std::make_unique<PracticeTable>(
+        racked.world().table(), racked.world().physics().ball_radius, racked.balls());
+    names_[0] = "Practice";
+    names_[1] = "";
+    rebuildPractice();
+    aimAtBallOn();
+    return;
+  }
+  startRack();
+}
+
+void GameSession::rebuildPractice() {
+  // A fresh world of the position: no rules are judged, so none carry over.
+  MatchSetup s = setup_;
+  s.balls = practice_->layout();
+  match_ = std::make_unique<Match>(s);
+  shot_.current = shot_.previous = match_->balls();
+  pocketed_.clear();
+  for (int id = 1; id <= 9; ++id) {
+    if (!practice_->has(id)) pocketed_.push_back(id);
+  }
+  phase_ = Phase::Aiming;
+}
+
+std::optional<int> GameSession::ballAt(Vec2 pos) const {
+  const double r = match_->world().physics().ball_radius;
+  std::optional<int> best;
+  double best_d = 1.2 * r;
+  for (const BallState& b : shot_.current) {
+    if (b.pocket) continue;
+    const double d = length(b.pos - pos);
+    if (d <= best_d) {
+      best = b.id;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+std::optional<std::string> GameSession::ballPlacementProblem(int id, Vec2 pos) const {
+  if (!practice_) return std::string("balls move by hand only in practice");
+  return practice_->placementProblem(id, pos);
+}
+
+bool GameSession::moveBall(int id, Vec2 pos) {
+  if (!practice_ || phase_ != Phase::Aiming) return false;
+  if (const auto problem = practice_->placementProblem(id, pos)) {
+    say("The ball cannot go there: " + *problem + ".", render::Tone::Warning);
+    return false;
+  }
+  practice_->place(id, pos);
+  rebuildPractice();
+  return true;
+}
+
+void GameSession::toggleBall(int id, Vec2 near) {
+  if (!practice_ || phase_ != Phase::Aiming || id == kCueBall) return;
+  if (practice_->has(id)) {
+    practice_->remove(id);
+    say("The " + std::to_string(id) + " is off the table (" + std::to_string(id) +
+        " puts it back).");
+  } else if (const auto spot = practice_->freeSpotNear(id, near)) {
+    practice_->place(id, *spot);
+    say("The " + std::to_string(id) + " is on the table: drag it where you want it.");
+  } else {
+    say("No room for the " + std::to_string(id) + ".", render::Tone::Warning);
+    return;
+  }
+  rebuildPractice();
+}
+
+void GameSession::restorePracticeShot(const PracticeShot& shot) {
+  rebuildPractice();
+  heading_ = shot.heading;
+  setSpeed(shot.speed);
+  tip_ = shot.tip;
+  elevation_ = shot.elevation;
+}
+
+void GameSession::undoShot() {
+  if (!practice_ || phase_ != Phase::Aiming) return;
+  const auto shot = practice_->undo();
+  if (!shot) {
+    say("Nothing to undo: no shot played yet.", render::Tone::Warning);
+    return;
+  }
+  restorePracticeShot(*shot);
+  say("Back to before the last shot (" + std::to_string(practice_->shotsRemembered()) +
+      " more to undo).");
+}
+
+void GameSession::retryShot() {
+  if (!practice_ || phase_ != Phase::Aiming) return;
+  const auto shot = practice_->retry();
+  if (!shot) {
+    say("Nothing to retry: no shot played yet.", render::Tone::Warning);
+    return;
+  }
+  restorePracticeShot(*shot);
+  say("The last shot set up again: same position, aim, power and spin.");
+}
+
+GameSession::~GameSession() = default;
+GameSession::GameSession(GameSession&&) noexcept = default;
+GameSession& GameSession::operator=(GameSession&&) noexcept = default;
+
+int GameSession::seatOf(rules::Player p) const {
+  // Player A breaks; the seats take turns at being A.
+  const int a = rack_ % 2;
+  return p == rules::Player::A ? a : 1 - a;
+}
+
+void GameSession::setSpeed(double mps) {
+  speed_ = std::clamp(mps, kMinSpeed, kMaxSpeed);
+}
+
+void GameSession::setPower(double fraction) {
+  setSpeed(kMinSpeed + std::clamp(fraction, 0.0, 1.0) * (kMaxSpeed - kMinSpeed));
+}
+
+double GameSession::maxTip() const {
+  return std::min(kMaxTip, match_->world().physics().miscue_limit);
+}
+
+void GameSession::setTip(Vec2 tip) {
+  const double len = length(tip);
+  // A hair inside the limit: past it the physics calls the shot a miscue.
+  const double limit = maxTip() * (1.0 - 1e-12);
+  tip_ = len > limit ? tip * (limit / len) : tip;
+}
+
+void GameSession::setElevation(double radians) {
+  elevation_ = std::clamp(radians, 0.0, degToRad(kMaxElevationDeg));
+}
+
+bool GameSession::pushOutAvailable() const {
+  return !practice_ && phase_ == Phase::Aiming && match_->rack().pushOutAvailable();
+}
+
+void GameSession::togglePushOut() {
+  if (!pushOutAvailable()) {
+    if (practice_) {
+      say("Practice has no rules, so no push-out: just shoot.", render::Tone::Warning);
+    } else if (phase_ == Phase::Aiming) {
+      say("No push-out now: it may be played only on the shot just after the break.",
+          render::Tone::Warning);
+    }
+    return;
+  }
+  push_out_ = !push_out_;
+  say(push_out_ ? "Push-out declared: no foul for the wrong ball or no cushion; the opponent "
+                  "then chooses who shoots."
+                : "Push-out withdrawn.");
+}
+
+bool GameSession::cueInHand() const {
+  return !practice_ && phase_ == Phase::Aiming && match_->cueInHand();
+}
+
+Vec2 GameSession::cuePosition() const {
+  if (cueInHand() && cue_spot_) return *cue_spot_;
+  for (const BallState& b : shot_.current) {
+    if (b.id == kCueBall) return b.pos;
+  }
+  return {};
+}
+
+std::optional<std::string> GameSession::placementProblem(Vec2 pos) const {
+  if (!cueInHand()) return std::string("the cue ball is not in hand");
+  return match_->cuePlacementProblem(pos);
+}
+
+bool GameSession::placeCue(Vec2 pos) {
+  if (auto problem = placementProblem(pos)) {
+    say("The cue ball cannot go there: " + *problem + ".", render::Tone::Warning);
+    return false;
+  }
+  cue_spot_ = pos;
+  return true;
+}
+
+AimGuide GameSession::aimGuide() const {
+  const Engine& w = match_->world();
+  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(),
+                         heading_);
+}
+
+void GameSession::startRack() {
+  MatchSetup s = setup_;
+  if (rack_ > 0) {
+    s.balls.reset();  // a rematch racks, whatever the first layout was
+    s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
+  }
+  match_ = std::make_unique<Match>(s);
+  rack_setup_ = s;
+  rack_turns_.clear();
+  replay_.reset();
+  pocketed_.clear();
+  speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
+  message_.clear();
+  tone_ = render::Tone::Info;
+  startTurn();
+  logger("game")->info("rack {}: {} breaks, rules {}", rackNumber(), seatName(seatToMove()),
+                       rules::ruleSetName(s.rules));
+}
+
+void GameSession::startTurn() {
+  shot_.current = shot_.previous = match_->balls();
+  phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
+  push_out_ = false;
+  tip_ = {};
+  elevation_ = 0.0;
+  cue_spot_.reset();
+  call_ball_.reset();
+  call_pocket_.reset();
+  if (match_->cueInHand()) {
+    std::optional<Vec2> on_table;
+    for (const BallState& b : shot_.current) {
+      if (b.id == kCueBall && !b.pocket) on_table = b.pos;
+    }
+    cue_spot_ = on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot();
+  }
+  aimAtBallOn();
+}
+
+Vec2 GameSession::freeCueSpot() const {
+  const TableGeometry& t = match_->world().table();
+  const Vec2 head{t.headStringX(), 0.0};
+  if (!match_->cuePlacementProblem(head)) return head;
+  // Rings of growing radius round the head spot, then anywhere it fits.
+  for (double radius = kSpotSearchStep; radius < t.def.length; radius += kSpotSearchStep) {
+    const int n = std::max(8, static_cast<int>(2.0 * kPi * radius / kSpotSearchStep));
+    for (int i = 0; i < n; ++i) {
+      const Vec2 p = head + fromAngle(kPi + 2.0 * kPi * i / n) * radius;
+      if (!match_->cuePlacementProblem(p)) return p;
+    }
+  }
+  return head;
+}
+
+void GameSession::aimAtBallOn() {
+  const int on = match_->rack().ballOn();
+  const Vec2 cue = cuePosition();
+  for (const BallState& b : shot_.current) {
+    if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
+      heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
+    }
+  }
+}
+
+bool GameSession::shoot() {
+  if (phase_ != Phase::Aiming) return false;
+  TurnInput turn;
+  turn.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
+  turn.shot.heading_rad = heading_;
+  turn.shot.speed = speed_;
+  turn.shot.tip = tip_;
+  turn.shot.elevation_rad = elevation_;
+  if (turn.kind == TurnInput::Kind::Shot) turn.call = call();
+  return shoot(turn);
+}
+
+bool GameSession::shoot(const TurnInput& given) {
+  if (phase_ != Phase::Aiming || given.kind == TurnInput::Kind::Decision) return false;
+  TurnInput turn = given;
+  if (practice_) {
+    turn.kind = TurnInput::Kind::Shot;
+    turn.cue.reset();
+    practice_->recordShot({practice_->layout(), turn.shot.heading_rad, turn.shot.speed,
+                           turn.shot.tip, turn.shot.elevation_rad});
+    rebuildPractice();
+    // The replay starts from this position: each practice shot is a rack of its own.
+    rack_setup_ = setup_;
+    rack_setup_.balls = practice_->layout();
+  }
+  if (!practice_ && turn.kind == TurnInput::Kind::Shot && match_->rack().callRequired() &&
+      !turn.call) {
+    say(std::string("Call the shot first: click the pocket for the ") + std::to_string(callBall()) +
+            (match_->rack().game() == rules::Game::TenBall ? " (click a ball first to call another)"
+                                                           : "") +
+            ", or press K to call the obvious shot.",
+        render::Tone::Warning);
+    return false;
+  }
+  if (match_->cueInHand()) {
+    if (!turn.cue) turn.cue = cue_spot_;
+  } else {
+    turn.cue.reset();
+  }
+  ball_on_at_shot_ = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
+  breaking_ = match_->rack().isBreak();
+  try {
+    match_->beginShot(turn);
+  } catch (const IllegalAction& e) {
+    say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
+    return false;
+  }
+  if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
+  rack_turns_.push_back(turn);
+  heading_ = turn.shot.heading_rad;
+  setSpeed(turn.shot.speed);
+  tip_ = turn.shot.tip;
+  elevation_ = turn.shot.elevation_rad;
+  push_out_ = turn.kind == TurnInput::Kind::PushOut;
+  if (turn.cue) cue_spot_ = turn.cue;
+  logger("game")->info(
+      "{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}], elevation {:.0f} deg{}",
+      seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed, turn.shot.tip.x,
+      turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
+  phase_ = Phase::Rolling;
+  clock_.reset();
+  shot_.begin(*match_);
+  message_.clear();
+  return true;
+}
+
+bool GameSession::callRequired() const {
+  return !practice_ && phase_ == Phase::Aiming && !push_out_ && match_->rack().callRequired();
+}
+
+int GameSession::callBall() const {
+  if (!callRequired()) return 0;
+  return call_ball_.value_or(match_->rack().ballOn());
+}
+
+std::optional<rules::Call> GameSession::call() const {
+  if (!callRequired() || !call_pocket_) return std::nullopt;
+  return rules::Call{callBall(), *call_pocket_};
+}
+
+bool GameSession::clickCall(Vec2 pos) {
+  if (!callRequired()) return false;
+  const Engine& w = match_->world();
+  const double r = w.physics().ball_radius;
+  if (const auto pocket = pocketNear(w.table(), pos, 3.0 * r)) {
+    call_pocket_ = pocket;
+    say("Called: the " + std::to_string(callBall()) + " in the " + pocketName(*pocket) +
+        " pocket.");
+    return true;
+  }
+  if (match_->rack().game() != rules::Game::TenBall) return false;
+  const auto ball = ballAt(pos);
+  if (!ball || *ball == kCueBall) return false;
+  call_ball_ = *ball;
+  say("Calling the " + std::to_string(*ball) + ": now click its pocket.");
+  return true;
+}
+
+void GameSession::callObvious() {
+  if (!callRequired()) {
+    say(practice_ ? "Practice has no rules, so no calls." : "No call is needed for this shot.",
+        render::Tone::Warning);
+    return;
+  }
+  const rules::Rack& rack = match_->rack();
+  const std::vector<int> callable =
+      rack.game() == rules::Game::TenBall ? rack.ballsOnTable() : rack.legalFirstBalls();
+  const auto c =
+      obviousCall(match_->world().table(), shot_.current, aimGuide(), callBall(), callable);
+  if (!c) return;
+  call_ball_ = c->ball;
+  call_pocket_ = c->pocket;
+  say("Called: the " + std::to_string(c->ball) + " in the " + pocketName(c->pocket) + " pocket.");
+}
+
+bool GameSession::setCall(const rules::Call& c) {
+  if (!callRequired()) return false;
+  call_ball_ = c.ball;
+  call_pocket_ = c.pocket;
+  say("Called: the " + std::to_string(c.ball) + " in the " + pocketName(c.pocket) + " pocket.");
+  return true;
+}
+
+bool GameSession::replayAvailable() const {
+  return phase_ != Phase::Rolling && ShotReplay::available(rack_turns_);
+}
+
+void GameSession::startReplay(bool slow) {
+  if (!replayAvailable()) {
+    say("No shot to replay yet in this rack.", render::Tone::Warning);
+    return;
+  }
+  try {
+    replay_ = std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0);
+  } catch (const std::exception& e) {
+    // The rack played again should always rebuild; if it ever does not, the game goes on.
+    replay_.reset();
+    logger("game")->warn("the replay could not be rebuilt: {}", e.what());
+    say(std::string("The replay could not be rebuilt: ") + e.what() + ".", render::Tone::Warning);
+  }
+}
+
+void GameSession::stopReplay() {
+  replay_.reset();
+}
+
+std::vector<audio::Impact> GameSession::advance(double seconds) {
+  std::vector<audio::Impact> impacts;
+  if (replay_) {
+    impacts = replay_->advance(seconds);
+    if (replay_->finished()) replay_.reset();
+    return impacts;
+  }
+  if (phase_ != Phase::Rolling) return impacts;
+  if (shot_.take(*match_, clock_.advance(seconds), kMaxShotTime, impacts)) finishShot();
+  return impacts;
+}
+
+double GameSession::shotTime() const {
+  return match_->world().time() - shot_.start;
+}
+
+void GameSession::finishShot() {
+  if (practice_) {
+    finishPracticeShot();
+    return;
+  }
+  const TurnRecord record = match_->finishShot();
+  afterTurn(record, ball_on_at_shot_);
+}
+
+void GameSession::finishPracticeShot() {
+  const std::vector<BallState> after = match_->balls();
+  std::vector<int> down;
+  for (const BallState& b : after) {
+    if (b.pocket && b.id != kCueBall && practice_->has(b.id)) down.push_back(b.id);
+  }
+  const bool cue_back = practice_->settle(after);
+  rebuildPractice();
+  std::string text = down.empty() ? "Nothing down." : ballList(down) + " down.";
+  text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  if (cue_back) text += " The cue ball dropped: it is back where it was struck from.";
+  say(text + " U: undo, Y: retry.", cue_back ? render::Tone::Foul : render::Tone::Info);
+}
+
+void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
+  if (observer_) observer_(seatOf(record.shooter), record, breaking_);
+  if (breaking_) speed_ = kShotSpeed;
+  breaking_ = false;
+  for (int b : record.verdict.pocketed) {
+    const auto& spot = record.verdict.to_spot;
+    if (std::find(spot.begin(), spot.end(), b) == spot.end()) pocketed_.push_back(b);
+  }
+  const auto& events = match_->world().events();
+  const rules::ShotSummary summary = play::summarize(events);
+  TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
+                               seatName(seatOf(record.verdict.next)), groups_at_shot_);
+  const bool miscue = record.kind != TurnInput::Kind::Decision &&
+                      std::any_of(events.begin(), events.end(),
+                                  [](const Event& e) { return e.type == EventType::Miscue; });
+  if (miscue) m.text = "Miscue! " + m.text;
+  say(m.text, m.tone);
+  logger("game")->info("turn: {}", m.text);
+  if (const auto winner = match_->rack().winner()) {
+    ++racks_won_[seatOf(*winner)];
+    shot_.current = shot_.previous = match_->balls();
+    phase_ = Phase::GameOver;
+    return;
+  }
+  startTurn();
+}
+
+void GameSession::decide(bool shoot_now) {
+  if (phase_ != Phase::PushOutChoice) return;
+  TurnInput turn;
+  turn.kind = TurnInput::Kind::Decision;
+  turn.shoot = shoot_now;
+  groups_at_shot_ = match_->rack().groups();
+  const TurnRecord record = match_->play(turn);
+  rack_turns_.push_back(turn);
+  // A re-rack puts every ball back: the tray of balls down empties with it.
+  if (match_->rack().isBreak()) pocketed_.clear();
+  afterTurn(record, match_->rack().ballOn());
+}
+
+void GameSession::rematch() {
+  if (practice_) return;
+  ++rack_;
+  startRack();
+}
+
+void GameSession::playTurn(const TurnInput& turn) {
+  if (practice_) throw IllegalAction("practice has no turns to play from a script");
+  if (turn.kind != TurnInput::Kind::Decision &&
+      (turn.shot.speed < kMinSpeed || turn.shot.speed > kMaxSpeed)) {
+    throw IllegalAction("the cue gives " + formatSpeed(kMinSpeed) + " to " +
+                        formatSpeed(kMaxSpeed) + " m/s in the game, not " +
+                        formatSpeed(turn.shot.speed));
+  }
+  const int ball_on = match_->rack().ballOn();
+  groups_at_shot_ = match_->rack().groups();
+  breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
+  const TurnRecord record = match_->play(turn);
+  rack_turns_.push_back(turn);
+  afterTurn(record, ball_on);
+}
+
+void GameSession::resumeRack(int rack_index, int racks_won0, int racks_won1) {
+  rack_ = std::max(0, rack_index);
+  racks_won_[0] = racks_won0;
+  racks_won_[1] = racks_won1;
+  startRack();
+}
+
+std::vector<BallState> GameSession::ballsToDraw() const {
+  if (replay_) return replay_->balls();
+  if (phase_ == Phase::Rolling) return shot_.between(clock_.alpha());
+  std::vector<BallState> out = shot_.current;
+  if (cueInHand() && cue_spot_) {
+    for (BallState& b : out) {
+      if (b.id == kCueBall) {
+        b.pos = *cue_spot_;
+        b.pocket.reset();
+      }
+    }
+  }
+  return out;
+}
+
+std::string GameSession::status() const {
+  const std::string name = seatName(seatToMove());
+  if (replay_) {
+    return std::string(replay_->rate() < 1.0 ? "Slow replay" : "Replay") +
+           " of the last shot: any key returns";
+  }
+  if (practice_) {
+    return phase_ == Phase::Rolling
+               ? "Practice shot..."
+               : "Practice: drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as ever";
+  }
+  switch (phase_) {
+    case Phase::Rolling:
+      return name + " shoots...";
+    case Phase::PushOutChoice:
+      if (match_->rack().pendingDecision() == rules::Decision::RerackOrPlayOn) {
+        return name + ": play on as it lies (S) or re-rack and break (P)?";
+      }
+      return name + ": play from here (S) or pass it back (P)?";
+    case Phase::GameOver: {
+      const auto winner = match_->rack().winner();
+      return (winner ? seatName(seatOf(*winner)) : name) + " wins rack " +
+             std::to_string(rackNumber()) + ". R: rematch";
+    }
+    case Phase::Aiming:
+      break;
+  }
+  std::string s = name + " to ";
+  if (match_->rack().isBreak()) {
+    s += "break (cue ball behind the head string)";
+  } else if (cueInHand()) {
+    s += "shoot: ball in hand, drag the cue ball";
+  } else {
+    s += "shoot";
+  }
+  if (callRequired()) {
+    const auto c = call();
+    s += c ? " - called: " + std::to_string(c->ball) + " in " + pocketName(c->pocket)
+           : " - call the " + std::to_string(callBall()) + "'s pocket (click it, or K)";
+  }
+  if (pushOutAvailable()) s += push_out_ ? " - PUSH-OUT" : " - may push out (P)";
+  return s;
+}
+
+void GameSession::say(const std::string& text, render::Tone tone) {
+  message_ = text;
+  tone_ = tone;
+}
+
+}  // namespace nineball::window

@@ -1,0 +1,223 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "audio/impact.hpp"
+#include "nineball/aim_guide.hpp"
+#include "nineball/match.hpp"
+#include "render/hud_state.hpp"
+#include "window/fixed_step_clock.hpp"
+#include "window/practice_table.hpp"
+#include "window/shot_replay.hpp"
+#include "window/shot_steps.hpp"
+
+namespace nineball::window {
+
+/// What the players are doing now.
+enum class Phase {
+  Aiming,         ///< the player to move aims (and places the cue ball when in hand)
+  Rolling,        ///< a shot is on: the physics runs
+  PushOutChoice,  ///< a decision: after a push-out (or a ten-ball call breach) the player
+                  ///< shoots or passes; after an illegal eight-ball break, plays on or re-racks
+  GameOver,       ///< the rack is won; a rematch racks again
+};
+
+/// Two players at one table, rack after rack: the match, whose turn it is, the aim, power
+/// and spin being set, the cue ball in hand, the physics stepped in fixed steps for the
+/// window, and the messages about each turn. No SFML: the window drives it.
+class GameSession {
+ public:
+  static constexpr double kMaxSpeed = 12.0;         ///< m/s at full power (a hard break)
+  static constexpr double kMinSpeed = 0.1;          ///< m/s at the bottom of the gauge
+  static constexpr double kMaxTip = 0.5;            ///< the tip's useful range, fraction of R
+  static constexpr double kMaxElevationDeg = 60.0;  ///< the cue's tilt: swerve up to a masse
+  static constexpr double kBreakSpeed = 10.0;       ///< m/s the break starts with
+  static constexpr double kShotSpeed = 3.0;    ///< m/s the first shot after the break starts with
+  static constexpr double kSlowReplay = 0.25;  ///< play time per real second in a slow replay
+
+  /// Starts the first rack; `setup` gives the rules, seed, table and perhaps a layout.
+  explicit GameSession(const MatchSetup& setup, bool practice = false);
+  ~GameSession();
+  GameSession(GameSession&&) noexcept;
+  GameSession& operator=(GameSession&&) noexcept;
+
+  /// Practice mode: no rules and no turns; any ball placed anywhere, added or taken away; the
+  /// last shot undone or retried.
+  bool practice() const { return practice_ != nullptr; }
+  /// Practice: the shots played that undo can take back.
+  std::size_t practiceShots() const { return practice_ ? practice_->shotsRemembered() : 0; }
+  /// The ball under a point on the table (practice: the balls that may be moved), or nothing.
+  std::optional<int> ballAt(Vec2 pos) const;
+  /// Why ball `id` may not stand at `pos` now, or nothing (practice).
+  std::optional<std::string> ballPlacementProblem(int id, Vec2 pos) const;
+  /// Practice: moves a ball; false (and a message) when it does not fit there.
+  bool moveBall(int id, Vec2 pos);
+  /// Practice: takes ball `id` off the table, or puts it on (at `near`, or the nearest free
+  /// spot to it).
+  void toggleBall(int id, Vec2 near);
+  /// Practice: back to before the last shot, with its aim, power and spin.
+  void undoShot();
+  /// Practice: the last shot's position and cue again, to play it once more.
+  void retryShot();
+
+  const Match& match() const { return *match_; }
+  const MatchSetup& setup() const { return setup_; }
+
+  /// The turns of the rack in play so far, as played, the cue ball's placement filled in (a
+  /// save and a replay play them again). In practice, the last shot alone.
+  const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
+  /// Racks again as rack `rack_index` of the session (its seed and breaker) with the score
+  /// given: where a saved rack resumes.
+  void resumeRack(int rack_index, int racks_won0, int racks_won1);
+  /// Called with each turn's record as the turn ends: the seat that played it and whether
+  /// it was the rack's break (the session statistics).
+  using TurnObserver = std::function<void(int seat, const TurnRecord& record, bool was_break)>;
+  void setTurnObserver(TurnObserver observer) { observer_ = std::move(observer); }
+  Phase phase() const { return phase_; }
+
+  /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
+  const std::string& seatName(int seat) const { return names_[seat]; }
+  /// Renames a seat ("Computer" when the computer plays it); later messages use the name.
+  void setSeatName(int seat, const std::string& name) { names_[seat] = name; }
+  int seatOf(rules::Player p) const;
+  int seatToMove() const { return seatOf(match_->rack().shooter()); }
+  int racksWon(int seat) const { return racks_won_[seat]; }
+  int rackNumber() const { return rack_ + 1; }
+
+  double heading() const { return heading_; }
+  void setHeading(double radians) { heading_ = radians; }
+  double speed() const { return speed_; }
+  void setSpeed(double mps);
+  /// The gauge, 0 to 1, linear in speed from kMinSpeed to kMaxSpeed.
+  double power() const { return (speed_ - kMinSpeed) / (kMaxSpeed - kMinSpeed); }
+  void setPower(double fraction);
+  Vec2 tip() const { return tip_; }
+  /// The largest tip offset allowed: the useful range, within the physics' miscue limit.
+  double maxTip() const;
+  /// Sets the tip, pulled in to the useful range.
+  void setTip(Vec2 tip);
+  /// The cue's tilt above the table, radians: an elevated cue curves the ball (swerve).
+  double elevation() const { return elevation_; }
+  /// Sets the tilt, held within 0 to kMaxElevationDeg.
+  void setElevation(double radians);
+
+  /// The object balls pocketed this rack (and not spotted), in the order they dropped.
+  const std::vector<int>& pocketedThisRack() const { return pocketed_; }
+
+  bool pushOutAvailable() const;
+  bool pushOutDeclared() const { return push_out_; }
+  void togglePushOut();
+
+  /// True while the player to move may move the cue ball.
+  bool cueInHand() const;
+  /// Where the cue ball is, or will be shot from when in hand.
+  Vec2 cuePosition() const;
+  /// Why the cue ball may not go there now, or nothing.
+  std::optional<std::string> placementProblem(Vec2 pos) const;
+  /// Moves the cue ball in hand; false (and a message saying why) for an illegal spot.
+  bool placeCue(Vec2 pos);
+
+  /// The aim guide from the cue ball along the current heading.
+  AimGuide aimGuide() const;
+
+  /// The coming shot must carry a call (ten-ball after the break, eight-ball on the 8) and
+  /// the player to move is aiming (a push-out needs none).
+  bool callRequired() const;
+  /// The ball being called: the one picked (ten-ball), else the ball on. 0 when no call is due.
+  int callBall() const;
+  /// The call made so far: set once a pocket is picked.
+  std::optional<rules::Call> call() const;
+  /// A click on the table while a call is due: picks the pocket near `pos`, or in ten-ball the
+  /// ball there. True when the click was taken as part of the call.
+  bool clickCall(Vec2 pos);
+  /// Calls the obvious shot: the aim guide's object ball (when it may be called), else the
+  /// ball on, into the pocket nearest its path.
+  void callObvious();
+  /// Makes call `c` as the clicks would (the computer's call, shown like a person's). False
+  /// when no call is due.
+  bool setCall(const rules::Call& c);
+
+  /// Strikes with the current aim, power and spin; false (and a message) when refused.
+  bool shoot();
+  /// Strikes with exactly this shot or push-out (the computer's), placing the cue ball at
+  /// `turn.cue` when in hand (at the current spot if none is given); the aim, gauge and spin
+  /// show it. False (and a message) when refused.
+  bool shoot(const TurnInput& turn);
+  /// After the opponent's push-out (or ten-ball call breach): shoot from there (true) or pass
+  /// the shot back. After an illegal eight-ball break: play on (true) or re-rack.
+  void decide(bool shoot_now);
+  /// Racks again after a game over; the other player breaks.
+  void rematch();
+  /// Plays a whole turn at once, as `nineball match` does (a script before the window opens).
+  /// Throws IllegalAction.
+  void playTurn(const TurnInput& turn);
+
+  /// True when the rack has a last shot to replay and nothing is rolling.
+  bool replayAvailable() const;
+  /// Replays the rack's last shot from the physics, at normal speed or a quarter of it.
+  void startReplay(bool slow);
+  void stopReplay();
+  bool replaying() const { return replay_ != nullptr; }
+  /// The setup this rack began from (its seed and layout).
+  const MatchSetup& rackSetup() const { return rack_setup_; }
+
+  /// Runs the physics for one frame's time in fixed steps; returns the sounds it made.
+  std::vector<audio::Impact> advance(double seconds);
+  /// The balls where the frame should draw them: between the last two steps while rolling,
+  /// the cue ball at its spot in hand otherwise.
+  std::vector<BallState> ballsToDraw() const;
+  /// Simulated seconds since the shot began.
+  double shotTime() const;
+
+  /// What the player to move should do now.
+  std::string status() const;
+  const std::string& message() const { return message_; }
+  render::Tone tone() const { return tone_; }
+  /// Replaces the message line (a refusal, a saved screenshot...).
+  void say(const std::string& text, render::Tone tone = render::Tone::Info);
+
+ private:
+  void startRack();
+  void startTurn();
+  void finishShot();
+  void finishPracticeShot();
+  void rebuildPractice();
+  void restorePracticeShot(const PracticeShot& shot);
+  void afterTurn(const TurnRecord& record, int ball_on_before);
+  Vec2 freeCueSpot() const;
+  void aimAtBallOn();
+
+  MatchSetup setup_;
+  MatchSetup rack_setup_;
+  std::unique_ptr<Match> match_;
+  std::vector<TurnInput> rack_turns_;
+  std::unique_ptr<ShotReplay> replay_;
+  std::unique_ptr<PracticeTable> practice_;
+  Phase phase_ = Phase::Aiming;
+  std::string names_[2] = {"Player 1", "Player 2"};
+  int racks_won_[2] = {0, 0};
+  int rack_ = 0;
+  double heading_ = 0.0;
+  double speed_ = kShotSpeed;
+  Vec2 tip_;
+  double elevation_ = 0.0;
+  bool push_out_ = false;
+  std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
+  int ball_on_at_shot_ = 0;
+  std::optional<int> call_ball_;         // ten-ball: the ball picked to call
+  std::optional<PocketId> call_pocket_;  // the pocket called
+  rules::Groups groups_at_shot_;         // eight-ball: the groups before the turn (its message)
+  bool breaking_ = false;                // the shot rolling is the break
+  FixedStepClock clock_;
+  ShotSteps shot_;
+  std::vector<int> pocketed_;
+  std::string message_;
+  render::Tone tone_ = render::Tone::Info;
+  TurnObserver observer_;
+};
+
+}  // namespace nineball::window

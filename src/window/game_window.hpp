@@ -1,0 +1,25 @@
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "app/game_options.hpp"
+#include "nineball/match.hpp"
+
+namespace nineball::window {
+
+/// How the first rack starts: its setup, and the turns of a script to play before the
+/// window shows it.
+struct GameStart {
+  MatchSetup setup;
+  std::vector<TurnInput> turns;
+  std::string script_name;  ///< for messages about the script's turns
+};
+
+/// Opens the game window and plays until the players quit; with --screenshot draws, saves
+/// the PNG and exits. Returns the exit status: 0, 1 without a display, a font or a writable
+/// screenshot, 2 for an illegal turn in the script.
+int runGame(const app::GameOptions& options, const GameStart& start, std::ostream& err);
+
+}  // namespace nineball::window

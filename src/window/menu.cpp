@@ -1,0 +1,370 @@
+#include "window/menu.hpp"
+
+#include <algorithm>
+
+#include "window/player_name.hpp"
+
+namespace nineball::window {
+namespace {
+
+constexpr int kVolumeStep = 10;
+
+std::string utf8(char32_t c) {
+  std::string out;
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18));
+    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+  return out;
+}
+
+// Removes the last UTF-8 character.
+void popChar(std::string& s) {
+  while (!s.empty()) {
+    const auto byte = static_cast<unsigned char>(s.back());
+    s.pop_back();
+    if ((byte & 0xC0) != 0x80) break;
+  }
+}
+
+const char* levelLabel(ai::Level l) {
+  switch (l) {
+    case ai::Level::Easy:
+      return "Easy";
+    case ai::Level::Hard:
+      return "Hard";
+    case ai::Level::Medium:
+      break;
+  }
+  return "Medium";
+}
+
+// "Eight-ball" for the menu.
+std::string gameLabel(rules::Game g) {
+  std::string s = rules::gameName(g);
+  s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
+std::string capLabel(int cap) {
+  return cap == 0 ? "Unlimited (vsync)" : std::to_string(cap) + " fps";
+}
+
+}  // namespace
+
+MenuModel::MenuModel(const Settings& settings, std::optional<std::string> resume)
+    : settings_(settings), resume_(std::move(resume)) {
+  computer_ = settings_.last.opponent.has_value();
+  if (settings_.last.opponent) level_ = *settings_.last.opponent;
+  selectFirst();
+}
+
+MenuModel MenuModel::settingsOnly(const Settings& settings) {
+  MenuModel m(settings, std::nullopt);
+  m.screen_ = Screen::Settings;
+  m.settings_only_ = true;
+  m.selectFirst();
+  return m;
+}
+
+std::vector<MenuModel::Item> MenuModel::items() const {
+  if (screen_ == Screen::Settings) {
+    return {Item::Volume, Item::Sound, Item::Guide, Item::Bank, Item::FrameCap, Item::Back};
+  }
+  std::vector<Item> v;
+  if (resume_) v.push_back(Item::Resume);
+  for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
+                 Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
+    v.push_back(i);
+  }
+  return v;
+}
+
+bool MenuModel::enabled(Item item) const {
+  switch (item) {
+    case Item::Practice:
+      return true;
+    case Item::Level:
+      return computer_;
+    case Item::Rules:
+      return nineBall();  // the paper's rules are nine-ball's only
+    case Item::Name2:
+      return !computer_;  // the computer's seat is called "Computer"
+    default:
+      return true;
+  }
+}
+
+MenuRow MenuModel::row(Item item) const {
+  using Kind = MenuRow::Kind;
+  MenuRow r;
+  r.enabled = enabled(item);
+  switch (item) {
+    case Item::Resume:
+      r.label = "Resume rack";
+      r.value = resume_.value_or("");
+      break;
+    case Item::Play:
+      r.label = std::string("Play ") + rules::gameName(settings_.last.game);
+      break;
+    case Item::Practice:
+      r.label = "Practice";
+      r.value = "no rules, any ball anywhere";
+      break;
+    case Item::Versus:
+      r = {Kind::Choice, "app::Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
+           false};
+      break;
+    case Item::Level:
+      r = {Kind::Choice, "Computer level", levelLabel(level_), r.enabled, false};
+      break;
+    case Item::Game:
+      r = {Kind::Choice, "Game", gameLabel(settings_.last.game), true, false};
+      break;
+    case Item::Rules:
+      r = {Kind::Choice, "Rules",
+           settings_.last.rules == rules::RuleSet::Wpa ? "WPA" : "Paper (the seed paper's)",
+           r.enabled, false};
+      if (!nineBall()) r.value = "WPA (the paper's are nine-ball's only)";
+      break;
+    case Item::Name1:
+    case Item::Name2: {
+      const int seat = item == Item::Name1 ? 0 : 1;
+      r.kind = Kind::Text;
+      r.label = seat == 0 ? "Player 1 name" : "Player 2 name";
+      r.value = seat == 1 && computer_ ? "Computer" : settings_.last.names[seat];
+      r.editing = editing_ && items()[selected_] == item;
+      break;
+    }
+    case Item::OpenSettings:
+      r.label = "Settings";
+      break;
+    case Item::Quit:
+      r.label = "Quit";
+      break;
+    case Item::Volume:
+      r = {Kind::Choice, "Volume", std::to_string(settings_.volume) + " %", true, false};
+      break;
+    case Item::Sound:
+      r = {Kind::Choice, "Sound (M)", settings_.muted ? "Muted" : "On", true, false};
+      break;
+    case Item::Guide:
+      r = {Kind::Choice, "Aim guide", guideLengthName(settings_.guide), true, false};
+      r.value[0] = static_cast<char>(r.value[0] - 'a' + 'A');
+      break;
+    case Item::Bank:
+      r = {Kind::Choice, "Bank line off the first cushion", settings_.bank_line ? "On" : "Off",
+           true, false};
+      break;
+    case Item::FrameCap:
+      r = {Kind::Choice, "Frame cap", capLabel(settings_.frame_cap), true, false};
+      break;
+    case Item::Back:
+      r.label = settings_only_ ? "Back to the game (F2)" : "Back";
+      break;
+  }
+  return r;
+}
+
+std::string MenuModel::title() const {
+  return screen_ == Screen::Settings ? "Settings" : "nineball";
+}
+
+std::vector<MenuRow> MenuModel::rows() const {
+  std::vector<MenuRow> out;
+  for (Item i : items()) out.push_back(row(i));
+  return out;
+}
+
+bool MenuModel::nineBall() const {
+  return settings_.last.game == rules::Game::NineBall;
+}
+
+void MenuModel::selectFirst() {
+  selected_ = 0;
+  editing_ = false;
+  const auto v = items();
+  while (selected_ + 1 < static_cast<int>(v.size()) && !enabled(v[selected_])) ++selected_;
+}
+
+void MenuModel::move(int step) {
+  const auto v = items();
+  const int n = static_cast<int>(v.size());
+  for (int k = 1; k <= n; ++k) {
+    const int i = ((selected_ + step * k) % n + n) % n;
+    if (enabled(v[i])) {
+      selected_ = i;
+      return;
+    }
+  }
+}
+
+void MenuModel::change(Item item, int step) {
+  switch (item) {
+    case Item::Versus:
+      computer_ = !computer_;
+      break;
+    case Item::Level: {
+      const int l = (static_cast<int>(level_) + step + 3) % 3;
+      level_ = static_cast<ai::Level>(l);
+      break;
+    }
+    case Item::Game:
+      settings_.last.game =
+          static_cast<rules::Game>((static_cast<int>(settings_.last.game) + step + 3) % 3);
+      break;
+    case Item::Rules:
+      settings_.last.rules =
+          settings_.last.rules == rules::RuleSet::Wpa ? rules::RuleSet::Paper : rules::RuleSet::Wpa;
+      break;
+    case Item::Volume:
+      settings_.volume = std::clamp(settings_.volume + step * kVolumeStep, 0, 100);
+      break;
+    case Item::Sound:
+      settings_.muted = !settings_.muted;
+      break;
+    case Item::Guide:
+      settings_.guide =
+          static_cast<GuideLength>((static_cast<int>(settings_.guide) + step + 3) % 3);
+      break;
+    case Item::Bank:
+      settings_.bank_line = !settings_.bank_line;
+      break;
+    case Item::FrameCap: {
+      const auto& caps = Settings::kFrameCaps;
+      const int n = static_cast<int>(std::size(caps));
+      const int at = static_cast<int>(
+          std::find(std::begin(caps), std::end(caps), settings_.frame_cap) - std::begin(caps));
+      settings_.frame_cap = caps[((at + step) % n + n) % n];
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+void MenuModel::activate(Item item) {
+  if (!enabled(item)) return;
+  switch (item) {
+    case Item::Resume:
+      outcome_ = Outcome::Resume;
+      break;
+    case Item::Play:
+    case Item::Practice:
+      settings_.last.mode = item == Item::Practice ? GameMode::Practice : GameMode::NineBall;
+      settings_.last = choice();
+      outcome_ = Outcome::Play;
+      break;
+    case Item::Name1:
+    case Item::Name2:
+      editing_ = true;
+      break;
+    case Item::OpenSettings:
+      screen_ = Screen::Settings;
+      selectFirst();
+      break;
+    case Item::Quit:
+      outcome_ = Outcome::Quit;
+      break;
+    case Item::Back:
+      if (settings_only_) {
+        outcome_ = Outcome::Close;
+      } else {
+        screen_ = Screen::Main;
+        selectFirst();
+      }
+      break;
+    default:
+      change(item, 1);
+      break;
+  }
+}
+
+void MenuModel::key(MenuKey k) {
+  const auto v = items();
+  const Item item = v[selected_];
+  if (editing_) {
+    const int seat = item == Item::Name1 ? 0 : 1;
+    std::string& name = settings_.last.names[seat];
+    if (k == MenuKey::Backspace) popChar(name);
+    if (k == MenuKey::Enter || k == MenuKey::Escape || k == MenuKey::Tab || k == MenuKey::Up ||
+        k == MenuKey::Down) {
+      editing_ = false;
+      if (name.empty()) name = seat == 0 ? "Player 1" : "Player 2";
+      if (k == MenuKey::Up) move(-1);
+      if (k == MenuKey::Down || k == MenuKey::Tab) move(1);
+    }
+    return;
+  }
+  switch (k) {
+    case MenuKey::Up:
+      move(-1);
+      break;
+    case MenuKey::Down:
+    case MenuKey::Tab:
+      move(1);
+      break;
+    case MenuKey::Left:
+    case MenuKey::Right:
+      change(item, k == MenuKey::Left ? -1 : 1);
+      break;
+    case MenuKey::Enter:
+      activate(item);
+      break;
+    case MenuKey::Escape:
+      if (screen_ == Screen::Settings) {
+        activate(Item::Back);
+      } else {
+        outcome_ = Outcome::Quit;
+      }
+      break;
+    case MenuKey::Backspace:
+      break;
+  }
+}
+
+void MenuModel::text(char32_t c) {
+  if (!editing_) return;
+  // Printable characters only; control keys arrive as their own key events.
+  if (c < 0x20 || c == 0x7F || (c >= 0xD800 && c <= 0xDFFF) || c > 0x10FFFF) return;
+  const int seat = items()[selected_] == Item::Name1 ? 0 : 1;
+  std::string& name = settings_.last.names[seat];
+  const std::string add = utf8(c);
+  if (name.size() + add.size() <= kMaxNameBytes) name += add;
+}
+
+void MenuModel::hover(int i) {
+  const auto v = items();
+  if (editing_ || i < 0 || i >= static_cast<int>(v.size()) || !enabled(v[i])) return;
+  selected_ = i;
+}
+
+void MenuModel::click(int i) {
+  const auto v = items();
+  if (i < 0 || i >= static_cast<int>(v.size()) || !enabled(v[i])) return;
+  if (editing_ && i != selected_) key(MenuKey::Enter);  // a click elsewhere ends the edit
+  selected_ = i;
+  if (!editing_) activate(v[i]);
+}
+
+MenuChoice MenuModel::choice() const {
+  MenuChoice c = settings_.last;
+  c.opponent = computer_ ? app::Opponent(level_) : std::nullopt;
+  // The paper's rules are nine-ball's only.
+  if (c.game != rules::Game::NineBall) c.rules = rules::RuleSet::Wpa;
+  c.resume = outcome_ == Outcome::Resume;
+  return c;
+}
+
+}  // namespace nineball::window

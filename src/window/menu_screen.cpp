@@ -1,0 +1,140 @@
+#include "window/menu_screen.hpp"
+
+#include <SFML/System/Clock.hpp>
+#include <SFML/System/Sleep.hpp>
+#include <optional>
+
+namespace nineball::window {
+namespace {
+
+// How long the menu sleeps between looks at the events (s), and how often it redraws
+// anyway (a window uncovered by another shows its picture again).
+constexpr float kPoll = 0.03f;
+constexpr float kRedraw = 2.0f;
+
+std::optional<MenuKey> menuKey(sf::Keyboard::Key k) {
+  switch (k) {
+    case sf::Keyboard::Up:
+      return MenuKey::Up;
+    case sf::Keyboard::Down:
+      return MenuKey::Down;
+    case sf::Keyboard::Left:
+      return MenuKey::Left;
+    case sf::Keyboard::Right:
+      return MenuKey::Right;
+    case sf::Keyboard::Enter:
+    case sf::Keyboard::Space:
+      return MenuKey::Enter;
+    case sf::Keyboard::Escape:
+      return MenuKey::Escape;
+    case sf::Keyboard::Backspace:
+      return MenuKey::Backspace;
+    case sf::Keyboard::Tab:
+      return MenuKey::Tab;
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+render::MenuPicture menuPicture(const MenuModel& model) {
+  render::MenuPicture p;
+  p.title = model.title();
+  const bool main = model.screen() == MenuModel::Screen::Main;
+  p.subtitle = main ? "nine-ball on a real table" : "saved for the next game";
+  for (const MenuRow& r : model.rows()) {
+    render::MenuLine line;
+    line.label = r.label;
+    line.value = r.value;
+    line.choice = r.kind == MenuRow::Kind::Choice && r.enabled;
+    line.field = r.kind == MenuRow::Kind::Text && r.enabled;
+    line.enabled = r.enabled;
+    line.editing = r.editing;
+    p.lines.push_back(line);
+  }
+  p.selected = model.selected();
+  if (model.editing()) {
+    p.hint = "Type the name    Backspace: erase    Enter: done";
+  } else {
+    p.hint = std::string("Up / Down: choose    Left / Right: change    Enter: select    Esc: ") +
+             (main ? "quit" : "back");
+  }
+  return p;
+}
+
+bool handleMenuEvent(MenuModel& model, const sf::Event& event, double width, double height) {
+  const int rows = static_cast<int>(model.rows().size());
+  switch (event.type) {
+    case sf::Event::KeyPressed: {
+      // Space types a space in a name; everywhere else it selects.
+      if (model.editing() && event.key.code == sf::Keyboard::Space) return false;
+      if (const auto k = menuKey(event.key.code)) {
+        model.key(*k);
+        return true;
+      }
+      return false;
+    }
+    case sf::Event::TextEntered:
+      if (!model.editing()) return false;
+      model.text(event.text.unicode);
+      return true;
+    case sf::Event::MouseMoved: {
+      const render::MenuLayout m = render::MenuLayout::of(width, height, rows);
+      const int before = model.selected();
+      model.hover(m.rowAt(
+          {static_cast<double>(event.mouseMove.x), static_cast<double>(event.mouseMove.y)}));
+      return model.selected() != before;
+    }
+    case sf::Event::MouseButtonPressed: {
+      if (event.mouseButton.button != sf::Mouse::Left) return false;
+      const render::MenuLayout m = render::MenuLayout::of(width, height, rows);
+      model.click(m.rowAt(
+          {static_cast<double>(event.mouseButton.x), static_cast<double>(event.mouseButton.y)}));
+      return true;
+    }
+    default:
+      return false;
+  }
+}
+
+MenuModel::Outcome runMenuScreen(sf::RenderWindow& window, MenuModel& model,
+                                 render::MenuPainter& painter,
+                                 const std::function<void(sf::RenderTarget&)>& background,
+                                 const std::function<void(double, double)>& resized) {
+  bool dirty = true;
+  sf::Clock since_draw;
+  while (window.isOpen() && model.outcome() == MenuModel::Outcome::None) {
+    sf::Event event;
+    while (window.pollEvent(event)) {
+      if (event.type == sf::Event::Closed) {
+        window.close();
+        return MenuModel::Outcome::Quit;
+      }
+      if (event.type == sf::Event::Resized) {
+        const float w = static_cast<float>(event.size.width);
+        const float h = static_cast<float>(event.size.height);
+        window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
+        resized(w, h);
+        dirty = true;
+      } else if (event.type == sf::Event::GainedFocus || event.type == sf::Event::MouseEntered) {
+        dirty = true;
+      } else {
+        dirty = handleMenuEvent(model, event, window.getSize().x, window.getSize().y) || dirty;
+      }
+    }
+    if (model.outcome() != MenuModel::Outcome::None) break;
+    if (dirty || since_draw.getElapsedTime().asSeconds() > kRedraw) {
+      background(window);
+      painter.draw(window, window.getSize().x, window.getSize().y, menuPicture(model));
+      window.display();
+      since_draw.restart();
+      dirty = false;
+    } else {
+      sf::sleep(sf::seconds(kPoll));
+    }
+  }
+  return window.isOpen() ? model.outcome() : MenuModel::Outcome::Quit;
+}
+
+}  // namespace nineball::window

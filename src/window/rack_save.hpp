@@ -1,0 +1,52 @@
+#pragma once
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/opponent.hpp"
+#include "nineball/match.hpp"
+
+namespace nineball::window {
+
+class GameSession;
+
+/// A rack left unfinished: how the session started, which rack it was, the score, the
+/// players, and the turns of the rack so far. Replaying the turns through the physics gives
+/// the position again, bit for bit (the physics is deterministic). No SFML.
+struct SavedRack {
+  rules::Game game = rules::Game::NineBall;
+  rules::RuleSet rules = rules::RuleSet::Wpa;
+  std::uint64_t seed = 1;  ///< the session's seed (rack n racks with seed + n)
+  int rack_index = 0;      ///< 0 for the session's first rack
+  std::array<int, 2> racks_won{};
+  std::array<std::string, 2> names = {"Player 1", "Player 2"};
+  app::Opponent opponent;
+  std::vector<TurnInput> turns;
+};
+
+/// $XDG_STATE_HOME/nineball/rack.json, else $HOME/.local/state/nineball/rack.json; empty when
+/// neither gives an absolute path.
+std::string rackSavePath();
+
+/// The rack of a session as it stands (its turns so far).
+SavedRack saveOf(const GameSession& session, const app::Opponent& opponent);
+
+nlohmann::ordered_json rackToJson(const SavedRack& rack);
+/// Nothing (and why) for a document that is not a saved rack.
+std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why);
+
+/// Writes the file atomically, making its directory; false with `why` on failure.
+bool saveRack(const SavedRack& rack, const std::string& path, std::string& why);
+/// Reads the file; nothing when there is none, or (with a logged warning) when it is bad.
+std::optional<SavedRack> loadRack(const std::string& path);
+/// Removes the file if there is one (a finished rack has nothing to resume).
+void forgetRack(const std::string& path);
+
+/// A session at the saved position: the rack racked as it was, the turns replayed. Throws
+/// IllegalAction when a turn does not replay (a file from another version, edited by hand).
+void replayRack(GameSession& session, const SavedRack& rack);
+
+}  // namespace nineball::window

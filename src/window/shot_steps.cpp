@@ -1,0 +1,40 @@
+#include "window/shot_steps.hpp"
+
+namespace nineball::window {
+
+void ShotSteps::begin(const Match& match) {
+  current = previous = match.balls();
+  events_heard = 0;
+  start = match.world().time();
+}
+
+bool ShotSteps::take(Match& match, int steps, double max_time,
+                     std::vector<audio::Impact>& impacts) {
+  const Engine& world = match.world();
+  for (int i = 0; i < steps; ++i) {
+    previous = current;
+    // The match's own steps: a rack played in the window ends as the same rack played headless.
+    const bool over = match.stepShot();
+    current = match.balls();
+    const auto& events = world.events();
+    if (events.size() > events_heard) {
+      const std::vector<Event> fresh(events.begin() + static_cast<long>(events_heard),
+                                     events.end());
+      const auto more = audio::impactsFromEvents(fresh, previous);
+      impacts.insert(impacts.end(), more.begin(), more.end());
+      events_heard = events.size();
+    }
+    if (over || world.time() - start > max_time) return true;
+  }
+  return false;
+}
+
+std::vector<BallState> ShotSteps::between(double alpha) const {
+  std::vector<BallState> out = current;
+  for (std::size_t i = 0; i < out.size() && i < previous.size(); ++i) {
+    if (!out[i].pocket) out[i].pos = previous[i].pos + (out[i].pos - previous[i].pos) * alpha;
+  }
+  return out;
+}
+
+}  // namespace nineball::window

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "audio/impact.hpp"
+#include "nineball/match.hpp"
+
+namespace nineball::window {
+
+/// A shot's world stepped for the window: the last two states (a frame draws between them) and
+/// how many of the world's events have been heard.
+struct ShotSteps {
+  std::vector<BallState> previous;
+  std::vector<BallState> current;
+  std::size_t events_heard = 0;
+  double start = 0.0;  ///< the world's time when the shot began (s)
+
+  /// Starts following the shot `match` has just begun.
+  void begin(const Match& match);
+  /// Takes up to `steps` fixed steps, adding the sounds of new events to `impacts`; true (and
+  /// no more steps) once every ball rests or the shot has run for `max_time` s.
+  bool take(Match& match, int steps, double max_time, std::vector<audio::Impact>& impacts);
+  /// The balls a frame `alpha` (0 to 1) of a step past the last state should draw.
+  std::vector<BallState> between(double alpha) const;
+};
+
+}  // namespace nineball::window

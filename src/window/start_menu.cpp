@@ -1,0 +1,91 @@
+#include "window/start_menu.hpp"
+
+#include "nineball/log.hpp"
+#include "window/menu_screen.hpp"
+#include "window/rack_save.hpp"
+#include "window/state_file.hpp"
+
+namespace nineball::window {
+namespace {
+
+std::optional<std::string> resumeLabel(const std::optional<SavedRack>& saved) {
+  if (!saved) return std::nullopt;
+  return describeSavedRack(*saved);
+}
+
+void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
+  ctx.painter.draw(target, ctx.frame());
+}
+
+}  // namespace
+
+std::string describeSavedRack(const SavedRack& rack) {
+  const std::string p2 = rack.opponent ? std::string("Computer") : rack.names[1];
+  const std::string game =
+      rack.game == rules::Game::NineBall ? "" : std::string(rules::gameName(rack.game)) + ", ";
+  return game + rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
+         ", racks " + std::to_string(rack.racks_won[0]) + "-" + std::to_string(rack.racks_won[1]);
+}
+
+void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
+  MenuModel model(settings, resumeLabel(loadRack(rackSavePath())));
+  drawBehind(ctx, ctx.window);
+  ctx.menu_painter.draw(ctx.window, ctx.window.getSize().x, ctx.window.getSize().y,
+                        menuPicture(model));
+}
+
+bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
+                  Settings& settings, const GameSession::TurnObserver& observer) {
+  const std::string rack_path = rackSavePath();
+  const std::optional<SavedRack> saved = loadRack(rack_path);
+  MenuModel model(settings, resumeLabel(saved));
+  const MenuModel::Outcome outcome = runMenuScreen(
+      ctx.window, model, ctx.menu_painter, [&](sf::RenderTarget& t) { drawBehind(ctx, t); },
+      [&](double w, double h) { ctx.painter.resize(w, h); });
+  settings = model.settings();
+  std::string why;
+  if (!saveSettings(settings, settingsPath(), why)) {
+    logger("game")->warn("settings not saved: {}", why);
+  }
+  if (outcome != MenuModel::Outcome::Play && outcome != MenuModel::Outcome::Resume) return false;
+
+  MatchSetup setup = session.setup();
+  if (outcome == MenuModel::Outcome::Resume && saved) {
+    setup.game = saved->game;
+    setup.rules = saved->rules;
+    setup.seed = saved->seed;
+    try {
+      GameSession resumed(setup);
+      resumed.setTurnObserver(observer);
+      replayRack(resumed, *saved);
+      session = std::move(resumed);
+      computer.setOpponent(session, saved->opponent);
+      session.setSeatName(0, saved->names[0]);
+      if (!saved->opponent) session.setSeatName(1, saved->names[1]);
+      session.say("Rack resumed: " + describeSavedRack(*saved) + ".");
+      logger("game")->info("resumed the saved rack: {} turns replayed", saved->turns.size());
+      return true;
+    } catch (const std::exception& e) {
+      // Whatever the file held, the game goes on: the rack is dropped, never the program.
+      logger("game")->warn("saved rack {} does not replay ({}); starting afresh", rack_path,
+                           printable(e.what()));
+      forgetRack(rack_path);
+    }
+  }
+  const MenuChoice choice = model.choice();
+  setup.game = choice.mode == GameMode::Practice ? rules::Game::NineBall : choice.game;
+  setup.rules = choice.rules;
+  if (choice.mode == GameMode::Practice) {
+    session = GameSession(setup, true);
+    computer.setOpponent(session, std::nullopt);
+    return true;
+  }
+  session = GameSession(setup);
+  session.setTurnObserver(observer);
+  computer.setOpponent(session, choice.opponent);
+  session.setSeatName(0, choice.names[0]);
+  if (!choice.opponent) session.setSeatName(1, choice.names[1]);
+  return true;
+}
+
+}  // namespace nineball::window

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <functional>
+
+#include "render/menu_painter.hpp"
+#include "render/scene_painter.hpp"
+#include "window/computer_player.hpp"
+#include "window/game_session.hpp"
+#include "window/menu.hpp"
+#include "window/rack_save.hpp"
+#include "window/settings.hpp"
+
+namespace nineball::window {
+
+/// What the window needs to show the start menu over the table.
+struct StartMenuContext {
+  sf::RenderWindow& window;
+  render::ScenePainter& painter;
+  render::MenuPainter& menu_painter;
+  std::function<render::Frame()> frame;  ///< the table behind the menu
+};
+
+/// "Ann vs Computer: rack 4, racks 2-1": the saved rack's entry in the menu.
+std::string describeSavedRack(const SavedRack& rack);
+
+/// Draws the start menu once into the window's back buffer (for --menu --screenshot).
+void drawStartMenu(StartMenuContext& ctx, const Settings& settings);
+
+/// Shows the start menu until the player starts a game or quits (false). On a start,
+/// `session` becomes the game chosen (the saved rack replayed for Resume, which it then
+/// forgets if it does not replay), the computer takes Player 2's seat if chosen, the names
+/// are set, and `settings` (the last choice included) are saved. The new session tells
+/// `observer` of its turns, the replayed ones included.
+bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
+                  Settings& settings, const GameSession::TurnObserver& observer);
+
+}  // namespace nineball::window

@@ -1,0 +1,162 @@
+#include "window/turn_message.hpp"
+
+#include <algorithm>
+
+namespace nineball::window {
+namespace {
+
+std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int ball_on,
+                       bool any_first = false) {
+  const std::string on = "the " + std::to_string(ball_on);
+  switch (foul) {
+    case rules::Foul::Scratch:
+      return "the cue ball went into a pocket";
+    case rules::Foul::WrongBallFirst:
+      return "the cue ball hit the " + std::to_string(summary.first_contact.value_or(0)) +
+             " before " + on;
+    case rules::Foul::NoContact:
+      return "the cue ball hit no ball";
+    case rules::Foul::NoRail:
+      return "no ball reached a cushion after the hit";
+    case rules::Foul::BadBreak:
+      if (!any_first && summary.first_contact != ball_on) {
+        return "the break must hit " + on + " first";
+      }
+      return "no ball dropped on the break and fewer than four reached a cushion";
+    case rules::Foul::ThreeFouls:
+      return "a third foul in a row";
+    case rules::Foul::EightEarly:
+      return "the 8 dropped before the shooter's group was cleared";
+    case rules::Foul::WrongGroupFirst:
+      return "the cue ball hit the " + std::to_string(summary.first_contact.value_or(0)) +
+             " first, not a ball of the shooter's";
+    case rules::Foul::WrongPocket:
+      return "the called ball dropped in another pocket than the one called";
+    case rules::Foul::NoCall:
+      return "a ball dropped that was not called";
+    case rules::Foul::None:
+      break;
+  }
+  return "";
+}
+
+// The foul that a third foul in a row stands for.
+rules::Foul underlyingFoul(const rules::ShotSummary& summary, int ball_on) {
+  if (summary.cue_pocketed) return rules::Foul::Scratch;
+  if (!summary.first_contact) return rules::Foul::NoContact;
+  if (*summary.first_contact != ball_on) return rules::Foul::WrongBallFirst;
+  return rules::Foul::NoRail;
+}
+
+// The object balls pocketed on a foul stay down (but any the rules spot): the message says so,
+// or the ball on would change with no word why.
+std::string downOnFoul(const rules::Verdict& v) {
+  std::vector<int> stay;
+  for (int b : v.pocketed) {
+    if (std::find(v.to_spot.begin(), v.to_spot.end(), b) == v.to_spot.end()) stay.push_back(b);
+  }
+  if (stay.empty()) return "";
+  std::string list = ballList(stay);
+  list[0] = 'T';
+  return " " + list +
+         (stay.size() == 1 ? " went down and stays down." : " went down and stay down.");
+}
+
+}  // namespace
+
+std::string ballList(const std::vector<int>& balls) {
+  std::string s;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (i > 0) s += i + 1 == balls.size() ? " and " : ", ";
+    s += "the " + std::to_string(balls[i]);
+  }
+  return s;
+}
+
+TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
+                         const std::string& shooter, const std::string& next,
+                         const rules::Groups& groups_before) {
+  const rules::Verdict& v = record.verdict;
+  TurnMessage m;
+  if (record.kind == TurnInput::Kind::Decision) {
+    if (record.answered == rules::Decision::RerackOrPlayOn) {
+      m.text = record.shoot ? shooter + " plays the table as it lies."
+                            : shooter + " has the balls re-racked and breaks.";
+      return m;
+    }
+    m.text = v.next == record.shooter ? shooter + " plays from there."
+                                      : shooter + " passes: " + next + " shoots.";
+    return m;
+  }
+  const std::string potted = v.pocketed.empty() ? "" : ballList(v.pocketed);
+  const bool spotted = !v.to_spot.empty();
+  const std::string spot_note = spotted ? " " + ballList(v.to_spot) + " is spotted." : "";
+  if (v.winner) {
+    m.tone = render::Tone::Win;
+    const bool shooter_won = *v.winner == record.shooter;
+    if (v.foul == rules::Foul::ThreeFouls) {
+      m.text = "Third foul in a row by " + shooter + " (" +
+               foulReason(underlyingFoul(summary, ball_on), summary, ball_on) + "): " + next +
+               " wins the rack.";
+    } else if (!shooter_won && !v.legal()) {
+      m.text = "Foul with " + potted + " down (" + foulReason(v.foul, summary, ball_on) +
+               "): " + next + " wins the rack.";
+    } else if (!shooter_won) {
+      m.text = "Foul with " + potted + " down: " + next + " wins the rack.";
+    } else {
+      m.text = shooter + " pockets " + potted + " and wins the rack!";
+    }
+    return m;
+  }
+  if (record.kind == TurnInput::Kind::PushOut) {
+    m.text = shooter + " pushed out" + (potted.empty() ? "" : " (" + potted + " down)") + "." +
+             spot_note + " " + next + ": play from here or pass it back.";
+    return m;
+  }
+  std::string groups_note;
+  if (groups_before.open() && !v.groups.open()) {
+    if (const auto g = v.groups.of(record.shooter)) {
+      const auto o = v.groups.of(rules::other(record.shooter));
+      groups_note = " " + shooter + " has the " + rules::groupName(*g) + ", " + next + " the " +
+                    (o ? rules::groupName(*o) : "others") + ".";
+    }
+  }
+  if (v.decision == rules::Decision::RerackOrPlayOn) {
+    m.tone = render::Tone::Foul;
+    // Eight-ball's break may hit any ball first: only the count of balls down or to a cushion
+    // makes it illegal.
+    m.text = "Illegal break by " + shooter + ": " + foulReason(v.foul, summary, ball_on, true) +
+             "." + downOnFoul(v) + spot_note + " " + next + ": play on as it lies, or re-rack.";
+    return m;
+  }
+  if (v.call_breach != rules::Foul::None) {
+    m.text = shooter + " pockets " + potted + " but not as called (" +
+             foulReason(v.call_breach, summary, ball_on) + "): the turn ends." + spot_note + " " +
+             next + ": play from there or pass it back.";
+    return m;
+  }
+  if (!v.legal()) {
+    m.tone = render::Tone::Foul;
+    m.text = "Foul by " + shooter + ": " + foulReason(v.foul, summary, ball_on) + "." +
+             downOnFoul(v) + spot_note;
+    if (v.ball_in_hand) {
+      m.text += " Ball in hand for " + next + ".";
+    } else if (v.cue_to_head_spot) {
+      m.text += " Cue ball to the head spot, " + next + " to shoot.";
+    } else {
+      m.text += " " + next + " to shoot.";
+    }
+    m.text += groups_note;
+    return m;
+  }
+  if (!potted.empty()) {
+    m.text =
+        shooter + " pockets " + potted + (v.next == record.shooter ? " and shoots again." : ".");
+  } else {
+    m.text = "Nothing down. " + next + " to shoot.";
+  }
+  m.text += groups_note;
+  return m;
+}
+
+}  // namespace nineball::window

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+
+#include "nineball/match.hpp"
+#include "nineball/rules.hpp"
+#include "render/hud_state.hpp"
+
+namespace nineball::window {
+
+/// A line for the players about a finished turn, and how it reads.
+struct TurnMessage {
+  std::string text;
+  render::Tone tone = render::Tone::Info;
+};
+
+/// Says what a turn gave: what dropped, the foul and its reason, ball in hand, the push-out
+/// choice, the winner. `ball_on` is the ball on before the shot; `shooter` and `next` are the
+/// names of the players the record calls shooter and next; `groups_before` the eight-ball
+/// groups before the shot (the message says when they are settled).
+TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
+                         const std::string& shooter, const std::string& next,
+                         const rules::Groups& groups_before = {});
+
+/// "the 3", "the 3 and the 5", "the 2, the 3 and the 7".
+std::string ballList(const std::vector<int>& balls);
+
+}  // namespace nineball::window

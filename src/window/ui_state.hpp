@@ -1,0 +1,25 @@
+#pragma once
+
+#include <optional>
+
+#include "nineball/vec2.hpp"
+#include "render/scene_painter.hpp"
+
+namespace nineball::window {
+
+/// What the mouse is dragging.
+enum class Drag { None, Power, Cue, Ball, Spin, Tilt };
+
+/// The window's own state beside the match: dialogs and drags. No SFML.
+struct UiState {
+  bool help = false;
+  bool confirm_quit = false;
+  Drag drag = Drag::None;
+  Vec2 drag_anchor;   ///< where a power drag began (m)
+  double pull = 0.0;  ///< how far the stick is drawn back (m)
+  double speed_before_drag = 0.0;
+  std::optional<render::CueGhost> ghost;  ///< the ball under the pointer while moved
+  Vec2 pointer;  ///< where the pointer last was on the table (m): practice adds balls there
+};
+
+}  // namespace nineball::window

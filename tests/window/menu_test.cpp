@@ -1,0 +1,181 @@
+// The start menu and the settings screen as a state machine: keys, text, clicks, the choice.
+#include "window/menu.hpp"
+
+#include <gtest/gtest.h>
+
+namespace nineball::window {
+namespace {
+
+int rowNamed(const MenuModel& m, const std::string& label) {
+  const auto rows = m.rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].label == label) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void selectRow(MenuModel& m, const std::string& label) {
+  const int want = rowNamed(m, label);
+  ASSERT_GE(want, 0) << label;
+  for (int i = 0; i < 20 && m.selected() != want; ++i) m.key(MenuKey::Down);
+  ASSERT_EQ(m.selected(), want) << label;
+}
+
+TEST(Menu, StartsOnPlayAndSkipsWhatIsGreyed) {
+  MenuModel m(Settings{}, std::nullopt);
+  EXPECT_EQ(m.screen(), MenuModel::Screen::Main);
+  EXPECT_EQ(m.rows()[m.selected()].label, "Play nine-ball");
+  EXPECT_TRUE(m.rows()[rowNamed(m, "Practice")].enabled);
+  EXPECT_FALSE(m.rows()[rowNamed(m, "Computer level")].enabled);
+  m.key(MenuKey::Down);
+  EXPECT_EQ(m.rows()[m.selected()].label, "Practice");
+  m.key(MenuKey::Down);
+  EXPECT_EQ(m.rows()[m.selected()].label, "app::Opponent");
+  m.key(MenuKey::Up);
+  m.key(MenuKey::Up);
+  EXPECT_EQ(m.rows()[m.selected()].label, "Play nine-ball");
+  m.key(MenuKey::Up);  // round to the bottom
+  EXPECT_EQ(m.rows()[m.selected()].label, "Quit");
+}
+
+TEST(Menu, PracticeIsAGameModeOfItsOwn) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "Practice");
+  m.key(MenuKey::Enter);
+  ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
+  EXPECT_EQ(m.choice().mode, GameMode::Practice);
+  EXPECT_EQ(m.settings().last.mode, GameMode::Practice);
+}
+
+TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "app::Opponent");
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Computer");
+  EXPECT_TRUE(m.rows()[rowNamed(m, "Computer level")].enabled);
+  EXPECT_FALSE(m.rows()[rowNamed(m, "Player 2 name")].enabled);
+  selectRow(m, "Computer level");
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Hard");
+  selectRow(m, "Rules");
+  m.key(MenuKey::Enter);
+  EXPECT_EQ(m.rows()[m.selected()].value.substr(0, 5), "Paper");
+  selectRow(m, "Play nine-ball");
+  m.key(MenuKey::Enter);
+  ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
+  const MenuChoice c = m.choice();
+  EXPECT_EQ(c.mode, GameMode::NineBall);
+  EXPECT_EQ(c.opponent, app::Opponent(ai::Level::Hard));
+  EXPECT_EQ(c.rules, rules::RuleSet::Paper);
+  EXPECT_FALSE(c.resume);
+  // The settings keep the choice for the next start.
+  EXPECT_EQ(m.settings().last.opponent, app::Opponent(ai::Level::Hard));
+  EXPECT_EQ(m.settings().last.rules, rules::RuleSet::Paper);
+}
+
+TEST(Menu, NamesAreTypedWithTheKeyboard) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "Player 1 name");
+  m.text(U'x');  // not editing yet: ignored
+  EXPECT_EQ(m.rows()[m.selected()].value, "Player 1");
+  m.key(MenuKey::Enter);
+  ASSERT_TRUE(m.editing());
+  EXPECT_TRUE(m.rows()[m.selected()].editing);
+  for (int i = 0; i < 8; ++i) m.key(MenuKey::Backspace);
+  for (char32_t c : std::u32string(U"Ann \u00e9\u2603")) m.text(c);
+  m.text(U'\r');  // control characters are keys, not text
+  m.text(0x7F);
+  m.key(MenuKey::Backspace);  // erases the whole snowman, three bytes
+  m.key(MenuKey::Enter);
+  EXPECT_FALSE(m.editing());
+  EXPECT_EQ(m.choice().names[0], "Ann \u00e9");
+  // An emptied name comes back as the seat's.
+  selectRow(m, "Player 2 name");
+  m.key(MenuKey::Enter);
+  for (int i = 0; i < 20; ++i) m.key(MenuKey::Backspace);
+  m.key(MenuKey::Escape);
+  EXPECT_EQ(m.choice().names[1], "Player 2");
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::None);  // Esc ended the edit, not the menu
+  // Names have a limit.
+  m.key(MenuKey::Enter);
+  for (int i = 0; i < 100; ++i) m.text(U'w');
+  m.key(MenuKey::Enter);
+  EXPECT_LE(m.choice().names[1].size(), 24u);
+}
+
+TEST(Menu, ResumeComesFirstWhenARackIsSaved) {
+  MenuModel m(Settings{}, std::string("Ann vs Bob: rack 2, racks 1-0"));
+  EXPECT_EQ(m.rows()[0].label, "Resume rack");
+  EXPECT_EQ(m.rows()[0].value, "Ann vs Bob: rack 2, racks 1-0");
+  EXPECT_EQ(m.selected(), 0);
+  m.key(MenuKey::Enter);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::Resume);
+  EXPECT_TRUE(m.choice().resume);
+}
+
+TEST(Menu, TheSettingsScreenEditsTheSettings) {
+  Settings s;
+  s.last.opponent = ai::Level::Easy;
+  MenuModel m(s, std::nullopt);
+  EXPECT_EQ(m.choice().opponent, app::Opponent(ai::Level::Easy));  // preset from the last game
+  selectRow(m, "Settings");
+  m.key(MenuKey::Enter);
+  ASSERT_EQ(m.screen(), MenuModel::Screen::Settings);
+  EXPECT_EQ(m.rows()[m.selected()].label, "Volume");
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.settings().volume, 90);
+  for (int i = 0; i < 5; ++i) m.key(MenuKey::Right);
+  EXPECT_EQ(m.settings().volume, 100);
+  m.key(MenuKey::Down);
+  m.key(MenuKey::Enter);
+  EXPECT_TRUE(m.settings().muted);
+  m.key(MenuKey::Down);
+  m.key(MenuKey::Left);
+  EXPECT_EQ(m.settings().guide, GuideLength::Short);
+  m.key(MenuKey::Down);
+  m.key(MenuKey::Right);
+  EXPECT_TRUE(m.settings().bank_line);
+  m.key(MenuKey::Down);
+  std::vector<int> caps;
+  for (int i = 0; i < 5; ++i) {
+    m.key(MenuKey::Right);
+    caps.push_back(m.settings().frame_cap);
+  }
+  EXPECT_EQ(caps, (std::vector<int>{120, 240, 0, 30, 60}));
+  m.key(MenuKey::Escape);
+  EXPECT_EQ(m.screen(), MenuModel::Screen::Main);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::None);
+  m.key(MenuKey::Escape);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::Quit);
+}
+
+TEST(Menu, TheSettingsAloneCloseWithBackOrEscape) {
+  MenuModel m = MenuModel::settingsOnly(Settings{});
+  EXPECT_EQ(m.screen(), MenuModel::Screen::Settings);
+  m.key(MenuKey::Escape);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::Close);
+  MenuModel n = MenuModel::settingsOnly(Settings{});
+  n.click(static_cast<int>(n.rows().size()) - 1);
+  EXPECT_EQ(n.outcome(), MenuModel::Outcome::Close);
+}
+
+TEST(Menu, ThePointerSelectsAndClicks) {
+  MenuModel m(Settings{}, std::nullopt);
+  const int rules = rowNamed(m, "Rules");
+  m.hover(rules);
+  EXPECT_EQ(m.selected(), rules);
+  m.hover(rowNamed(m, "Computer level"));  // greyed with no computer: stays
+  EXPECT_EQ(m.selected(), rules);
+  m.hover(-1);
+  EXPECT_EQ(m.selected(), rules);
+  m.click(rules);
+  EXPECT_EQ(m.choice().rules, rules::RuleSet::Paper);
+  m.click(rowNamed(m, "Player 1 name"));
+  EXPECT_TRUE(m.editing());
+  m.click(rowNamed(m, "Quit"));  // ends the edit and quits
+  EXPECT_FALSE(m.editing());
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::Quit);
+}
+
+}  // namespace
+}  // namespace nineball::window
