@@ -13,6 +13,7 @@
 #include "nineball/rules.hpp"
 #include "nineball/shot.hpp"
 #include "nineball/table.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball {
 
@@ -25,7 +26,7 @@ class IllegalAction : public std::runtime_error {
 
 /// How a rack starts.
 struct MatchSetup {
-  rules::Game game = rules::Game::NineBall;
+  rules::Game game = defaultGame().id;
   rules::RuleSet rules = rules::RuleSet::Wpa;  ///< Paper: nine-ball only
   std::uint64_t seed = 1;                      ///< places the rack's free balls
   TableDef table;

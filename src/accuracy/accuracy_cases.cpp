@@ -6,6 +6,7 @@
 #include "nineball/engine.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball {
 namespace {
@@ -274,7 +275,7 @@ double breakCueRebound(const StepParams& step, double gap) {
   s.step = step;
   s.until = 0.3;
   s.balls.resize(1);
-  for (const BallState& b : rackNineBall(s.table, s.physics.ball_radius, 1, gap)) {
+  for (const BallState& b : defaultGame().rack(s.table, s.physics.ball_radius, 1, gap)) {
     s.balls.push_back(b);
   }
   return simulate(s).balls[0].vel.x / 10.0;

@@ -6,6 +6,7 @@
 #include "ai/planner_candidates.hpp"
 #include "ai/planner_geometry.hpp"
 #include "nineball/aim_guide.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::ai {
 namespace {
@@ -152,7 +153,7 @@ const BallState* apexBall(const SearchContext& ctx) {
 std::vector<Candidate> breakShots(const SearchContext& ctx, const Evaluator& eval) {
   std::vector<Candidate> out;
   const BallState* on = apexBall(ctx);
-  const bool every_spot = ctx.in.rack.game() == rules::Game::TenBall;
+  const bool every_spot = gameDef(ctx.in.rack.game()).break_from_every_spot;
   const int spots = every_spot ? static_cast<int>(std::size(kBreakSpots))
                                : std::min<int>(ctx.level.break_spots, std::size(kBreakSpots));
   for (int i = 0; i < spots; ++i) {

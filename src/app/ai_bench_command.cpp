@@ -11,6 +11,7 @@
 #include "nineball/log.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::app {
 namespace {
@@ -40,21 +41,16 @@ bool contains(const std::vector<int>& v, int x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
-// Whether the shot did what a position asks: in nine-ball the ball on dropped on a legal shot;
-// in ten-ball the same, as called; in eight-ball a ball dropped on a legal shot that keeps the
-// table (any ball of the group, or of either on the open table).
+// Whether the shot did what a position asks: where players take groups, a ball dropped on a
+// legal shot that keeps the table (any ball of the group, or of either on the open table);
+// elsewhere the ball on dropped on a legal shot, as called where a pot must be.
 bool madeIt(rules::Game game, const TurnRecord& r, int on) {
   const rules::Verdict& v = r.verdict;
   if (!v.legal()) return false;
-  switch (game) {
-    case rules::Game::NineBall:
-      return contains(v.pocketed, on);
-    case rules::Game::TenBall:
-      return contains(v.pocketed, on) && v.call_breach == rules::Foul::None;
-    case rules::Game::EightBall:
-      return !v.pocketed.empty() && (v.next == r.shooter || v.winner == r.shooter);
+  if (gameDef(game).groups) {
+    return !v.pocketed.empty() && (v.next == r.shooter || v.winner == r.shooter);
   }
-  return false;
+  return contains(v.pocketed, on) && v.call_breach == rules::Foul::None;
 }
 
 void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally& t) {
@@ -132,7 +128,7 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
       ->check(CLI::IsMember({"easy", "medium", "hard"}))
       ->capture_default_str();
   cmd->add_option("--game", options.game, "Game to play")
-      ->check(CLI::IsMember({"nine-ball", "eight-ball", "ten-ball"}))
+      ->check(CLI::IsMember(gameNames()))
       ->capture_default_str();
   cmd->add_option("--positions", options.positions, "Seeded positions to pot the ball on from")
       ->check(CLI::Range(0, 100000))
@@ -172,9 +168,7 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   out << std::fixed << std::setprecision(2);
   out << "Computer opponent, " << options.game << ", level " << options.level << ", "
       << options.threads << " threads, seeds from " << options.seed << "\n";
-  const char* aim = *game == rules::Game::EightBall ? "potted a ball and kept the table"
-                    : *game == rules::Game::TenBall ? "potted the ball on as called"
-                                                    : "potted the ball on";
+  const char* aim = gameDef(*game).made;
   out << "positions: " << aim << " in " << positions.potted << " of " << options.positions
       << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
       << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";

@@ -5,12 +5,14 @@
 #include <iosfwd>
 #include <string>
 
+#include "nineball/games.hpp"
+
 namespace nineball::app {
 
 /// Options of `nineball ai-bench`.
 struct AiBenchOptions {
   std::string level = "hard";      ///< the level measured
-  std::string game = "nine-ball";  ///< nine-ball | eight-ball | ten-ball
+  std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
   int positions = 100;             ///< seeded practice positions to pot the ball on from
   int racks = 100;                 ///< racks broken to try to run out
   std::uint64_t seed = 1;          ///< first seed of the positions and the racks

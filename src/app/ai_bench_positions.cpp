@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "nineball/random.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::app {
 namespace {
@@ -11,7 +12,6 @@ namespace {
 constexpr double kGap = 0.005;
 constexpr int kMinObjectBalls = 3;
 constexpr int kMaxObjectBalls = 5;
-constexpr int kEightBall = 8;
 
 }  // namespace
 
@@ -20,16 +20,22 @@ std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
   std::uint64_t state = seed * 0x2545F4914F6CDD1Dull + 0x1234567ull;
   const TableGeometry geo = buildTable(table, physics.ball_radius);
   const double r = physics.ball_radius;
-  std::vector<int> numbers = {1, 2, 3, 4, 5, 6, 7, 8, 9};
-  if (game == rules::Game::TenBall) numbers.push_back(10);
-  if (game == rules::Game::EightBall) numbers = {1, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15};
+  // The balls a layout must hold are always there; the others are drawn from the rest.
+  const GameDef& def = gameDef(game);
+  std::vector<int> numbers;
+  for (int b : def.balls) {
+    if (std::find(def.required_balls.begin(), def.required_balls.end(), b) ==
+        def.required_balls.end()) {
+      numbers.push_back(b);
+    }
+  }
   for (std::size_t i = numbers.size() - 1; i > 0; --i) {
     std::swap(numbers[i], numbers[splitmix64(state) % (i + 1)]);
   }
   const int count = kMinObjectBalls +
                     static_cast<int>(splitmix64(state) % (kMaxObjectBalls - kMinObjectBalls + 1));
   std::vector<int> ids = {kCueBall};
-  if (game == rules::Game::EightBall) ids.push_back(kEightBall);
+  for (int b : def.required_balls) ids.push_back(b);
   ids.insert(ids.end(), numbers.begin(), numbers.begin() + count);
   std::vector<BallState> balls;
   for (int id : ids) {

@@ -7,6 +7,7 @@
 #include "nineball/params.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/table.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::app {
 
@@ -16,6 +17,6 @@ namespace nineball::app {
 /// position on every machine.
 std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
                                       const PhysicsParams& physics,
-                                      rules::Game game = rules::Game::NineBall);
+                                      rules::Game game = defaultGame().id);
 
 }  // namespace nineball::app

@@ -7,6 +7,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/opponent.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::app {
 namespace {
@@ -54,9 +55,9 @@ std::string screenshotProblem(const std::string& name) {
 std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   std::vector<CLI::Option*> opts;
   opts.push_back(app.add_option("--game", o.game, "Game window: the game played")
-                     ->check(CLI::IsMember({"nine-ball", "eight-ball", "ten-ball"}))
+                     ->check(CLI::IsMember(gameNames()))
                      ->capture_default_str());
-  opts.push_back(app.add_option("--rules", o.rules, "Game window: rules of nine-ball")
+  opts.push_back(app.add_option("--rules", o.rules, "Game window: the rules (paper: the seed paper's, for nine-ball)")
                      ->check(CLI::IsMember({"wpa", "paper"}))
                      ->capture_default_str());
   opts.push_back(

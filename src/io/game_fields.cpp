@@ -1,63 +1,66 @@
 #include "io/game_fields.hpp"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "io/json_fields.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::io {
 
 rules::Game gameField(const nlohmann::json& doc) {
   const nlohmann::json* p = optional(doc, "game");
-  if (!p) return rules::Game::NineBall;
+  if (!p) return defaultGame().id;
   const std::string name = text(*p, "game");
-  const auto game = rules::gameFromName(name);
+  const GameDef* game = gameNamed(name);
   if (!game) {
-    refuse("game", "unknown game " + quote(name) +
-                       " (expected \"nine-ball\", \"eight-ball\" or \"ten-ball\")");
+    std::string expected;
+    const std::vector<std::string> names = gameNames();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (i > 0) expected += i + 1 == names.size() ? " or " : ", ";
+      expected += quote(names[i]);
+    }
+    refuse("game", "unknown game " + quote(name) + " (expected " + expected + ")");
   }
-  return *game;
+  return game->id;
 }
 
 rules::RuleSet rulesField(const nlohmann::json& doc, rules::Game game) {
   const nlohmann::json* p = optional(doc, "rules");
-  if (!p) return rules::RuleSet::Wpa;
+  if (!p) return gameDef(game).rule_sets.front();
   const std::string name = text(*p, "rules");
   const auto found = rules::ruleSetFromName(name);
   if (!found) refuse("rules", "unknown rules " + quote(name) + " (expected \"wpa\" or \"paper\")");
-  if (*found == rules::RuleSet::Paper && game != rules::Game::NineBall) {
-    refuse("rules", std::string("the paper's rules are nine-ball's only, not ") +
-                        rules::gameName(game) + "'s");
+  if (!gameDef(game).playedBy(*found)) {
+    refuse("rules", rulesOnlyFor(*found) + ", not " + gameDef(game).name + "'s");
   }
   return *found;
 }
 
 void checkGameBalls(rules::Game game, const std::vector<BallState>& balls) {
-  bool object_ball = false, eight = false;
+  const GameDef& def = gameDef(game);
+  bool object_ball = false;
+  std::vector<int> missing = def.required_balls;
   for (const BallState& b : balls) {
     if (b.id == kCueBall) continue;
     object_ball = true;
-    eight = eight || b.id == 8;
-    const int last = game == rules::Game::EightBall ? 15 : game == rules::Game::TenBall ? 10 : 0;
-    if (last > 0 && b.id > last) {
-      refuse("balls", std::string(rules::gameName(game)) + " has no ball " + std::to_string(b.id) +
-                          " (1-" + std::to_string(last) + ")");
+    missing.erase(std::remove(missing.begin(), missing.end(), b.id), missing.end());
+    if (def.highest_ball > 0 && b.id > def.highest_ball) {
+      refuse("balls", std::string(def.name) + " has no ball " + std::to_string(b.id) + " (1-" +
+                          std::to_string(def.highest_ball) + ")");
     }
   }
   if (!object_ball) refuse("balls", "no object ball to play (ids other than 0)");
-  if (game == rules::Game::EightBall && !eight) {
-    refuse("balls", "an eight-ball layout needs the 8 (the rack is won on it)");
-  }
+  if (!missing.empty()) refuse("balls", def.required_why);
 }
 
 bool decisionField(const std::string& word, rules::Game game, const std::string& path) {
-  const bool eight_ball = game == rules::Game::EightBall;
-  const char* const expected = eight_ball ? "\"play-on\" or \"rerack\" (eight-ball's choice after "
-                                            "an illegal break)"
-                                          : "\"shoot\" or \"pass\" (the choice after a push-out)";
-  if (eight_ball && (word == "play-on" || word == "rerack")) return word == "play-on";
-  if (!eight_ball && (word == "shoot" || word == "pass")) return word == "shoot";
-  refuse(path, std::string("expected ") + expected + " in " + rules::gameName(game) + ", found " +
-                   quote(word));
+  const GameDef& def = gameDef(game);
+  if (word == def.decision.yes || word == def.decision.no) return word == def.decision.yes;
+  refuse(path, std::string("expected ") + quote(def.decision.yes) + " or " +
+                   quote(def.decision.no) + " (" + def.decision.about + ") in " + def.name +
+                   ", found " + quote(word));
 }
 
 }  // namespace nineball::io

@@ -11,6 +11,7 @@
 #include "io/scene_parts.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::io {
 namespace {
@@ -206,12 +207,12 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
     if (t.call) {
       turn["call"] = {{"ball", t.call->ball}, {"pocket", pocketName(t.call->pocket)}};
     }
-    if (rack.game() == rules::Game::TenBall) {
+    if (gameDef(rack.game()).pot_not_as_called_passes) {
       turn["call_breach"] = v.call_breach == rules::Foul::None
                                 ? ordered_json(nullptr)
                                 : ordered_json(rules::foulName(v.call_breach));
     }
-    if (rack.game() == rules::Game::EightBall) {
+    if (gameDef(rack.game()).groups) {
       // A decision changes no group: it shows those of the shot before.
       if (t.kind != TurnInput::Kind::Decision) groups = v.groups;
       turn["groups"] = {{"A", groupJson(groups.a)}, {"B", groupJson(groups.b)}};

@@ -7,6 +7,7 @@
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "play/shot_summary.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball {
 namespace {
@@ -138,17 +139,16 @@ void Match::beginShot(const TurnInput& turn) {
     throw IllegalAction("the illegal break waits for the opponent's decision (play on or rerack)");
   }
   if (rack_.awaitingDecision()) {
-    throw IllegalAction(rack_.game() != rules::Game::TenBall
-                            ? "the push-out waits for the opponent's decision (shoot or pass)"
-                            : "the turn waits for the opponent's decision (shoot or pass)");
+    throw IllegalAction(gameDef(rack_.game()).pot_not_as_called_passes
+                            ? "the turn waits for the opponent's decision (shoot or pass)"
+                            : "the push-out waits for the opponent's decision (shoot or pass)");
   }
   const bool push_out = turn.kind == TurnInput::Kind::PushOut;
   if (push_out && !rack_.pushOutAvailable()) throw IllegalAction("no push-out is allowed now");
   if (!push_out && rack_.callRequired() && !turn.call) {
     throw IllegalAction(
-        std::string("every ") +
-        (rack_.game() == rules::Game::EightBall ? "shot at the 8" : "shot after the break") +
-        " in " + rules::gameName(rack_.game()) +
+        std::string("every ") + gameDef(rack_.game()).called_shots + " in " +
+        gameDef(rack_.game()).name +
         " is called: the turn needs \"call\": {\"ball\", \"pocket\"}");
   }
   if (turn.call && !rack_.isBreak()) {

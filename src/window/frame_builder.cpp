@@ -4,6 +4,7 @@
 
 #include "nineball/rules.hpp"
 #include "window/game_help.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -163,19 +164,17 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     hud.players[session.seatOf(p)].fouls = rack.consecutiveFouls(p);
   }
   hud.ball_on = rack.over() ? 0 : rack.ballOn();
-  // Eight-ball has a ball on only when one ball may be hit first (the 8); the players' groups
-  // say the rest.
-  if (rack.game() == rules::Game::EightBall && rack.legalFirstBalls().size() != 1) hud.ball_on = 0;
+  // A ball on only when one ball may be hit first (eight-ball: the 8); groups say the rest.
+  if (rack.legalFirstBalls().size() != 1) hud.ball_on = 0;
   for (const BallState& b : session.match().balls()) {
     if (b.id != kCueBall && !b.pocket) hud.on_table.push_back(b.id);
   }
   std::sort(hud.on_table.begin(), hud.on_table.end());
   hud.pocketed = session.pocketedThisRack();
   hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
-  if (rack.game() != rules::Game::NineBall) {
-    hud.rules = std::string(rules::gameName(rack.game())) + ", " + hud.rules;
-  }
-  if (rack.game() == rules::Game::EightBall) {
+  const GameDef& game = gameDef(rack.game());
+  if (&game != &defaultGame()) hud.rules = std::string(game.name) + ", " + hud.rules;
+  if (game.groups) {
     hud.split_groups = true;
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {
       render::PlayerPanel& panel = hud.players[session.seatOf(p)];

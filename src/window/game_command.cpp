@@ -10,6 +10,7 @@
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 #include "window/game_window.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 
@@ -17,9 +18,11 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
   GameStart start;
   start.setup.game = *rules::gameFromName(options.game);
   start.setup.rules = *rules::ruleSetFromName(options.rules);
-  if (start.setup.game != rules::Game::NineBall) {
-    if (start.setup.rules != rules::RuleSet::Wpa) {
-      err << "nineball: --rules " << options.rules << " is nine-ball's only; " << options.game
+  const GameDef& game = gameDef(start.setup.game);
+  if (&game != &defaultGame()) {
+    if (!game.playedBy(start.setup.rules)) {
+      err << "nineball: --rules " << options.rules << " is "
+          << gamesPlayedBy(start.setup.rules) << "'s only; " << options.game
           << " is played by the WPA rules\n";
       return app::kExitBadInput;
     }

@@ -10,6 +10,7 @@
 #include "play/shot_summary.hpp"
 #include "window/shot_call.hpp"
 #include "window/turn_message.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -313,8 +314,8 @@ bool GameSession::shoot(const TurnInput& given) {
   if (!practice_ && turn.kind == TurnInput::Kind::Shot && match_->rack().callRequired() &&
       !turn.call) {
     say(std::string("Call the shot first: click the pocket for the ") + std::to_string(callBall()) +
-            (match_->rack().game() == rules::Game::TenBall ? " (click a ball first to call another)"
-                                                           : "") +
+            (gameDef(match_->rack().game()).call_any_ball ? " (click a ball first to call another)"
+                                                            : "") +
             ", or press K to call the obvious shot.",
         render::Tone::Warning);
     return false;
@@ -376,7 +377,7 @@ bool GameSession::clickCall(Vec2 pos) {
         " pocket.");
     return true;
   }
-  if (match_->rack().game() != rules::Game::TenBall) return false;
+  if (!gameDef(match_->rack().game()).call_any_ball) return false;
   const auto ball = ballAt(pos);
   if (!ball || *ball == kCueBall) return false;
   call_ball_ = *ball;
@@ -392,7 +393,7 @@ void GameSession::callObvious() {
   }
   const rules::Rack& rack = match_->rack();
   const std::vector<int> callable =
-      rack.game() == rules::Game::TenBall ? rack.ballsOnTable() : rack.legalFirstBalls();
+      gameDef(rack.game()).call_any_ball ? rack.ballsOnTable() : rack.legalFirstBalls();
   const auto c =
       obviousCall(match_->world().table(), shot_.current, aimGuide(), callBall(), callable);
   if (!c) return;

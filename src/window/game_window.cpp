@@ -33,6 +33,7 @@
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -162,7 +163,7 @@ int runGame(const app::GameOptions& options_in, const GameStart& start, std::ost
     settings.last.opponent = app::opponentFromName(options.opponent).value_or(std::nullopt);
   }
   if (options.rules != "wpa") settings.last.rules = start.setup.rules;
-  if (options.game != "nine-ball") settings.last.game = start.setup.game;
+  if (options.game != defaultGame().name) settings.last.game = start.setup.game;
   if (!capture) fitDesktop(options);
   bool fullscreen = options.fullscreen && !capture;
   sf::RenderWindow window;

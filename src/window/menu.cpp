@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "window/player_name.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -98,7 +99,7 @@ bool MenuModel::enabled(Item item) const {
     case Item::Level:
       return computer_;
     case Item::Rules:
-      return nineBall();  // the paper's rules are nine-ball's only
+      return severalRules();
     case Item::Name2:
       return !computer_;  // the computer's seat is called "Computer"
     default:
@@ -136,7 +137,9 @@ MenuRow MenuModel::row(Item item) const {
       r = {Kind::Choice, "Rules",
            settings_.last.rules == rules::RuleSet::Wpa ? "WPA" : "Paper (the seed paper's)",
            r.enabled, false};
-      if (!nineBall()) r.value = "WPA (the paper's are nine-ball's only)";
+      if (!severalRules()) {
+        r.value = "WPA (the paper's are " + gamesPlayedBy(rules::RuleSet::Paper) + "'s only)";
+      }
       break;
     case Item::Name1:
     case Item::Name2: {
@@ -187,8 +190,8 @@ std::vector<MenuRow> MenuModel::rows() const {
   return out;
 }
 
-bool MenuModel::nineBall() const {
-  return settings_.last.game == rules::Game::NineBall;
+bool MenuModel::severalRules() const {
+  return gameDef(settings_.last.game).rule_sets.size() > 1;
 }
 
 void MenuModel::selectFirst() {
@@ -262,7 +265,7 @@ void MenuModel::activate(Item item) {
       break;
     case Item::Play:
     case Item::Practice:
-      settings_.last.mode = item == Item::Practice ? GameMode::Practice : GameMode::NineBall;
+      settings_.last.mode = item == Item::Practice ? GameMode::Practice : GameMode::Match;
       settings_.last = choice();
       outcome_ = Outcome::Play;
       break;
@@ -361,8 +364,7 @@ void MenuModel::click(int i) {
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
   c.opponent = computer_ ? app::Opponent(level_) : std::nullopt;
-  // The paper's rules are nine-ball's only.
-  if (c.game != rules::Game::NineBall) c.rules = rules::RuleSet::Wpa;
+  if (!gameDef(c.game).playedBy(c.rules)) c.rules = gameDef(c.game).rule_sets.front();
   c.resume = outcome_ == Outcome::Resume;
   return c;
 }

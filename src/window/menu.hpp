@@ -77,7 +77,7 @@ class MenuModel {
   std::vector<Item> items() const;
   MenuRow row(Item item) const;
   bool enabled(Item item) const;
-  bool nineBall() const;  ///< the game chosen is nine-ball
+  bool severalRules() const;  ///< the game chosen is played by more than one rule set
   void move(int step);
   void change(Item item, int step);
   void activate(Item item);

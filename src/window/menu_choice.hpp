@@ -5,20 +5,21 @@
 
 #include "app/opponent.hpp"
 #include "nineball/rules.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 
 /// The games the start menu offers.
 enum class GameMode {
-  NineBall,  ///< a match, rack after rack, of the game chosen (nine-, eight- or ten-ball)
+  Match,     ///< a match, rack after rack, of the game chosen
   Practice,  ///< practice mode: no rules, any ball anywhere (GameSession's practice)
 };
 
 /// What the start menu settled: the game, who plays Player 2, the rules, the names, or the
 /// saved rack to resume. No SFML; also kept in the settings as the last game chosen.
 struct MenuChoice {
-  GameMode mode = GameMode::NineBall;
-  rules::Game game = rules::Game::NineBall;  ///< the game of a match (practice: none)
+  GameMode mode = GameMode::Match;
+  rules::Game game = defaultGame().id;  ///< the game of a match (practice: none)
   app::Opponent opponent;  ///< nothing: a second person; else the computer at a level (nine-ball)
   rules::RuleSet rules = rules::RuleSet::Wpa;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
@@ -26,6 +27,5 @@ struct MenuChoice {
 };
 
 /// "nine-ball", "practice".
-const char* gameModeName(GameMode mode);
 
 }  // namespace nineball::window

@@ -12,6 +12,7 @@
 #include "window/player_name.hpp"
 #include "window/settings.hpp"
 #include "window/state_file.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -149,14 +150,13 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
     }
     r.rules = *rules;
     // Saves from before eight- and ten-ball came are nine-ball's.
-    const auto game = rules::gameFromName(j.value("game", std::string("nine-ball")));
+    const auto game = gameNamed(j.value("game", std::string(defaultGame().name)));
     if (!game) {
       why = "unknown game";
       return std::nullopt;
     }
-    r.game = *game;
-    expect(r.rules != rules::RuleSet::Paper || r.game == rules::Game::NineBall,
-           "the paper's rules are nine-ball's only");
+    r.game = game->id;
+    expect(gameDef(r.game).playedBy(r.rules), rulesOnlyFor(r.rules));
     r.opponent = *opponent;
     r.seed = j.at("seed").get<std::uint64_t>();
     r.rack_index = j.at("rack").get<int>();

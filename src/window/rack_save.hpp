@@ -8,6 +8,7 @@
 
 #include "app/opponent.hpp"
 #include "nineball/match.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 
@@ -17,7 +18,7 @@ class GameSession;
 /// players, and the turns of the rack so far. Replaying the turns through the physics gives
 /// the position again, bit for bit (the physics is deterministic). No SFML.
 struct SavedRack {
-  rules::Game game = rules::Game::NineBall;
+  rules::Game game = defaultGame().id;
   rules::RuleSet rules = rules::RuleSet::Wpa;
   std::uint64_t seed = 1;  ///< the session's seed (rack n racks with seed + n)
   int rack_index = 0;      ///< 0 for the session's first rack

@@ -9,6 +9,7 @@
 #include "nineball/log.hpp"
 #include "window/player_name.hpp"
 #include "window/state_file.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -21,10 +22,6 @@ void warn(std::string& warnings, const std::string& what) {
 }
 
 }  // namespace
-
-const char* gameModeName(GameMode mode) {
-  return mode == GameMode::Practice ? "practice" : "nine-ball";
-}
 
 const char* guideLengthName(GuideLength g) {
   switch (g) {
@@ -77,8 +74,8 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
   j["aim_guide"] = guideLengthName(s.guide);
   j["bank_line"] = s.bank_line;
   j["frame_cap"] = s.frame_cap;
-  j["last"] = {{"game", s.last.mode == GameMode::Practice ? gameModeName(s.last.mode)
-                                                          : rules::gameName(s.last.game)},
+  j["last"] = {{"game", s.last.mode == GameMode::Practice ? "practice"
+                                                          : gameDef(s.last.game).name},
                {"opponent", app::opponentName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
                {"names", {s.last.names[0], s.last.names[1]}}};
@@ -137,10 +134,12 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
     if (v->is_string() && *v == "practice") {
       s.last.mode = GameMode::Practice;
     } else if (const auto g =
-                   v->is_string() ? rules::gameFromName(v->get<std::string>()) : std::nullopt) {
-      s.last.game = *g;
+                   v->is_string() ? gameNamed(v->get<std::string>()) : nullptr) {
+      s.last.game = g->id;
     } else {
-      warn(warnings, "last.game: expected nine-ball, eight-ball, ten-ball or practice");
+      std::string names;
+      for (const std::string& name : gameNames()) names += name + ", ";
+      warn(warnings, "last.game: expected " + names.substr(0, names.size() - 2) + " or practice");
     }
   }
   if (const auto* v = field(*last, "opponent")) {

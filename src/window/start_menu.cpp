@@ -4,6 +4,7 @@
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/state_file.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -22,7 +23,7 @@ void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
 std::string describeSavedRack(const SavedRack& rack) {
   const std::string p2 = rack.opponent ? std::string("Computer") : rack.names[1];
   const std::string game =
-      rack.game == rules::Game::NineBall ? "" : std::string(rules::gameName(rack.game)) + ", ";
+      rack.game == defaultGame().id ? "" : std::string(gameDef(rack.game).name) + ", ";
   return game + rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
          ", racks " + std::to_string(rack.racks_won[0]) + "-" + std::to_string(rack.racks_won[1]);
 }
@@ -73,7 +74,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     }
   }
   const MenuChoice choice = model.choice();
-  setup.game = choice.mode == GameMode::Practice ? rules::Game::NineBall : choice.game;
+  setup.game = choice.mode == GameMode::Practice ? defaultGame().id : choice.game;
   setup.rules = choice.rules;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);

@@ -47,7 +47,7 @@ TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.game, rules::Game::TenBall);
-  EXPECT_EQ(c.mode, GameMode::NineBall);
+  EXPECT_EQ(c.mode, GameMode::Match);
   EXPECT_EQ(c.opponent, app::Opponent(ai::Level::Hard));
   EXPECT_EQ(c.rules, rules::RuleSet::Wpa);
   EXPECT_EQ(m.settings().last.game, rules::Game::TenBall);

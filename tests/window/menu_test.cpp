@@ -64,7 +64,7 @@ TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
   m.key(MenuKey::Enter);
   ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
   const MenuChoice c = m.choice();
-  EXPECT_EQ(c.mode, GameMode::NineBall);
+  EXPECT_EQ(c.mode, GameMode::Match);
   EXPECT_EQ(c.opponent, app::Opponent(ai::Level::Hard));
   EXPECT_EQ(c.rules, rules::RuleSet::Paper);
   EXPECT_FALSE(c.resume);

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <set>
 
+#include "games/eight_ball/eight_ball.hpp"
+#include "games/nine_ball/nine_ball.hpp"
+#include "games/ten_ball/ten_ball.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/table.hpp"
 

@@ -1,9 +1,10 @@
-#include "nineball/scenes.hpp"
+#include "games/nine_ball/nine_ball.hpp"
 
 #include <array>
 #include <cmath>
 
-#include "nineball/random.hpp"
+#include "games/triangle.hpp"
+#include "nineball/scenes.hpp"
 
 namespace nineball {
 
@@ -42,17 +43,18 @@ std::vector<BallState> rackNineBall(const TableDef& table, double ball_radius, s
   return balls;
 }
 
-Scene breakScene(std::uint64_t seed, double speed) {
-  Scene s;
-  BallState cue;
-  cue.id = kCueBall;
-  cue.pos = {-s.table.length / 4.0, 0.0};
-  s.balls.push_back(cue);
-  for (const BallState& b : rackNineBall(s.table, s.physics.ball_radius, seed)) {
-    s.balls.push_back(b);
-  }
-  s.shot = Shot::withSpeed(0.0, speed);
-  return s;
+namespace games {
+
+GameDef nineBall() {
+  GameDef g;
+  g.id = rules::Game::NineBall;
+  g.name = "nine-ball";
+  g.balls = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  g.rule_sets = {rules::RuleSet::Wpa, rules::RuleSet::Paper};
+  g.rack = rackNineBall;
+  g.help = {"Rules: hit the lowest ball first; the 9 wins the rack"};
+  return g;
 }
 
+}  // namespace games
 }  // namespace nineball

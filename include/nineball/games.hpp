@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "nineball/ball.hpp"
+#include "nineball/rules.hpp"
+#include "nineball/table.hpp"
+
+namespace nineball {
+
+/// The standard rack of a game on `table` for balls of `ball_radius`: the object balls on
+/// their spots (the order the seed gives where the rules leave it free), `gap` apart.
+using RackMaker = std::vector<BallState> (*)(const TableDef& table, double ball_radius,
+                                             std::uint64_t seed, double gap);
+
+/// The two answers to a choice a game gives the next player, as `nineball match` takes them.
+struct DecisionWords {
+  const char* yes = "shoot";  ///< play from here (on)
+  const char* no = "pass";    ///< pass back (re-rack)
+  const char* about = "the choice after a push-out";
+};
+
+/// One game as data: everything outside its rule book that differs from game to game. The
+/// match, the planner, the JSON readers and writers, the HUD and the menus read it, so that a
+/// new game is a rule book (src/rules), a definition (src/games/<game>/) and a registry line.
+struct GameDef {
+  rules::Game id = rules::Game::NineBall;
+  /// As scripts, the menu and --game name it.
+  const char* name = "";
+  /// The object balls of a full rack (sorted): the numbers a layout may hold.
+  std::vector<int> balls;
+  /// A custom layout must hold these, and why (eight-ball's 8: the rack is won on it).
+  std::vector<int> required_balls;
+  const char* required_why = "";
+  /// Highest ball number a custom layout may hold; 0 for any (nine-ball's, as the paper's).
+  int highest_ball = 0;
+  /// The rule sets it is played by; the first is its default.
+  std::vector<rules::RuleSet> rule_sets{rules::RuleSet::Wpa};
+  RackMaker rack = nullptr;
+  /// The help screen's lines on its rules.
+  std::vector<std::string> help;
+  /// Players take groups of balls (the HUD's panels, the tray, the script's "groups").
+  bool groups = false;
+  /// A call may name any ball on the table (a ball is clicked before its pocket); otherwise
+  /// the ball called is the one to be hit first.
+  bool call_any_ball = false;
+  /// A pot not as called ends the turn without a foul, and the opponent plays or passes it
+  /// (the script's "call_breach").
+  bool pot_not_as_called_passes = false;
+  /// Which shots must be called, for the message refusing one without a call.
+  const char* called_shots = "";
+  DecisionWords decision;
+  /// The computer's break tries every spot on the head string (else the centre only).
+  bool break_from_every_spot = false;
+  /// What `ai-bench` counts as a position made.
+  const char* made = "potted the ball on";
+
+  /// True when it is played by `rules`.
+  bool playedBy(rules::RuleSet rules) const;
+};
+
+/// Every game, in the order the menu offers them; the first is the default.
+const std::vector<GameDef>& allGames();
+/// The definition of `game`.
+const GameDef& gameDef(rules::Game game);
+/// The game played when none is chosen.
+const GameDef& defaultGame();
+/// The game of that name, or null.
+const GameDef* gameNamed(const std::string& name);
+/// Every game's name, in the registry's order.
+std::vector<std::string> gameNames();
+/// The games played by `rules`, for a message: "nine-ball", "nine-ball and ten-ball".
+std::string gamesPlayedBy(rules::RuleSet rules);
+/// "the paper's rules are nine-ball's only": why `rules` cannot be played in another game.
+std::string rulesOnlyFor(rules::RuleSet rules);
+
+}  // namespace nineball

@@ -1,0 +1,63 @@
+#include "common/named.hpp"
+#include "games/eight_ball/eight_ball.hpp"
+#include "games/nine_ball/nine_ball.hpp"
+#include "games/ten_ball/ten_ball.hpp"
+#include "nineball/games.hpp"
+
+namespace nineball {
+
+const std::vector<GameDef>& allGames() {
+  static const std::vector<GameDef> all{
+      games::nineBall(),
+      games::eightBall(),
+      games::tenBall(),
+  };
+  return all;
+}
+
+const GameDef& gameDef(rules::Game game) {
+  for (const GameDef& g : allGames()) {
+    if (g.id == game) return g;
+  }
+  return defaultGame();
+}
+
+const GameDef& defaultGame() {
+  return allGames().front();
+}
+
+const GameDef* gameNamed(const std::string& name) {
+  const auto i = placeNamed(allGames(), name);
+  return i ? &allGames()[*i] : nullptr;
+}
+
+std::vector<std::string> gameNames() {
+  return namesOf(allGames());
+}
+
+std::string gamesPlayedBy(rules::RuleSet rules) {
+  std::vector<std::string> names;
+  for (const GameDef& g : allGames()) {
+    if (g.playedBy(rules)) names.emplace_back(g.name);
+  }
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? " and " : ", ";
+    out += names[i];
+  }
+  return out;
+}
+
+std::string rulesOnlyFor(rules::RuleSet rules) {
+  return std::string(rules == rules::RuleSet::Paper ? "the paper's" : "the WPA") + " rules are " +
+         gamesPlayedBy(rules) + "'s only";
+}
+
+bool GameDef::playedBy(rules::RuleSet r) const {
+  for (rules::RuleSet s : rule_sets) {
+    if (s == r) return true;
+  }
+  return false;
+}
+
+}  // namespace nineball
