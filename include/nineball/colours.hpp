@@ -45,6 +45,20 @@ inline bool isStripe(int id) {
   return id >= 9;
 }
 
+/// How a ball of a game's set looks from above.
+struct BallLook {
+  Rgb colour;
+  bool stripe = false;    ///< a band of `colour` on a white ball
+  bool numbered = false;  ///< a white disc with the ball's number
+};
+/// The looks of one set of balls, by ball id (a game's GameDef::looks).
+using BallLooks = BallLook (*)(int id);
+
+/// Pool balls: the cue ball white and plain, 1-8 solids and 9-15 stripes, each numbered.
+inline BallLook poolBallLook(int id) {
+  return {ballColour(id), isStripe(id), id != 0};
+}
+
 /// The stripe's half height as a fraction of the radius.
 constexpr double kStripeHalfHeight = 0.55;
 /// The white disc that carries the number, as a fraction of the radius.

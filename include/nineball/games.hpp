@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "nineball/ball.hpp"
+#include "nineball/colours.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/table.hpp"
 
@@ -39,6 +40,10 @@ struct GameDef {
   /// The rule sets it is played by; the first is its default.
   std::vector<rules::RuleSet> rule_sets{rules::RuleSet::Wpa};
   RackMaker rack = nullptr;
+  /// Its set of balls: how each is drawn (colours, stripes, numbers).
+  BallLooks looks = poolBallLook;
+  /// The tables it is played on (TableDef::named), the first by default.
+  std::vector<std::string> tables{"9ft", "8ft", "7ft"};
   /// The help screen's lines on its rules.
   std::vector<std::string> help;
   /// Players take groups of balls (the HUD's panels, the tray, the script's "groups").

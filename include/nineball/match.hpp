@@ -9,11 +9,11 @@
 
 #include "nineball/ball.hpp"
 #include "nineball/engine.hpp"
+#include "nineball/games.hpp"
 #include "nineball/params.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/shot.hpp"
 #include "nineball/table.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball {
 

@@ -111,6 +111,9 @@ struct Verdict {
   /// foul and no ball in hand, but the turn ends and the opponent may play or pass it back.
   Foul call_breach = Foul::None;
   Groups groups;  ///< eight-ball: who holds which group after the shot
+  /// Points the shot scored for each player (A, B), for games that keep a score (pool's
+  /// racks are won on a ball, not on points: zero there).
+  int points[2] = {0, 0};
   std::optional<Player> winner;
 };
 
@@ -125,6 +128,7 @@ struct RackState {
   Decision decision = Decision::None;
   std::optional<Player> winner;
   int fouls[2] = {0, 0};  ///< consecutive fouls of A and B
+  int score[2] = {0, 0};  ///< points of A and B, for games that keep a score
   Groups groups;
 
   bool has(int ball) const;
@@ -142,6 +146,9 @@ class RuleBook {
   virtual RuleSet ruleSet() const = 0;
   /// The balls the cue ball may hit first now (the break: any).
   virtual std::vector<int> legalFirstBalls(const RackState& s) const = 0;
+  /// The ball on, for the HUD and the planner's position play: by default the lowest of
+  /// legalFirstBalls() (0 when none is left); a game whose next ball is not the lowest says so.
+  virtual int ballOn(const RackState& s) const;
   /// Whether the coming shot must carry a call (push-outs never need one).
   virtual bool callRequired(const RackState& s) const = 0;
   /// Judges one shot; `push_out` only when s.push_out_available.
@@ -161,14 +168,18 @@ class Rack {
   Rack(RuleSet rules, std::vector<int> object_balls, bool opening_break = true);
   /// Any game. Throws std::invalid_argument for the paper's rules outside nine-ball.
   Rack(Game game, RuleSet rules, std::vector<int> object_balls, bool opening_break = true);
+  /// A rack judged by `book`, which must outlive it (a game's book, or one of a test's own).
+  Rack(const RuleBook& book, std::vector<int> object_balls, bool opening_break = true);
 
   Game game() const { return book_->game(); }
   RuleSet rules() const { return book_->ruleSet(); }
   Player shooter() const { return s_.shooter; }
   /// The balls the cue ball may legally hit first now.
   std::vector<int> legalFirstBalls() const { return book_->legalFirstBalls(s_); }
-  /// Lowest of legalFirstBalls() (0 when none is left): in nine- and ten-ball the ball on.
-  int ballOn() const;
+  /// The ball on (the rule book's RuleBook::ballOn; 0 when none is left).
+  int ballOn() const { return book_->ballOn(s_); }
+  /// Points of `p` so far, for games that keep a score.
+  int score(Player p) const { return s_.score[p == Player::A ? 0 : 1]; }
   const std::vector<int>& ballsOnTable() const { return s_.on_table; }
   bool isBreak() const { return s_.break_next; }
   bool ballInHand() const { return s_.ball_in_hand; }

@@ -3,6 +3,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "nineball/pocket_id.hpp"
@@ -19,6 +20,9 @@ struct TableDef {
   double side_pocket = 0.129;     ///< side mouth, jaw point to jaw point (WPA 127-130 mm)
   double corner_jaw_deg = 142.0;  ///< angle between cushion nose and jaw face (WPA 142 +-1)
   double side_jaw_deg = 104.0;    ///< the same for the side pockets (WPA 103-104)
+  /// False for a table without pockets (carom): four straight cushions, and the pocket
+  /// fields above are not read.
+  bool pockets = true;
 
   static TableDef nineFoot() { return {}; }
   static TableDef eightFoot() { return {2.34, 1.17}; }
@@ -43,11 +47,12 @@ struct Pocket {
 };
 
 /// The table as the physics builds it: one clockwise loop of cushion vertices (rails, angled
-/// jaws and the pocket cups behind them) and the six pockets.
+/// jaws and the pocket cups behind them) and its pockets (a pool table's six; the engines take
+/// any number, none included).
 struct TableGeometry {
   TableDef def;
   std::vector<Vec2> cushion_loop;
-  std::array<Pocket, kPocketCount> pockets{};
+  std::vector<Pocket> pockets;
 
   /// Head string (x of the line behind which the cue ball is placed for the break).
   double headStringX() const { return -def.length / 4.0; }
@@ -79,5 +84,11 @@ TableGeometry buildTable(const TableDef& def, double ball_radius);
 /// The cushion loop's points from a pocket's first jaw to its second: the jaw faces and the
 /// cup, as the pictures of the table draw them.
 std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket);
+
+/// The straight cushion noses, clockwise from the top-left: from one pocket's second jaw point
+/// to the next pocket's first, or a table's four sides when it has no pockets.
+std::vector<std::pair<Vec2, Vec2>> cushionNoses(const TableGeometry& table);
+/// The cloth's outline: the ends of every cushion nose, clockwise.
+std::vector<Vec2> clothOutline(const TableGeometry& table);
 
 }  // namespace nineball

@@ -4,9 +4,9 @@
 
 #include "nineball/accuracy.hpp"
 #include "nineball/engine.hpp"
+#include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball {
 namespace {

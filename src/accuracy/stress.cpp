@@ -318,7 +318,7 @@ void setMoving(std::uint64_t& rng, std::vector<BallState>& balls, const PhysicsP
 
 // Balls packed round one jaw of a pocket, as close to it and to each other as they fit.
 std::vector<BallState> crowdAtJaw(std::uint64_t& rng, const TableGeometry& t, double r, int n) {
-  const Pocket& pk = t.pockets[splitmix64(rng) % kPocketCount];
+  const Pocket& pk = t.pockets[splitmix64(rng) % t.pockets.size()];
   const Vec2 jaw = splitmix64(rng) % 2 ? pk.jaw_a : pk.jaw_b;
   std::vector<BallState> balls;
   for (int tries = 0; static_cast<int>(balls.size()) < n && tries < 20000; ++tries) {

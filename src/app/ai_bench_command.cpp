@@ -8,10 +8,10 @@
 
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::app {
 namespace {

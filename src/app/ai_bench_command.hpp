@@ -11,12 +11,12 @@ namespace nineball::app {
 
 /// Options of `nineball ai-bench`.
 struct AiBenchOptions {
-  std::string level = "hard";      ///< the level measured
+  std::string level = "hard";             ///< the level measured
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
-  int positions = 100;             ///< seeded practice positions to pot the ball on from
-  int racks = 100;                 ///< racks broken to try to run out
-  std::uint64_t seed = 1;          ///< first seed of the positions and the racks
-  int threads = 2;                 ///< workers simulating candidates
+  int positions = 100;                    ///< seeded practice positions to pot the ball on from
+  int racks = 100;                        ///< racks broken to try to run out
+  std::uint64_t seed = 1;                 ///< first seed of the positions and the racks
+  int threads = 2;                        ///< workers simulating candidates
 };
 
 /// Registers `ai-bench` on the app.

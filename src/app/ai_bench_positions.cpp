@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "nineball/random.hpp"
 #include "nineball/games.hpp"
+#include "nineball/random.hpp"
 
 namespace nineball::app {
 namespace {

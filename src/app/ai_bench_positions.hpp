@@ -4,10 +4,10 @@
 #include <vector>
 
 #include "nineball/ball.hpp"
+#include "nineball/games.hpp"
 #include "nineball/params.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/table.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::app {
 

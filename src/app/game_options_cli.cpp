@@ -57,7 +57,8 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option("--game", o.game, "Game window: the game played")
                      ->check(CLI::IsMember(gameNames()))
                      ->capture_default_str());
-  opts.push_back(app.add_option("--rules", o.rules, "Game window: the rules (paper: the seed paper's, for nine-ball)")
+  opts.push_back(app.add_option("--rules", o.rules,
+                                "Game window: the rules (paper: the seed paper's, for nine-ball)")
                      ->check(CLI::IsMember({"wpa", "paper"}))
                      ->capture_default_str());
   opts.push_back(

@@ -266,12 +266,8 @@ void drawTable(std::ostringstream& svg, const View& view, const TableGeometry& t
     svg << "<polygon class=\"pocket\" points=\"" << points(view, pocketOutline(table, p))
         << "\" fill=\"" << hex(kPocket) << "\"/>\n";
   }
-  std::vector<Vec2> cloth;
-  for (const Pocket& p : table.pockets) {
-    cloth.push_back(p.jaw_a);
-    cloth.push_back(p.jaw_b);
-  }
-  svg << "<polygon points=\"" << points(view, cloth) << "\" fill=\"" << hex(kCloth) << "\"/>\n";
+  svg << "<polygon points=\"" << points(view, clothOutline(table)) << "\" fill=\"" << hex(kCloth)
+      << "\"/>\n";
   // The cushion loop the balls bounce off, exactly as the physics builds it.
   svg << "<polygon class=\"cushion-loop\" points=\"" << points(view, table.cushion_loop)
       << "\" fill=\"none\" stroke=\"" << hex(kLoopLine) << "\" stroke-width=\"1.2\"/>\n";

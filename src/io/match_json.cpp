@@ -9,9 +9,9 @@
 #include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_parts.hpp"
+#include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::io {
 namespace {
@@ -113,7 +113,11 @@ MatchScript parseDocument(const json& doc) {
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
   }
-  if (const json* p = optional(doc, "table")) setup.table = parseTable(*p);
+  if (const json* p = optional(doc, "table")) {
+    setup.table = parseTable(*p);
+  } else {
+    setup.table = TableDef::named(gameDef(setup.game).tables.front()).value();
+  }
   if (const json* p = optional(doc, "physics")) setup.physics = parsePhysics(*p);
   if (const json* p = optional(doc, "step")) setup.step = parseStep(*p);
   double cue_mass = setup.physics.ball_mass;

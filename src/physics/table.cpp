@@ -25,21 +25,28 @@ struct PocketFrame {
   bool corner;
 };
 
-// The six pockets in clockwise order from the top-left corner (y up), each with the jaw met
-// first along that walk.
-std::array<PocketFrame, kPocketCount> pocketFrames(const TableDef& d) {
+// The pockets in clockwise order from the top-left corner (y up), each with the jaw met
+// first along that walk: a pool table's six, or none.
+std::vector<PocketFrame> pocketFrames(const TableDef& d) {
+  if (!d.pockets) return {};
   const double hx = d.length / 2.0, hy = d.width / 2.0;
   const double c = d.corner_pocket / std::sqrt(2.0);
   const double s = d.side_pocket / 2.0;
   const double r = 1.0 / std::sqrt(2.0);
-  return {{
+  return {
       {PocketId::TopLeft, {-hx, hy - c}, {-hx + c, hy}, {-r, r}, true},
       {PocketId::TopSide, {-s, hy}, {s, hy}, {0.0, 1.0}, false},
       {PocketId::TopRight, {hx - c, hy}, {hx, hy - c}, {r, r}, true},
       {PocketId::BottomRight, {hx, -hy + c}, {hx - c, -hy}, {r, -r}, true},
       {PocketId::BottomSide, {s, -hy}, {-s, -hy}, {0.0, -1.0}, false},
       {PocketId::BottomLeft, {-hx + c, -hy}, {-hx, -hy + c}, {-r, -r}, true},
-  }};
+  };
+}
+
+// A table without pockets: the four cushion noses, clockwise from the top-left corner.
+std::vector<Vec2> cornerLoop(const TableDef& d) {
+  const double hx = d.length / 2.0, hy = d.width / 2.0;
+  return {{-hx, hy}, {hx, hy}, {hx, -hy}, {-hx, -hy}};
 }
 
 double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
@@ -88,10 +95,16 @@ TableGeometry buildTable(const TableDef& def, double ball_radius) {
   TableGeometry g;
   g.def = def;
   const auto frames = pocketFrames(def);
-  for (int i = 0; i < kPocketCount; ++i) {
+  if (frames.empty()) {
+    g.cushion_loop = cornerLoop(def);
+    return g;
+  }
+  const std::size_t count = frames.size();
+  g.pockets.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
     const PocketFrame& f = frames[i];
-    const PocketFrame& prev = frames[(i + kPocketCount - 1) % kPocketCount];
-    const PocketFrame& next = frames[(i + 1) % kPocketCount];
+    const PocketFrame& prev = frames[(i + count - 1) % count];
+    const PocketFrame& next = frames[(i + 1) % count];
     // Rail directions arriving at jaw a and leaving jaw b, walking clockwise.
     const Vec2 rail_in = normalized(f.jaw_a - prev.jaw_b);
     const Vec2 rail_out = normalized(next.jaw_a - f.jaw_b);
@@ -155,6 +168,7 @@ std::string metres(double v) {
 }  // namespace
 
 std::optional<std::string> checkTable(const TableDef& def, double r) {
+  if (!def.pockets) return std::nullopt;  // four straight cushions cross nothing
   const double rail = 2.0 * r * limits::kMinRailInDiameters;
   const double corner_cut = def.corner_pocket / std::sqrt(2.0);
   const double short_rail = def.width - 2.0 * corner_cut;
@@ -252,6 +266,30 @@ std::optional<PocketId> TableGeometry::pocketAt(Vec2 p) const {
     if (length(p - pk.drop_centre) < pk.drop_radius) return pk.id;
   }
   return std::nullopt;
+}
+
+std::vector<std::pair<Vec2, Vec2>> cushionNoses(const TableGeometry& table) {
+  std::vector<std::pair<Vec2, Vec2>> noses;
+  const auto& pk = table.pockets;
+  if (pk.empty()) {
+    const auto& loop = table.cushion_loop;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      noses.emplace_back(loop[i], loop[(i + 1) % loop.size()]);
+    }
+    return noses;
+  }
+  for (std::size_t i = 0; i < pk.size(); ++i)
+    noses.emplace_back(pk[i].jaw_b, pk[(i + 1) % pk.size()].jaw_a);
+  return noses;
+}
+
+std::vector<Vec2> clothOutline(const TableGeometry& table) {
+  std::vector<Vec2> outline;
+  for (const auto& [a, b] : cushionNoses(table)) {
+    outline.push_back(a);
+    outline.push_back(b);
+  }
+  return outline;
 }
 
 std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket) {

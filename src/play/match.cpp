@@ -4,10 +4,10 @@
 #include <cmath>
 #include <set>
 
+#include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "play/shot_summary.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball {
 namespace {
@@ -146,10 +146,9 @@ void Match::beginShot(const TurnInput& turn) {
   const bool push_out = turn.kind == TurnInput::Kind::PushOut;
   if (push_out && !rack_.pushOutAvailable()) throw IllegalAction("no push-out is allowed now");
   if (!push_out && rack_.callRequired() && !turn.call) {
-    throw IllegalAction(
-        std::string("every ") + gameDef(rack_.game()).called_shots + " in " +
-        gameDef(rack_.game()).name +
-        " is called: the turn needs \"call\": {\"ball\", \"pocket\"}");
+    throw IllegalAction(std::string("every ") + gameDef(rack_.game()).called_shots + " in " +
+                        gameDef(rack_.game()).name +
+                        " is called: the turn needs \"call\": {\"ball\", \"pocket\"}");
   }
   if (turn.call && !rack_.isBreak()) {
     const auto& on = rack_.ballsOnTable();

@@ -44,14 +44,14 @@ void BallPainter::addBall(int id, Vec2 c, double r, std::uint8_t alpha) {
   const int segments = circleSegments(r) + 8;
   shadows_.circle(c + Vec2{0.14 * r, 0.2 * r}, r * 1.02, sf::Color(0, 0, 0, alpha / 4), segments);
   bodies_.circle(c, r + 0.8, toSf(kOutline, alpha / 2), segments);
-  const Rgb colour = ballColour(id);
-  if (isStripe(id)) {
+  const BallLook look = looks_(id);
+  if (look.stripe) {
     bodies_.circle(c, r, toSf(kNumberDisc, alpha), segments);
-    bodies_.convex(stripeOutline(c, r), toSf(colour, alpha));
+    bodies_.convex(stripeOutline(c, r), toSf(look.colour, alpha));
   } else {
-    bodies_.circle(c, r, toSf(colour, alpha), segments);
+    bodies_.circle(c, r, toSf(look.colour, alpha), segments);
   }
-  if (id != kCueBall) bodies_.circle(c, r * kNumberDiscRadius, toSf(kNumberDisc, alpha));
+  if (look.numbered) bodies_.circle(c, r * kNumberDiscRadius, toSf(kNumberDisc, alpha));
   bodies_.circle(c + Vec2{-0.38 * r, -0.42 * r}, 0.18 * r, sf::Color(255, 255, 255, alpha / 2));
 }
 
@@ -67,7 +67,7 @@ void BallPainter::draw(sf::RenderTarget& target, const ViewTransform& view,
   bodies_.draw(target);
   const unsigned size = static_cast<unsigned>(std::max(6.0, std::round(r_px * 0.85)));
   for (const BallState& b : balls) {
-    if (b.pocket || b.id == kCueBall) continue;
+    if (b.pocket || !looks_(b.id).numbered) continue;
     sf::Text& t = number(b.id, size);
     t.setPosition(toSf(view.toPixels(b.pos)));
     target.draw(t);
@@ -80,7 +80,7 @@ void BallPainter::drawOne(sf::RenderTarget& target, int id, Vec2 centre_px, doub
   bodies_.clear();
   addBall(id, centre_px, radius_px, alpha);
   bodies_.draw(target);
-  if (id == kCueBall) return;
+  if (!looks_(id).numbered) return;
   sf::Text& t = number(id, static_cast<unsigned>(std::max(6.0, std::round(radius_px * 0.85))));
   t.setPosition(toSf(centre_px));
   t.setFillColor(toSf(kNumberInk, alpha));

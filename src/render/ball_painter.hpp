@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nineball/ball.hpp"
+#include "nineball/colours.hpp"
 #include "render/triangle_batch.hpp"
 #include "render/view_transform.hpp"
 
@@ -17,6 +18,8 @@ namespace nineball::render {
 class BallPainter {
  public:
   explicit BallPainter(const sf::Font& numbers) : font_(numbers) {}
+  /// The set of balls drawn (a game's looks; pool balls until told).
+  void setLooks(BallLooks looks) { looks_ = looks; }
 
   /// Draws every ball still on the table at its given position, radius r metres.
   void draw(sf::RenderTarget& target, const ViewTransform& view,
@@ -30,6 +33,7 @@ class BallPainter {
   sf::Text& number(int id, unsigned size);
 
   const sf::Font& font_;
+  BallLooks looks_ = poolBallLook;
   TriangleBatch shadows_;
   TriangleBatch bodies_;
   std::map<int, sf::Text> numbers_;

@@ -25,6 +25,8 @@ struct DrawnText {
 class HudPainter {
  public:
   explicit HudPainter(const Fonts& fonts) : fonts_(fonts), balls_(fonts.bold) {}
+  /// The set of balls its icons show.
+  void setLooks(BallLooks looks) { balls_.setLooks(looks); }
 
   void draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
   /// Every line of text and tray ball the last draw put on screen, for checks that nothing

@@ -40,6 +40,8 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   if (frame.bank) {
     cue_painter_.drawGuide(target, view_, *frame.bank, frame.ball_radius, frame.guide_scale, true);
   }
+  ball_painter_.setLooks(frame.looks);
+  hud_painter_.setLooks(frame.looks);
   ball_painter_.draw(target, view_, frame.balls, frame.ball_radius);
   if (frame.call) drawCall(target, view_, *frame.call, frame.ball_radius);
   if (frame.ghost) {

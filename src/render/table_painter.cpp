@@ -76,18 +76,11 @@ void TablePainter::build(const TableGeometry& table, const ViewTransform& view) 
     batch_.fan(view.toPixels(p.drop_centre), toPixels(view, rim), toSf(kPocketRimColour));
     batch_.fan(view.toPixels(p.drop_centre), toPixels(view, outline), toSf(kPocket));
   }
-  std::vector<Vec2> cloth;
-  for (const Pocket& p : table.pockets) {
-    cloth.push_back(view.toPixels(p.jaw_a));
-    cloth.push_back(view.toPixels(p.jaw_b));
-  }
-  batch_.convex(cloth, toSf(kCloth));
+  batch_.convex(toPixels(view, clothOutline(table)), toSf(kCloth));
 
   // A thin shade along each cushion nose gives the cushions an edge.
   const double shade = std::max(1.0, view.px(0.004));
-  for (std::size_t i = 0; i < table.pockets.size(); ++i) {
-    const Vec2 a = table.pockets[i].jaw_b;
-    const Vec2 b = table.pockets[(i + 1) % table.pockets.size()].jaw_a;
+  for (const auto& [a, b] : cushionNoses(table)) {
     const Vec2 inward = -perp(normalized(b - a)) * 0.002;  // the loop runs clockwise
     batch_.line(view.toPixels(a + inward), view.toPixels(b + inward), shade, toSf(kClothShade));
   }

@@ -25,15 +25,17 @@ Rack::Rack(RuleSet rules, std::vector<int> object_balls, bool opening_break)
     : Rack(Game::NineBall, rules, std::move(object_balls), opening_break) {}
 
 Rack::Rack(Game game, RuleSet rules, std::vector<int> object_balls, bool opening_break)
-    : book_(&ruleBook(game, rules)) {
+    : Rack(ruleBook(game, rules), std::move(object_balls), opening_break) {}
+
+Rack::Rack(const RuleBook& book, std::vector<int> object_balls, bool opening_break) : book_(&book) {
   std::sort(object_balls.begin(), object_balls.end());
   s_.racked = object_balls;
   s_.on_table = std::move(object_balls);
   s_.break_next = opening_break;
 }
 
-int Rack::ballOn() const {
-  const std::vector<int> balls = legalFirstBalls();
+int RuleBook::ballOn(const RackState& s) const {
+  const std::vector<int> balls = legalFirstBalls(s);
   return balls.empty() ? 0 : *std::min_element(balls.begin(), balls.end());
 }
 
@@ -63,6 +65,8 @@ Verdict Rack::shoot(const ShotSummary& shot, bool push_out) {
   s_.decision = v.decision;
   s_.winner = v.winner;
   s_.break_next = false;
+  s_.score[0] += v.points[0];
+  s_.score[1] += v.points[1];
   return v;
 }
 

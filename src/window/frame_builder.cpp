@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "nineball/games.hpp"
 #include "nineball/rules.hpp"
 #include "window/game_help.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -116,6 +116,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   render::Frame f;
   f.balls = session.ballsToDraw();
   f.ball_radius = session.match().world().physics().ball_radius;
+  f.looks = gameDef(session.match().rack().game()).looks;
   const bool aiming = session.phase() == Phase::Aiming && !session.replaying();
   const bool computer_turn = computer.controls(session);
   if (computer_turn) {

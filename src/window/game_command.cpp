@@ -9,8 +9,8 @@
 #include "app/opponent.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
-#include "window/game_window.hpp"
 #include "nineball/games.hpp"
+#include "window/game_window.hpp"
 
 namespace nineball::window {
 
@@ -21,9 +21,8 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
   const GameDef& game = gameDef(start.setup.game);
   if (&game != &defaultGame()) {
     if (!game.playedBy(start.setup.rules)) {
-      err << "nineball: --rules " << options.rules << " is "
-          << gamesPlayedBy(start.setup.rules) << "'s only; " << options.game
-          << " is played by the WPA rules\n";
+      err << "nineball: --rules " << options.rules << " is " << gamesPlayedBy(start.setup.rules)
+          << "'s only; " << options.game << " is played by the WPA rules\n";
       return app::kExitBadInput;
     }
     if (options.practice) {

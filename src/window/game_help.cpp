@@ -1,4 +1,5 @@
 #include "window/game_help.hpp"
+
 #include "nineball/games.hpp"
 
 namespace nineball::window {

@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <exception>
 
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "play/shot_summary.hpp"
 #include "window/shot_call.hpp"
 #include "window/turn_message.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -315,7 +315,7 @@ bool GameSession::shoot(const TurnInput& given) {
       !turn.call) {
     say(std::string("Call the shot first: click the pocket for the ") + std::to_string(callBall()) +
             (gameDef(match_->rack().game()).call_any_ball ? " (click a ball first to call another)"
-                                                            : "") +
+                                                          : "") +
             ", or press K to call the obvious shot.",
         render::Tone::Warning);
     return false;

@@ -15,6 +15,7 @@
 #include "audio/impact_sounds.hpp"
 #include "nineball/atomic_file.hpp"
 #include "nineball/bank_guide.hpp"
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "render/fonts.hpp"
 #include "render/png_capture.hpp"
@@ -33,7 +34,6 @@
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {

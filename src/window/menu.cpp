@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "window/player_name.hpp"
 #include "nineball/games.hpp"
+#include "window/player_name.hpp"
 
 namespace nineball::window {
 namespace {

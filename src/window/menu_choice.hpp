@@ -4,8 +4,8 @@
 #include <string>
 
 #include "app/opponent.hpp"
-#include "nineball/rules.hpp"
 #include "nineball/games.hpp"
+#include "nineball/rules.hpp"
 
 namespace nineball::window {
 

@@ -7,12 +7,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "window/game_session.hpp"
 #include "window/player_name.hpp"
 #include "window/settings.hpp"
 #include "window/state_file.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "app/opponent.hpp"
-#include "nineball/match.hpp"
 #include "nineball/games.hpp"
+#include "nineball/match.hpp"
 
 namespace nineball::window {
 

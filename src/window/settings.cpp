@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "window/player_name.hpp"
 #include "window/state_file.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {
@@ -74,8 +74,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
   j["aim_guide"] = guideLengthName(s.guide);
   j["bank_line"] = s.bank_line;
   j["frame_cap"] = s.frame_cap;
-  j["last"] = {{"game", s.last.mode == GameMode::Practice ? "practice"
-                                                          : gameDef(s.last.game).name},
+  j["last"] = {{"game", s.last.mode == GameMode::Practice ? "practice" : gameDef(s.last.game).name},
                {"opponent", app::opponentName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
                {"names", {s.last.names[0], s.last.names[1]}}};
@@ -133,8 +132,7 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
   if (const auto* v = field(*last, "game")) {
     if (v->is_string() && *v == "practice") {
       s.last.mode = GameMode::Practice;
-    } else if (const auto g =
-                   v->is_string() ? gameNamed(v->get<std::string>()) : nullptr) {
+    } else if (const auto g = v->is_string() ? gameNamed(v->get<std::string>()) : nullptr) {
       s.last.game = g->id;
     } else {
       std::string names;

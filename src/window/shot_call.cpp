@@ -19,7 +19,7 @@ std::optional<PocketId> pocketNear(const TableGeometry& table, Vec2 pos, double 
 }
 
 PocketId pocketAlong(const TableGeometry& table, Vec2 from, Vec2 dir) {
-  PocketId nearest = table.pockets[0].id;
+  PocketId nearest = table.pockets.empty() ? PocketId::TopLeft : table.pockets[0].id;
   double nearest_d = std::numeric_limits<double>::max();
   std::optional<PocketId> ahead;
   double ahead_d = std::numeric_limits<double>::max();

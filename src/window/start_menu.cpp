@@ -1,10 +1,10 @@
 #include "window/start_menu.hpp"
 
+#include "nineball/games.hpp"
 #include "nineball/log.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/state_file.hpp"
-#include "nineball/games.hpp"
 
 namespace nineball::window {
 namespace {

@@ -1,0 +1,56 @@
+// The game registry: every game is data the rest of the program reads (its name, balls, rule
+// sets, rack, ball set and tables), so the checks here hold for any game added to it.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "nineball/games.hpp"
+
+namespace nineball {
+namespace {
+
+TEST(GameRegistry, NamesAreUniqueAndEachIsFoundByItsName) {
+  std::set<std::string> seen;
+  for (const GameDef& g : allGames()) {
+    EXPECT_TRUE(seen.insert(g.name).second) << g.name;
+    ASSERT_NE(gameNamed(g.name), nullptr) << g.name;
+    EXPECT_EQ(gameNamed(g.name)->id, g.id) << g.name;
+    EXPECT_EQ(&gameDef(g.id), gameNamed(g.name)) << g.name;
+  }
+  EXPECT_EQ(gameNamed("snooker-on-ice"), nullptr);
+  EXPECT_EQ(&defaultGame(), &allGames().front());
+}
+
+TEST(GameRegistry, EveryGameRacksItsOwnBallsOnEachOfItsTables) {
+  for (const GameDef& g : allGames()) {
+    ASSERT_NE(g.rack, nullptr) << g.name;
+    ASSERT_FALSE(g.tables.empty()) << g.name;
+    ASSERT_FALSE(g.rule_sets.empty()) << g.name;
+    for (const std::string& name : g.tables) {
+      const auto table = TableDef::named(name);
+      ASSERT_TRUE(table) << g.name << ": " << name;
+      std::set<int> racked;
+      for (const BallState& b : g.rack(*table, 0.028575, 1, 0.0)) racked.insert(b.id);
+      EXPECT_EQ(racked, std::set<int>(g.balls.begin(), g.balls.end())) << g.name << " " << name;
+    }
+  }
+}
+
+TEST(GameRegistry, EveryBallOfAGameHasALookAndObjectBallsShowTheirNumbers) {
+  for (const GameDef& g : allGames()) {
+    ASSERT_NE(g.looks, nullptr) << g.name;
+    EXPECT_FALSE(g.looks(kCueBall).numbered) << g.name;
+    std::set<int> colours;
+    for (int id : g.balls) {
+      const BallLook look = g.looks(id);
+      EXPECT_TRUE(look.numbered) << g.name << " ball " << id;
+      colours.insert(look.colour.r << 16 | look.colour.g << 8 | look.colour.b);
+    }
+    // Pool sets repeat a colour on a solid and its stripe only: at most 8 colours for 15 balls.
+    EXPECT_GE(colours.size(), std::min<std::size_t>(g.balls.size(), 8)) << g.name;
+  }
+}
+
+}  // namespace
+}  // namespace nineball
