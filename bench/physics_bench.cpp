@@ -12,9 +12,9 @@
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "physics/ball_collision.hpp"
-#include "physics/contact_times.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/contact_times.hpp"
+#include "physics/model/motion.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 #include "physics/resolve/cue/cue.hpp"
 

@@ -7,7 +7,7 @@
 
 #include "nineball/engine.hpp"
 #include "nineball/limits.hpp"
-#include "physics/arc_log.hpp"
+#include "physics/model/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 
 namespace nineball {

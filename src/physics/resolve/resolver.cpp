@@ -3,8 +3,8 @@
 #include <tuple>
 
 #include "nineball/log.hpp"
-#include "physics/ball_collision.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"

@@ -6,9 +6,9 @@
 #include "nineball/event.hpp"
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
-#include "physics/contact_times.hpp"
-#include "physics/motion.hpp"
-#include "physics/next_event.hpp"
+#include "physics/model/contact_times.hpp"
+#include "physics/model/motion.hpp"
+#include "physics/model/next_event.hpp"
 #include "physics/resolve/jam/jam_counter.hpp"
 
 namespace nineball::physics {

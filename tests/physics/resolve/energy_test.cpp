@@ -11,7 +11,7 @@
 
 #include "nineball/params.hpp"
 #include "nineball/random.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 

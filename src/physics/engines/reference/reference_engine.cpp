@@ -9,9 +9,9 @@
 
 #include "nineball/limits.hpp"
 #include "nineball/log.hpp"
-#include "physics/arc_log.hpp"
-#include "physics/motion.hpp"
-#include "physics/next_event.hpp"
+#include "physics/model/arc_log.hpp"
+#include "physics/model/motion.hpp"
+#include "physics/model/next_event.hpp"
 #include "physics/resolve/cue/cue.hpp"
 #include "physics/resolve/resolver.hpp"
 

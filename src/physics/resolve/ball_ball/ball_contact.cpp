@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 
 namespace nineball::physics {

@@ -6,7 +6,7 @@
 
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 

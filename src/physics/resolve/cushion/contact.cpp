@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace nineball::physics {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "nineball/params.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 

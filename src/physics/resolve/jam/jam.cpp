@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "physics/ball_collision.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 
 namespace nineball::physics {

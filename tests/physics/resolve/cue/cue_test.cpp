@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "physics/engines/box2d/world.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 namespace {

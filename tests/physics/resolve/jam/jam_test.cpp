@@ -7,8 +7,8 @@
 
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
-#include "physics/ball_collision.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 #include "physics/resolve/jam/jam_counter.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "nineball/params.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 
 namespace nineball::physics {

@@ -9,7 +9,7 @@
 #include "nineball/limits.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 using namespace nineball;
 

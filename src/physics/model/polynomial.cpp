@@ -1,4 +1,4 @@
-#include "physics/polynomial.hpp"
+#include "physics/model/polynomial.hpp"
 
 #include <cmath>
 #include <vector>

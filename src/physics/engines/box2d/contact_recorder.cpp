@@ -1,4 +1,4 @@
-#include "physics/contact_recorder.hpp"
+#include "physics/engines/box2d/contact_recorder.hpp"
 
 namespace nineball::physics {
 namespace {

@@ -1,9 +1,9 @@
-#include "physics/next_event.hpp"
+#include "physics/model/next_event.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace nineball::physics {
 namespace {

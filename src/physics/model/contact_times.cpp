@@ -1,12 +1,12 @@
-#include "physics/contact_times.hpp"
+#include "physics/model/contact_times.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <mutex>
 
-#include "physics/ball_collision.hpp"
-#include "physics/polynomial.hpp"
+#include "physics/model/polynomial.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace nineball::physics {
 namespace {

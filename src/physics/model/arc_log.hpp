@@ -6,7 +6,7 @@
 #include "nineball/event.hpp"
 #include "nineball/params.hpp"
 #include "nineball/trace.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 

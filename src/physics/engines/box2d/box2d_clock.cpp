@@ -1,4 +1,4 @@
-#include "physics/box2d_clock.hpp"
+#include "physics/engines/box2d/box2d_clock.hpp"
 
 #include <sys/time.h>
 

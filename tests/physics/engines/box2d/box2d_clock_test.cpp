@@ -1,6 +1,6 @@
 // Box2D's step timers must not reach the real clock (a quarter of a break's time), and the
 // rest of the process must still read the real time.
-#include "physics/box2d_clock.hpp"
+#include "physics/engines/box2d/box2d_clock.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/time.h>

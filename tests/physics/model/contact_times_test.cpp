@@ -1,12 +1,12 @@
 // Contacts met again when pressed: at fixed depths, and at once when sunk and still going in.
-#include "physics/contact_times.hpp"
+#include "physics/model/contact_times.hpp"
 
 #include <gtest/gtest.h>
 
 #include "nineball/params.hpp"
 #include "nineball/random.hpp"
 #include "nineball/table.hpp"
-#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace nineball::physics {
 namespace {

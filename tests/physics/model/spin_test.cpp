@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "physics/motion.hpp"
-#include "physics_fixtures.hpp"
+#include "physics/model/motion.hpp"
+#include "physics/physics_fixtures.hpp"
 
 using namespace nineball;
 using namespace nineball::physics_test;

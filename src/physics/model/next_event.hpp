@@ -5,8 +5,8 @@
 
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
-#include "physics/contact_times.hpp"
-#include "physics/motion.hpp"
+#include "physics/model/contact_times.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 

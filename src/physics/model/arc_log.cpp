@@ -1,4 +1,4 @@
-#include "physics/arc_log.hpp"
+#include "physics/model/arc_log.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "physics/ball_collision.hpp"
+#include "physics/resolve/ball_ball/collide.hpp"
 
 #include <cmath>
 

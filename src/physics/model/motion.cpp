@@ -1,4 +1,4 @@
-#include "physics/motion.hpp"
+#include "physics/model/motion.hpp"
 
 #include <algorithm>
 #include <cmath>
