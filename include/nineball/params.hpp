@@ -15,10 +15,32 @@ enum class ClothModel {
   Damping,   ///< Box2D linear damping: v <- v / (1 + h c) each step
 };
 
-/// How balls grip each other while they touch.
-enum class BallBallModel {
-  Frictionless,  ///< the paper's: the impulse is along the line of centres only
-  Frictional,    ///< Coulomb friction of the contact points: throw and spin transfer
+/// How balls grip each other while they touch: one of the ball-ball models of the registry
+/// (src/physics/resolve/ball_ball/registry.cpp), chosen by the name it declares there
+/// ("frictionless", the paper's: the impulse along the line of centres only; "frictional",
+/// friction of the contact points: throw and spin transfer).
+class BallBallModel {
+ public:
+  /// The model of that name; std::invalid_argument for a name the registry does not hold.
+  static BallBallModel named(const std::string& name);
+  /// The model of that name, or nothing.
+  static std::optional<BallBallModel> fromName(const std::string& name);
+  /// Every model's name, in the registry's order.
+  static std::vector<std::string> names();
+
+  /// The name it declares in the registry.
+  const char* name() const;
+  /// True when it reads `parameter` (a field of "physics" that only some ball-ball models read).
+  bool reads(const std::string& parameter) const;
+  /// Its place in the registry.
+  std::size_t index() const { return index_; }
+
+  bool operator==(BallBallModel o) const { return index_ == o.index_; }
+  bool operator!=(BallBallModel o) const { return index_ != o.index_; }
+
+ private:
+  explicit BallBallModel(std::size_t index) : index_(index) {}
+  std::size_t index_;
 };
 
 /// How a cushion sends a ball back: one of the cushion models of the registry
@@ -108,7 +130,7 @@ struct PhysicsParams {
   double linear_damping = 0.2;        ///< 1/s, the damping model's c
   double rest_speed = 0.001;          ///< m/s, below which the damping model stops a ball
   ClothModel cloth = ClothModel::Spin;
-  BallBallModel ball_ball = BallBallModel::Frictional;
+  BallBallModel ball_ball = BallBallModel::named("frictional");
   BallFriction ball_friction;  ///< read by the frictional ball-ball model
   CushionModel cushion = CushionModel::named("mathavan");
   /// m, the cushion's nose above the slate (WPA: 62.5-64.5 % of the ball's diameter); read by
@@ -156,8 +178,6 @@ struct StepParams {
 };
 
 const char* clothModelName(ClothModel m);
-const char* ballBallModelName(BallBallModel m);
-std::optional<BallBallModel> ballBallModelFromName(const std::string& name);
 const char* contactModelName(ContactModel m);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
 std::optional<ContactModel> contactModelFromName(const std::string& name);

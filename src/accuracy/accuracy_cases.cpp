@@ -17,7 +17,7 @@ namespace {
 PhysicsParams paperCloth() {
   PhysicsParams p = PhysicsParams::real();
   p.cloth = ClothModel::Friction;
-  p.ball_ball = BallBallModel::Frictionless;
+  p.ball_ball = BallBallModel::named("frictionless");
   p.cushion = CushionModel::named("simple");
   p.cue_end_mass = 0.0;
   return p;

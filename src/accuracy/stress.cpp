@@ -286,7 +286,8 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
   p.linear_damping = frictionless ? 0.0 : uniform(rng, 0.0, 1.0);
   // The models are drawn from a copy, so that every scene drawn before they existed stays.
   std::uint64_t models = rng ^ 0x6d6f64656c73ULL;
-  p.ball_ball = static_cast<BallBallModel>(splitmix64(models) % 2);
+  const auto ball_ball = BallBallModel::names();
+  p.ball_ball = BallBallModel::named(ball_ball[splitmix64(models) % ball_ball.size()]);
   const std::vector<std::string> cushions = CushionModel::names();
   p.cushion = CushionModel::named(cushions[splitmix64(models) % cushions.size()]);
   // The nose anywhere strictly between the ball's centre and its top.

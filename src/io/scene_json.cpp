@@ -121,12 +121,14 @@ std::string oneOf(const std::vector<std::string>& names) {
   return out;
 }
 
-std::vector<std::string> cushionsReading(const std::string& parameter) {
-  std::vector<std::string> out;
-  for (const std::string& name : CushionModel::names()) {
-    if (CushionModel::named(name).reads(parameter)) out.push_back(name);
+// The names of the models of one kind (CushionModel, BallBallModel) that read `parameter`.
+template <class Model>
+std::vector<std::string> modelsReading(const std::string& parameter) {
+  std::vector<std::string> names;
+  for (const std::string& name : Model::names()) {
+    if (Model::named(name).reads(parameter)) names.push_back(name);
   }
-  return out;
+  return names;
 }
 
 // A model chosen by name; an unknown name is refused with the names there are.
@@ -186,8 +188,8 @@ PhysicsParams parsePhysics(const json& v) {
       continue;
     }
     if (key == "ball_ball") {
-      p.ball_ball = modelNamed(item.value(), field_path, ballBallModelFromName, "ball-ball",
-                               "\"frictionless\" or \"frictional\"");
+      p.ball_ball = modelNamed(item.value(), field_path, BallBallModel::fromName, "ball-ball",
+                               oneOf(BallBallModel::names()).c_str());
       continue;
     }
     if (key == "ball_friction") {
@@ -214,17 +216,19 @@ PhysicsParams parsePhysics(const json& v) {
   }
   if (optional(v, "cushion_height")) {
     if (!p.cushion.reads("cushion_height")) {
-      refuse(member(path, "cushion_height"), std::string("not used by the ") +
-                                                 quote(p.cushion.name()) + " cushion (only by " +
-                                                 oneOf(cushionsReading("cushion_height")) + ")");
+      refuse(member(path, "cushion_height"),
+             std::string("not used by the ") + quote(p.cushion.name()) + " cushion (only by " +
+                 oneOf(modelsReading<CushionModel>("cushion_height")) + ")");
     }
     // Its range (between the ball's centre and top) is checkSettings's, with every setting.
   } else if (optional(v, "ball_radius")) {
     p.cushion_height = 1.27 * p.ball_radius;  // 63.5 % of the diameter, as for the default ball
   }
-  if (optional(v, "ball_friction") && p.ball_ball != BallBallModel::Frictional) {
+  if (optional(v, "ball_friction") && !p.ball_ball.reads("ball_friction")) {
     refuse(member(path, "ball_friction"),
-           "not used by the \"frictionless\" ball-ball model (only by \"frictional\")");
+           std::string("not used by the ") + quote(p.ball_ball.name()) +
+               " ball-ball model (only by " + oneOf(modelsReading<BallBallModel>("ball_friction")) +
+               ")");
   }
   // Checked once the cloth is known, wherever "cloth" and "preset" appear in the object.
   for (const ParamField& pf : kParamFields) {

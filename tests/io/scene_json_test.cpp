@@ -304,14 +304,14 @@ TEST(SceneJson, ReadsEveryPhysicsParameter) {
 
 TEST(SceneJson, ReadsTheBallBallModelAndItsFriction) {
   Scene s = accepted(scene(R"("physics": {"ball_friction": 0.05})"));
-  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictional);
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::named("frictional"));
   EXPECT_DOUBLE_EQ(s.physics.ball_friction.at(3.0), 0.05);
   s = accepted(scene(R"("physics": {"ball_friction": {"a": 0.01, "b": 0.1, "c": 1.0}})"));
   EXPECT_DOUBLE_EQ(s.physics.ball_friction.at(0.0), 0.11);
   s = accepted(scene(R"("physics": {"preset": "paper"})"));
-  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictionless);
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::named("frictionless"));
   s = accepted(scene(R"("physics": {"ball_ball": "frictionless"})"));
-  EXPECT_EQ(s.physics.ball_ball, BallBallModel::Frictionless);
+  EXPECT_EQ(s.physics.ball_ball, BallBallModel::named("frictionless"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"ball_ball": "sticky"})"), "physics.ball_ball",
                         "unknown ball-ball model"));
   EXPECT_TRUE(

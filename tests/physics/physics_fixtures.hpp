@@ -46,7 +46,7 @@ inline TableDef longTable() {
 /// balls and simple cushion: the model the paper's closed forms describe.
 inline PhysicsParams constantDeceleration(PhysicsParams p = PhysicsParams::real()) {
   p.cloth = ClothModel::Friction;
-  p.ball_ball = BallBallModel::Frictionless;
+  p.ball_ball = BallBallModel::named("frictionless");
   p.cushion = CushionModel::named("simple");
   return p;
 }

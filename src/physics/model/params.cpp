@@ -10,7 +10,7 @@ PhysicsParams PhysicsParams::paper() {
   // The paper's own mu was in program units; the real rolling resistance stands in for it.
   p.rolling_friction = 0.01;
   p.cloth = ClothModel::Friction;
-  p.ball_ball = BallBallModel::Frictionless;
+  p.ball_ball = BallBallModel::named("frictionless");
   p.cue_end_mass = 0.0;
   p.cushion = CushionModel::named("simple");
   return p;
@@ -32,16 +32,6 @@ const char* clothModelName(ClothModel m) {
       return "damping";
   }
   return "?";
-}
-
-const char* ballBallModelName(BallBallModel m) {
-  return m == BallBallModel::Frictionless ? "frictionless" : "frictional";
-}
-
-std::optional<BallBallModel> ballBallModelFromName(const std::string& name) {
-  if (name == "frictionless") return BallBallModel::Frictionless;
-  if (name == "frictional") return BallBallModel::Frictional;
-  return std::nullopt;
 }
 
 const char* contactModelName(ContactModel m) {

@@ -21,7 +21,7 @@ constexpr double kAngleToleranceDeg = 0.1;  // the issue's direction target
 // tested here assume (throw is tested on its own, in models/throw_test.cpp).
 PhysicsParams spinOnly(double e = 1.0) {
   PhysicsParams p = PhysicsParams::real();
-  p.ball_ball = BallBallModel::Frictionless;
+  p.ball_ball = BallBallModel::named("frictionless");
   p.rolling_friction = 0.0;
   p.spin_decay = 0.0;
   p.ball_restitution = e;

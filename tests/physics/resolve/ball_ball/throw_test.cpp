@@ -115,7 +115,7 @@ TEST(Throw, FrictionPassesSpinToTheObjectBall) {
   PhysicsParams p = PhysicsParams::real();
   const Hit h = hit(30.0, 1.0, {}, p);
   EXPECT_GT(std::abs(h.object_spin.z), 1.0);
-  p.ball_ball = BallBallModel::Frictionless;
+  p.ball_ball = BallBallModel::named("frictionless");
   const Hit none = hit(30.0, 1.0, {}, p);
   EXPECT_NEAR(none.throw_deg, 0.0, 1e-9);
   EXPECT_EQ(none.object_spin.z, 0.0);
