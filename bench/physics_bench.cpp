@@ -6,15 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "ai/planner_evaluate.hpp"
 #include "nineball/engine.hpp"
+#include "nineball/motion.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
-#include "physics/model/contact_times.hpp"
-#include "physics/model/motion.hpp"
-#include "physics/resolve/ball_ball/collide.hpp"
 
 namespace {
 
@@ -115,28 +112,31 @@ void BM_PlannerCandidate(benchmark::State& state) {
               BallState::at(3, {0.2, -0.3}), BallState::at(5, {-0.9, -0.4}),
               BallState::at(9, {0.9, -0.1})};
   in.rack = rules::Rack(rules::RuleSet::Wpa, {1, 3, 5, 9}, false);
-  const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
-  const ai::Evaluator eval(in, table);
-  ai::Candidate cut;
-  cut.shot.heading_rad = std::atan2(0.35 - 0.1, 0.6 + 0.5) + 0.02;  // a thin cut of the 1
-  cut.shot.speed = 2.5;
-  for (auto _ : state) benchmark::DoNotOptimize(eval.value(cut));
+  const ai::ShotValuer valuer(in);
+  Shot cut;
+  cut.heading_rad = std::atan2(0.35 - 0.1, 0.6 + 0.5) + 0.02;  // a thin cut of the 1
+  cut.speed = 2.5;
+  for (auto _ : state) benchmark::DoNotOptimize(valuer.value(cut));
 }
 BENCHMARK(BM_PlannerCandidate)->Unit(benchmark::kMicrosecond);
 
-void BM_BallContactTime(benchmark::State& state) {
+void BM_TimeToTouch(benchmark::State& state) {
   // A sliding ball curving into a resting one: the quartic root of their separation.
-  const physics::Path a{{0.0, 0.0}, {2.0, 0.1}, {-1.5, 0.8}}, b{{0.3, 0.05}, {}, {}};
-  for (auto _ : state) benchmark::DoNotOptimize(physics::ballContact(a, b, 0.05715, 1.0));
-}
-BENCHMARK(BM_BallContactTime);
-
-void BM_SlidingState(benchmark::State& state) {
   const PhysicsParams p;
-  const physics::Arc arc = physics::beginArc(0.0, {{}, {2.0, 0.3}, {1.0, -4.0, 20.0}}, p);
-  for (auto _ : state) benchmark::DoNotOptimize(physics::stateAt(arc, 1.0 / 60.0, p));
+  BallState a = BallState::at(1, {0.0, 0.0}, {2.0, 0.1});
+  a.w = {-1.5, 0.8, 0.0};
+  const BallState b = BallState::at(2, {0.3, 0.05});
+  for (auto _ : state) benchmark::DoNotOptimize(timeToTouch(a, b, p, 1.0));
 }
-BENCHMARK(BM_SlidingState);
+BENCHMARK(BM_TimeToTouch);
+
+void BM_FreeMotion(benchmark::State& state) {
+  const PhysicsParams p;
+  BallState ball = BallState::at(0, {}, {2.0, 0.3});
+  ball.w = {1.0, -4.0, 20.0};
+  for (auto _ : state) benchmark::DoNotOptimize(freeMotion(ball, 1.0 / 60.0, p));
+}
+BENCHMARK(BM_FreeMotion);
 
 }  // namespace
 

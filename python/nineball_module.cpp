@@ -11,9 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "ai/parallel_map.hpp"
-#include "io/result_json.hpp"
-#include "io/scene_json.hpp"
+#include "nineball/json.hpp"
 #include "nineball/sim.hpp"
 
 namespace py = pybind11;
@@ -39,8 +37,8 @@ std::string sceneText(py::handle scene) {
 }
 
 Scene parse(py::handle scene, const std::string& where) {
-  io::SceneResult parsed = io::parseScene(sceneText(scene));
-  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
+  auto parsed = readScene(sceneText(scene));
+  if (const auto* refused = std::get_if<SceneRefusal>(&parsed)) {
     throw py::value_error(where + refused->message);
   }
   return std::get<Scene>(std::move(parsed));
@@ -106,7 +104,7 @@ py::object resultToPython(SimResult result) {
   const py::object loads = py::module_::import("json").attr("loads");
   std::optional<Trace> trace = std::move(result.trace);
   result.trace.reset();
-  py::object doc = loads(io::resultToJson(result).dump());
+  py::object doc = loads(resultJsonText(result));
   if (trace) {
     doc["trace"] = traceToPython(*trace);
     doc["trace_truncated"] = trace->truncated;
@@ -141,12 +139,10 @@ py::list simulateMany(const py::iterable& scenes, int threads) {
     parsed.push_back(parse(scene, "scenes[" + std::to_string(i) + "]: "));
     ++i;
   }
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<SimResult> results(parsed.size());
+  std::vector<SimResult> results;
   {
     const py::gil_scoped_release unlocked;
-    ai::parallelFor(parsed.size(), threads > 0 ? threads : cores,
-                    [&](std::size_t k) { results[k] = simulate(parsed[k]); });
+    results = simulateMany(parsed, threads);
   }
   py::list out;
   for (std::size_t k = 0; k < results.size(); ++k) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -92,6 +93,25 @@ struct Plan {
   /// over the robustness check when there was one.
   double value = 0.0;
   int simulations = 0;  ///< shots simulated to find it
+};
+
+/// How the computer values one shot from a position, as the planner values each candidate: the
+/// shot simulated to rest, judged by the rules, and the position it leaves scored for the
+/// shooter (0 loses the rack, 1 wins it). One value is one of the simulations `ai-bench` counts.
+class ShotValuer {
+ public:
+  /// Reads the position once (the table built, the balls the cue ball may hit first found).
+  explicit ShotValuer(PlanInput in);
+  ~ShotValuer();
+  ShotValuer(const ShotValuer&) = delete;
+  ShotValuer& operator=(const ShotValuer&) = delete;
+
+  /// The worth of `shot` struck from the cue ball where it lies.
+  double value(const Shot& shot) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// A computer player. Choices depend only on the position, the level and the seed (never on

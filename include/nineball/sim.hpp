@@ -55,6 +55,10 @@ struct SimResult {
 /// Runs a scene that has already been checked (see validateScene).
 SimResult simulate(const Scene& scene);
 
+/// Runs checked scenes on up to `threads` threads (the caller's included; 0 for one per core),
+/// each as simulate() runs it alone: the results, in order, do not depend on the threads.
+std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads);
+
 /// Empty when the result keeps its promises: every number finite, every ball on the table
 /// (its centre inside the cushions) or pocketed. Else what is broken: a defect of the engine,
 /// reported as an internal error and never printed as a result. Both engines' results are

@@ -2,7 +2,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "nineball/accuracy.hpp"
+#include "accuracy/accuracy.hpp"
 #include "nineball/engine.hpp"
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"

@@ -1,4 +1,4 @@
-#include "nineball/stress.hpp"
+#include "accuracy/stress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "nineball/engine.hpp"
-#include "nineball/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"

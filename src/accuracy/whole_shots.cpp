@@ -1,4 +1,4 @@
-#include "nineball/whole_shots.hpp"
+#include "accuracy/whole_shots.hpp"
 
 #include <algorithm>
 #include <array>

@@ -6,13 +6,13 @@
 #include <chrono>
 #include <numeric>
 
-#include "ai/parallel_map.hpp"
 #include "ai/planner_candidates.hpp"
 #include "ai/planner_evaluate.hpp"
 #include "ai/planner_geometry.hpp"
 #include "ai/planner_lookahead.hpp"
 #include "ai/planner_robust.hpp"
-#include "nineball/log.hpp"
+#include "common/log.hpp"
+#include "common/parallel_map.hpp"
 #include "nineball/random.hpp"
 
 namespace nineball::ai {

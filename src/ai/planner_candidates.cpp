@@ -5,7 +5,7 @@
 
 #include "ai/planner_geometry.hpp"
 #include "ai/planner_throw.hpp"
-#include "nineball/aim_guide.hpp"
+#include "play/aim_guide.hpp"
 
 namespace nineball::ai {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "ai/planner_candidates.hpp"
 #include "ai/planner_geometry.hpp"
-#include "nineball/aim_guide.hpp"
 #include "nineball/games.hpp"
+#include "play/aim_guide.hpp"
 
 namespace nineball::ai {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "ai/parallel_map.hpp"
+#include "common/parallel_map.hpp"
 
 namespace nineball::ai {
 namespace {

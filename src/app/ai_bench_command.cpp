@@ -8,8 +8,8 @@
 
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
 

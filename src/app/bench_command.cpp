@@ -6,11 +6,11 @@
 #include <sstream>
 #include <vector>
 
+#include "accuracy/accuracy.hpp"
+#include "accuracy/whole_shots.hpp"
 #include "app/exit_codes.hpp"
 #include "app/svg_plot.hpp"
-#include "nineball/accuracy.hpp"
-#include "nineball/atomic_file.hpp"
-#include "nineball/whole_shots.hpp"
+#include "common/atomic_file.hpp"
 
 namespace nineball::app {
 namespace {

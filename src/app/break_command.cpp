@@ -6,8 +6,8 @@
 
 #include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
+#include "common/limits.hpp"
 #include "io/result_json.hpp"
-#include "nineball/limits.hpp"
 #include "nineball/scenes.hpp"
 
 namespace nineball::app {

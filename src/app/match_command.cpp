@@ -8,8 +8,8 @@
 #include "app/exit_codes.hpp"
 #include "app/match_script_file.hpp"
 #include "app/read_input.hpp"
+#include "common/log.hpp"
 #include "io/match_json.hpp"
-#include "nineball/log.hpp"
 #include "nineball/planner.hpp"
 
 namespace nineball::app {

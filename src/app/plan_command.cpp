@@ -5,8 +5,8 @@
 
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
+#include "common/log.hpp"
 #include "io/plan_json.hpp"
-#include "nineball/log.hpp"
 
 namespace nineball::app {
 

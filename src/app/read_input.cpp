@@ -5,7 +5,7 @@
 #include <fstream>
 #include <istream>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 
 namespace nineball::app {
 namespace {

@@ -8,11 +8,11 @@
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
 #include "app/shot_svg.hpp"
+#include "common/atomic_file.hpp"
+#include "common/limits.hpp"
+#include "common/log.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
-#include "nineball/atomic_file.hpp"
-#include "nineball/limits.hpp"
-#include "nineball/log.hpp"
 
 namespace nineball::app {
 

@@ -11,9 +11,9 @@
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
 #include "app/sim_command.hpp"
+#include "common/limits.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
-#include "nineball/limits.hpp"
 
 namespace nineball::app {
 namespace {

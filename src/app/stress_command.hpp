@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iosfwd>
 
-#include "nineball/stress.hpp"
+#include "accuracy/stress.hpp"
 
 namespace nineball::app {
 

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "audio/synth.hpp"
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 
 namespace nineball::audio {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <sstream>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 
 namespace nineball::io {
 

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/limits.hpp"
 #include "io/parse_error.hpp"
-#include "nineball/limits.hpp"
 
 // Typed access to the fields of a JSON document. Every function takes the path of the value
 // it reads and throws ParseError{"<path>: <reason>"} when the value does not fit.

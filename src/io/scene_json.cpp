@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/limits.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_parts.hpp"
-#include "nineball/limits.hpp"
 
 namespace nineball::io {
 

@@ -19,7 +19,7 @@
 #include "app/resource_dir.hpp"
 #include "app/sim_command.hpp"
 #include "app/stress_command.hpp"
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 
 namespace nineball::app {
 namespace {

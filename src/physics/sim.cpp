@@ -1,12 +1,15 @@
 #include "nineball/sim.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <set>
 #include <string>
+#include <thread>
 
+#include "common/limits.hpp"
+#include "common/parallel_map.hpp"
 #include "nineball/engine.hpp"
-#include "nineball/limits.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 
@@ -199,6 +202,14 @@ SimResult simulate(const Scene& scene) {
                                         scene.physics);
   }
   return result;
+}
+
+std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<SimResult> results(scenes.size());
+  parallelFor(scenes.size(), threads > 0 ? threads : cores,
+              [&](std::size_t k) { results[k] = simulate(scenes[k]); });
+  return results;
 }
 
 }  // namespace nineball

@@ -1,4 +1,4 @@
-#include "nineball/aim_guide.hpp"
+#include "play/aim_guide.hpp"
 
 #include <cmath>
 #include <limits>

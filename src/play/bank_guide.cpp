@@ -1,4 +1,4 @@
-#include "nineball/bank_guide.hpp"
+#include "play/bank_guide.hpp"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 
 #include <SFML/Graphics/RenderTarget.hpp>
 
-#include "nineball/aim_guide.hpp"
+#include "play/aim_guide.hpp"
 #include "render/triangle_batch.hpp"
 #include "render/view_transform.hpp"
 

@@ -3,7 +3,7 @@
 #include <SFML/Graphics/Image.hpp>
 #include <SFML/Graphics/Texture.hpp>
 
-#include "nineball/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "render/sfml_errors.hpp"
 
 namespace nineball::render {

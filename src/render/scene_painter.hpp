@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "nineball/aim_guide.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/table.hpp"
+#include "play/aim_guide.hpp"
 #include "render/ball_painter.hpp"
 #include "render/call_painter.hpp"
 #include "render/cue_painter.hpp"

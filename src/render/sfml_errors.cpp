@@ -3,7 +3,7 @@
 #include <SFML/System/Err.hpp>
 #include <string>
 
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 
 namespace nineball::render {
 

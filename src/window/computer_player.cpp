@@ -6,7 +6,7 @@
 #include <exception>
 #include <system_error>
 
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "window/shot_call.hpp"
 

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
 #include "play/shot_summary.hpp"
 #include "window/shot_call.hpp"
 #include "window/turn_message.hpp"

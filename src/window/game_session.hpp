@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "audio/impact.hpp"
-#include "nineball/aim_guide.hpp"
 #include "nineball/match.hpp"
+#include "play/aim_guide.hpp"
 #include "render/hud_state.hpp"
 #include "window/fixed_step_clock.hpp"
 #include "window/practice_table.hpp"

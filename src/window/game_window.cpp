@@ -13,10 +13,10 @@
 
 #include "app/exit_codes.hpp"
 #include "audio/impact_sounds.hpp"
-#include "nineball/atomic_file.hpp"
-#include "nineball/bank_guide.hpp"
+#include "common/atomic_file.hpp"
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
+#include "play/bank_guide.hpp"
 #include "render/fonts.hpp"
 #include "render/png_capture.hpp"
 #include "render/scene_painter.hpp"

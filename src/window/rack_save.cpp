@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
 #include "window/game_session.hpp"
 #include "window/player_name.hpp"
 #include "window/settings.hpp"

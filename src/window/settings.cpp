@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
 #include "window/player_name.hpp"
 #include "window/state_file.hpp"
 

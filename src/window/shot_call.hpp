@@ -3,10 +3,10 @@
 #include <optional>
 #include <vector>
 
-#include "nineball/aim_guide.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/table.hpp"
+#include "play/aim_guide.hpp"
 
 namespace nineball::window {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "nineball/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "render/ball_painter.hpp"
 #include "render/fonts.hpp"
 #include "render/palette.hpp"

@@ -1,7 +1,7 @@
 #include "window/start_menu.hpp"
 
+#include "common/log.hpp"
 #include "nineball/games.hpp"
-#include "nineball/log.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/state_file.hpp"

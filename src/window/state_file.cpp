@@ -4,7 +4,7 @@
 #include <fstream>
 #include <system_error>
 
-#include "nineball/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "window/player_name.hpp"
 
 namespace nineball::window {

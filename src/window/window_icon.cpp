@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/resource_dir.hpp"
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 
 namespace nineball::window {
 

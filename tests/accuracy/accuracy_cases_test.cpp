@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "nineball/accuracy.hpp"
+#include "accuracy/accuracy.hpp"
 
 namespace nineball {
 namespace {

@@ -1,7 +1,7 @@
 // The quick version of the numerical stability stress (the long one: nineball stress
 // --layouts 3000 --long-run 3600). Every check must hold; and the checks must be able to
 // fail, which a deliberately coarse world shows.
-#include "nineball/stress.hpp"
+#include "accuracy/stress.hpp"
 
 #include <gtest/gtest.h>
 

@@ -12,8 +12,8 @@
 #include <map>
 #include <string>
 
+#include "accuracy/whole_shots.hpp"
 #include "nineball/scenes.hpp"
-#include "nineball/whole_shots.hpp"
 
 using namespace nineball;
 

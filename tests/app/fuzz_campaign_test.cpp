@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "app/cli_runner.hpp"
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/table.hpp"
 #include "window/game_session.hpp"

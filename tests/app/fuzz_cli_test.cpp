@@ -12,7 +12,7 @@
 #include <string>
 
 #include "app/cli_runner.hpp"
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/table.hpp"
 

@@ -1,6 +1,6 @@
 // Files are written whole or not at all, under a unique temporary name, never through a
 // symlink, and nothing is left behind on failure.
-#include "nineball/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 
 #include <dirent.h>
 #include <gtest/gtest.h>

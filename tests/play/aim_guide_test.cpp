@@ -1,5 +1,5 @@
 // The aim guide's geometry: ghost ball, directions after contact, cushions and pockets.
-#include "nineball/aim_guide.hpp"
+#include "play/aim_guide.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The bank line: the aim guide's path mirrored off the first cushion and traced on.
-#include "nineball/bank_guide.hpp"
+#include "play/bank_guide.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 
 namespace nineball {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 
 namespace nineball {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <tuple>
 
-#include "nineball/log.hpp"
+#include "common/log.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 #include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"

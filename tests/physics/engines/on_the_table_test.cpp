@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 #include "nineball/random.hpp"
 #include "nineball/sim.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "nineball/limits.hpp"
+#include "common/limits.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "physics/model/motion.hpp"

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "nineball/limits.hpp"
-#include "nineball/log.hpp"
+#include "common/limits.hpp"
+#include "common/log.hpp"
 #include "physics/engines/box2d/box2d_clock.hpp"
 #include "physics/engines/box2d/contact_recorder.hpp"
 #include "physics/engines/registry.hpp"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "nineball/limits.hpp"
-#include "nineball/log.hpp"
+#include "common/limits.hpp"
+#include "common/log.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/model/motion.hpp"
 #include "physics/model/next_event.hpp"

@@ -16,10 +16,10 @@
 #include <cstdio>
 #include <string>
 
+#include "accuracy/whole_shots.hpp"
 #include "nineball/params.hpp"
 #include "nineball/random.hpp"
 #include "nineball/sim.hpp"
-#include "nineball/whole_shots.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 
 namespace nineball::physics {

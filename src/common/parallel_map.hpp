@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <functional>
 
-namespace nineball::ai {
+namespace nineball {
 
 /// Calls `work(i)` for every i in [0, count) on up to `threads` threads (the caller's own
 /// included). Each call must write only its own slot of the caller's results, so that the
@@ -11,4 +11,4 @@ namespace nineball::ai {
 /// is rethrown once every thread has stopped.
 void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t)>& work);
 
-}  // namespace nineball::ai
+}  // namespace nineball

@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "nineball/aim_guide.hpp"
+#include "play/aim_guide.hpp"
 
 namespace nineball {
 

@@ -1,4 +1,4 @@
-#include "ai/parallel_map.hpp"
+#include "common/parallel_map.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace nineball::ai {
+namespace nineball {
 
 void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t)>& work) {
   std::atomic<std::size_t> next{0};
@@ -34,4 +34,4 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
   if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace nineball::ai
+}  // namespace nineball

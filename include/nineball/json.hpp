@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "nineball/sim.hpp"
+
+/// The JSON contracts of `nineball sim` (docs/cli.md) for programs that link the library: the
+/// scene read exactly as the command reads it, and the result written as it prints it.
+namespace nineball {
+
+/// Why a scene was refused: the message the command line prints, naming the field.
+struct SceneRefusal {
+  std::string message;
+};
+
+/// The scene in `text`, or why it is refused (bad JSON, an unknown field, a value out of range,
+/// balls that do not fit the table).
+std::variant<Scene, SceneRefusal> readScene(std::string_view text);
+
+/// The result document `nineball sim` prints, as compact JSON text (with the trace when the
+/// result has one).
+std::string resultJsonText(const SimResult& result);
+
+}  // namespace nineball

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <optional>
+
+#include "nineball/ball.hpp"
+#include "nineball/params.hpp"
+
+/// A ball's free motion on the cloth, by the closed forms both engines follow between events
+/// (sliding, rolling, spinning in place, at rest): for studying the cloth model on its own, no
+/// table, cushions or other balls.
+namespace nineball {
+
+/// Where `ball` is and how it moves `t` seconds (>= 0) later, crossing from one phase to the
+/// next as the cloth model of `p` says (a sliding ball starts rolling, a rolling one stops).
+BallState freeMotion(const BallState& ball, double t, const PhysicsParams& p);
+
+/// The first instant within `horizon` seconds (finite, >= 0) at which two balls moving freely
+/// (as freeMotion moves them) touch while closing, or nothing: the contact time the engines
+/// solve for (a quartic while either slides or rolls).
+std::optional<double> timeToTouch(const BallState& a, const BallState& b, const PhysicsParams& p,
+                                  double horizon);
+
+}  // namespace nineball

@@ -1,0 +1,19 @@
+#include "io/result_json.hpp"
+#include "io/scene_json.hpp"
+#include "nineball/json.hpp"
+
+namespace nineball {
+
+std::variant<Scene, SceneRefusal> readScene(std::string_view text) {
+  io::SceneResult parsed = io::parseScene(text);
+  if (auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    return SceneRefusal{std::move(refused->message)};
+  }
+  return std::get<Scene>(std::move(parsed));
+}
+
+std::string resultJsonText(const SimResult& result) {
+  return io::resultToJson(result).dump();
+}
+
+}  // namespace nineball
