@@ -119,8 +119,7 @@ int runGame(const app::GameOptions& options_in, const GameStart& start, std::ost
   session.setTurnObserver(count);
   ComputerPlayer computer(start.setup.seed);
   if (!options_in.practice) {
-    computer.setOpponent(session,
-                         app::opponentFromName(options_in.opponent).value_or(std::nullopt));
+    computer.setOpponent(session, seatFromName(options_in.opponent).value_or(HumanSeat{}));
   }
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
@@ -160,7 +159,7 @@ int runGame(const app::GameOptions& options_in, const GameStart& start, std::ost
   Settings settings = show_menu ? loadSettings(settingsPath()) : Settings{};
   // An opponent or rules asked for on the command line preset the menu.
   if (options.opponent != "human") {
-    settings.last.opponent = app::opponentFromName(options.opponent).value_or(std::nullopt);
+    settings.last.opponent = seatFromName(options.opponent).value_or(HumanSeat{});
   }
   if (options.rules != "wpa") settings.last.rules = start.setup.rules;
   if (options.game != defaultGame().name) settings.last.game = start.setup.game;
