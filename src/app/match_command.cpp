@@ -11,6 +11,7 @@
 #include "common/log.hpp"
 #include "io/match_json.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/seat.hpp"
 
 namespace nineball::app {
 namespace {
@@ -45,7 +46,7 @@ int runMatch(const MatchOptions& options, std::istream& in, std::ostream& out, s
   const io::MatchScript& script = *loaded;
   std::array<std::unique_ptr<ai::Planner>, 2> planners;
   for (rules::Player p : {rules::Player::A, rules::Player::B}) {
-    if (const auto& level = script.players[index(p)]) {
+    if (const auto level = computerLevel(script.players[index(p)])) {
       planners[index(p)] = std::make_unique<ai::Planner>(*level, plannerSeed(script.setup.seed, p));
     }
   }

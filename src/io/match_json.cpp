@@ -69,29 +69,25 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
   return turn;
 }
 
-PlayerKind parsePlayer(const json& v, const std::string& path) {
+Seat parsePlayer(const json& v, const std::string& path) {
   const std::string name = text(v, path);
-  if (name == "human") return std::nullopt;
-  const std::string prefix = "ai:";
-  if (name.compare(0, prefix.size(), prefix) == 0) {
-    if (auto level = ai::levelFromName(name.substr(prefix.size()))) return level;
-  }
+  if (auto seat = seatFromName(name)) return *seat;
   refuse(path, "unknown player " + quote(name) +
                    " (expected \"human\", \"ai:easy\", \"ai:medium\" or \"ai:hard\")");
 }
 
-std::array<PlayerKind, 2> parsePlayers(const json& v) {
+std::array<Seat, 2> parsePlayers(const json& v) {
   const std::string path = "players";
   expectObject(v, path);
   allowOnly(v, path, {"A", "B"}, "unknown player");
-  std::array<PlayerKind, 2> players{};
+  std::array<Seat, 2> players{};
   if (const json* p = optional(v, "A")) players[0] = parsePlayer(*p, member(path, "A"));
   if (const json* p = optional(v, "B")) players[1] = parsePlayer(*p, member(path, "B"));
   return players;
 }
 
 void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
-  turn["player"] = playerKindName(c.level);
+  turn["player"] = seatName(ComputerSeat{c.level});
   if (c.input.kind == TurnInput::Kind::Decision) return;
   const Shot& shot = c.input.shot;
   turn["shot"] = {{"heading_deg", headingDegrees(shot.heading_rad)},
@@ -108,7 +104,7 @@ MatchScript parseDocument(const json& doc) {
   MatchSetup& setup = script.setup;
   setup.game = gameField(doc);
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
-  const bool computer_plays = script.players[0] || script.players[1];
+  const bool computer_plays = isComputer(script.players[0]) || isComputer(script.players[1]);
   setup.rules = rulesField(doc, setup.game);
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
@@ -170,10 +166,6 @@ const char* decisionWord(const TurnRecord& t) {
 }
 
 }  // namespace
-
-std::string playerKindName(const PlayerKind& kind) {
-  return kind ? std::string("ai:") + ai::levelName(*kind) : std::string("human");
-}
 
 MatchScriptResult parseMatchScript(std::string_view text) {
   try {

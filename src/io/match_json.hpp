@@ -10,19 +10,14 @@
 #include "io/parse_error.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/seat.hpp"
 
 namespace nineball::io {
-
-/// Who plays one side: a person (turns from the script) or the computer at a level.
-using PlayerKind = std::optional<ai::Level>;
-
-/// "human", "ai:easy", "ai:medium", "ai:hard".
-std::string playerKindName(const PlayerKind& kind);
 
 /// A match script: how the rack starts, who plays, and the turns of the human players.
 struct MatchScript {
   MatchSetup setup;
-  std::array<PlayerKind, 2> players{};  ///< A, B; both human unless "players" says otherwise
+  std::array<Seat, 2> players{};  ///< A, B; both human unless "players" says otherwise
   std::vector<TurnInput> turns;
 };
 

@@ -6,6 +6,7 @@
 #include <exception>
 #include <system_error>
 
+#include "app/opponent.hpp"
 #include "common/log.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "window/shot_call.hpp"
@@ -121,18 +122,18 @@ ComputerPlayer::~ComputerPlayer() {
   reapAbandoned(true);
 }
 
-void ComputerPlayer::setOpponent(GameSession& session, const app::Opponent& opponent) {
+void ComputerPlayer::setOpponent(GameSession& session, const Seat& opponent) {
   abandon();
   if (opponent != opponent_) planner_.reset();
   opponent_ = opponent;
   stuck_ = false;
-  session.setSeatName(kSeat, opponent ? "Computer" : "Player 2");
+  session.setSeatName(kSeat, isComputer(opponent) ? "Computer" : "Player 2");
   logger("game")->info("opponent: {}", app::opponentLabel(opponent));
 }
 
 bool ComputerPlayer::computerTurn(const GameSession& session) const {
   const Phase phase = session.phase();
-  return opponent_ && session.seatToMove() == kSeat &&
+  return isComputer(opponent_) && session.seatToMove() == kSeat &&
          (phase == Phase::Aiming || phase == Phase::PushOutChoice);
 }
 
@@ -241,7 +242,8 @@ void ComputerPlayer::startThinking(const GameSession& session) {
   deciding_ = session.match().rack().awaitingDecision();
   rerack_choice_ = session.match().rack().pendingDecision() == rules::Decision::RerackOrPlayOn;
   if (!planner_) {
-    planner_ = std::make_shared<ai::Planner>(*opponent_, plannerSeed(seed_, planners_made_++));
+    planner_ = std::make_shared<ai::Planner>(*computerLevel(opponent_),
+                                             plannerSeed(seed_, planners_made_++));
   }
   // The worker plans from its own copy of the position: the match is never read off this
   // thread, whatever the window does meanwhile.

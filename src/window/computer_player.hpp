@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "app/opponent.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/seat.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
@@ -50,10 +50,10 @@ class ComputerPlayer {
   ComputerPlayer(const ComputerPlayer&) = delete;
   ComputerPlayer& operator=(const ComputerPlayer&) = delete;
 
-  const app::Opponent& opponent() const { return opponent_; }
-  /// Gives Player 2's seat to a person (nothing) or to the computer at a level, and names
-  /// the seat. A turn the computer had begun is dropped: the seat's new player takes it.
-  void setOpponent(GameSession& session, const app::Opponent& opponent);
+  const Seat& opponent() const { return opponent_; }
+  /// Gives Player 2's seat to a person or to the computer at a level, and names the seat. A turn
+  /// the computer had begun is dropped: the seat's new player takes it.
+  void setOpponent(GameSession& session, const Seat& opponent);
 
   /// Waits for the planner instead of polling it, so that each frame shows the same picture
   /// however long planning takes (screenshots, tests). The window stalls while it waits.
@@ -91,7 +91,7 @@ class ComputerPlayer {
 
   std::uint64_t seed_;
   long planners_made_ = 0;
-  app::Opponent opponent_;
+  Seat opponent_;
   std::shared_ptr<ai::Planner> planner_;  // shared with the worker planning with it
   std::future<ComputerMove> job_;
   std::vector<std::future<ComputerMove>> abandoned_;  // dropped turns still planning

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/opponent.hpp"
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
 #include "window/game_help.hpp"
@@ -30,20 +31,21 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
   const bool computer_decides = computer.controls(session);
   hud.overlay = overlay;
   switch (overlay) {
-    case Overlay::Help:
+    case Overlay::Help: {
       hud.overlay_title = "How to play";
       hud.overlay_lines = kHelpLines;
-      hud.overlay_lines.insert(
-          hud.overlay_lines.end(),
-          "O: 2 players, or vs computer easy / medium / hard (now: " +
-              (computer.opponent() ? std::string("computer ") + ai::levelName(*computer.opponent())
-                                   : std::string("2 players")) +
-              ")");
+      const std::optional<ai::Level> level = computerLevel(computer.opponent());
+      hud.overlay_lines.insert(hud.overlay_lines.end(),
+                               "O: 2 players, or vs computer easy / medium / hard (now: " +
+                                   (level ? std::string("computer ") + ai::levelName(*level)
+                                          : std::string("2 players")) +
+                                   ")");
       for (const std::string& line : gameHelpLines(session.match().rack().game())) {
         hud.overlay_lines.push_back(line);
       }
       hud.button_right = "Close (H)";
       break;
+    }
     case Overlay::ConfirmQuit:
       hud.overlay_title = "Quit nineball?";
       hud.overlay_lines = {"The rack in play will be lost."};

@@ -6,10 +6,10 @@
 #include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
 #include "app/match_script_file.hpp"
-#include "app/opponent.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
 #include "nineball/games.hpp"
+#include "nineball/seat.hpp"
 #include "window/game_window.hpp"
 
 namespace nineball::window {
@@ -36,8 +36,8 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
     auto script = app::loadMatchScript(options.script, in, err, "nineball: ");
     if (!script) return app::kExitBadInput;
     // The window plays the script's turns for both seats; computer players are its own option.
-    for (const auto& player : script->players) {
-      if (player) {
+    for (const Seat& player : script->players) {
+      if (isComputer(player)) {
         err << "nineball: " << start.script_name
             << ": players: computer players are for nineball match; in the window use "
                "--opponent\n";

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "app/opponent.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "render/hud_layout.hpp"
 #include "window/frame_builder.hpp"
@@ -211,12 +212,13 @@ void GameInput::switchOpponent() {
     session_.say("Practice is played alone: pick an opponent in a game from the menu.");
     return;
   }
-  const app::Opponent next = app::nextOpponent(computer_.opponent());
+  const Seat next = app::nextOpponent(computer_.opponent());
   computer_.setOpponent(session_, next);
   if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word
-  session_.say(next ? "Player 2 is now the computer, " + std::string(ai::levelName(*next)) +
-                          " level (O changes it)."
-                    : "Two players: Player 2 plays at this computer too (O changes it).");
+  const std::optional<ai::Level> level = computerLevel(next);
+  session_.say(level ? "Player 2 is now the computer, " + std::string(ai::levelName(*level)) +
+                           " level (O changes it)."
+                     : "Two players: Player 2 plays at this computer too (O changes it).");
 }
 
 void GameInput::update(double seconds) {

@@ -66,8 +66,9 @@ std::string capLabel(int cap) {
 
 MenuModel::MenuModel(const Settings& settings, std::optional<std::string> resume)
     : settings_(settings), resume_(std::move(resume)) {
-  computer_ = settings_.last.opponent.has_value();
-  if (settings_.last.opponent) level_ = *settings_.last.opponent;
+  const std::optional<ai::Level> level = computerLevel(settings_.last.opponent);
+  computer_ = level.has_value();
+  if (level) level_ = *level;
   selectFirst();
 }
 
@@ -124,7 +125,7 @@ MenuRow MenuModel::row(Item item) const {
       r.value = "no rules, any ball anywhere";
       break;
     case Item::Versus:
-      r = {Kind::Choice, "app::Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
+      r = {Kind::Choice, "Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
            false};
       break;
     case Item::Level:
@@ -363,7 +364,7 @@ void MenuModel::click(int i) {
 
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
-  c.opponent = computer_ ? app::Opponent(level_) : std::nullopt;
+  c.opponent = computer_ ? Seat(ComputerSeat{level_}) : Seat(HumanSeat{});
   if (!gameDef(c.game).playedBy(c.rules)) c.rules = gameDef(c.game).rule_sets.front();
   c.resume = outcome_ == Outcome::Resume;
   return c;

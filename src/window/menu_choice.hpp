@@ -3,9 +3,9 @@
 #include <array>
 #include <string>
 
-#include "app/opponent.hpp"
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
+#include "nineball/seat.hpp"
 
 namespace nineball::window {
 
@@ -20,7 +20,7 @@ enum class GameMode {
 struct MenuChoice {
   GameMode mode = GameMode::Match;
   rules::Game game = defaultGame().id;  ///< the game of a match (practice: none)
-  app::Opponent opponent;  ///< nothing: a second person; else the computer at a level (nine-ball)
+  Seat opponent;  ///< who plays Player 2: a second person, or the computer at a level
   rules::RuleSet rules = rules::RuleSet::Wpa;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)

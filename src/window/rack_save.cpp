@@ -91,7 +91,7 @@ std::string rackSavePath() {
   return xdgFile("XDG_STATE_HOME", ".local/state", "rack.json");
 }
 
-SavedRack saveOf(const GameSession& session, const app::Opponent& opponent) {
+SavedRack saveOf(const GameSession& session, const Seat& opponent) {
   SavedRack r;
   r.game = session.setup().game;
   r.rules = session.setup().rules;
@@ -113,7 +113,7 @@ nlohmann::ordered_json rackToJson(const SavedRack& rack) {
   j["rack"] = rack.rack_index;
   j["racks_won"] = {rack.racks_won[0], rack.racks_won[1]};
   j["names"] = {rack.names[0], rack.names[1]};
-  j["opponent"] = app::opponentName(rack.opponent);
+  j["opponent"] = seatName(rack.opponent);
   // Radians as doubles: JSON numbers keep every bit, degrees would round.
   nlohmann::ordered_json turns = nlohmann::ordered_json::array();
   for (const TurnInput& t : rack.turns) {
@@ -143,7 +143,7 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
     }
     SavedRack r;
     const auto rules = rules::ruleSetFromName(j.at("rules").get<std::string>());
-    const auto opponent = app::opponentFromName(j.at("opponent").get<std::string>());
+    const auto opponent = seatFromName(j.at("opponent").get<std::string>());
     if (!rules || !opponent) {
       why = "unknown rules or opponent";
       return std::nullopt;

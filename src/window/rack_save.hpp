@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "app/opponent.hpp"
 #include "nineball/games.hpp"
 #include "nineball/match.hpp"
+#include "nineball/seat.hpp"
 
 namespace nineball::window {
 
@@ -24,7 +24,7 @@ struct SavedRack {
   int rack_index = 0;      ///< 0 for the session's first rack
   std::array<int, 2> racks_won{};
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
-  app::Opponent opponent;
+  Seat opponent;  ///< who played Player 2
   std::vector<TurnInput> turns;
 };
 
@@ -33,7 +33,7 @@ struct SavedRack {
 std::string rackSavePath();
 
 /// The rack of a session as it stands (its turns so far).
-SavedRack saveOf(const GameSession& session, const app::Opponent& opponent);
+SavedRack saveOf(const GameSession& session, const Seat& opponent);
 
 nlohmann::ordered_json rackToJson(const SavedRack& rack);
 /// Nothing (and why) for a document that is not a saved rack.

@@ -75,7 +75,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
   j["bank_line"] = s.bank_line;
   j["frame_cap"] = s.frame_cap;
   j["last"] = {{"game", s.last.mode == GameMode::Practice ? "practice" : gameDef(s.last.game).name},
-               {"opponent", app::opponentName(s.last.opponent)},
+               {"opponent", seatName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
                {"names", {s.last.names[0], s.last.names[1]}}};
   return j;
@@ -141,7 +141,7 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
     }
   }
   if (const auto* v = field(*last, "opponent")) {
-    const auto o = v->is_string() ? app::opponentFromName(v->get<std::string>()) : std::nullopt;
+    const auto o = v->is_string() ? seatFromName(v->get<std::string>()) : std::nullopt;
     if (o) {
       s.last.opponent = *o;
     } else {

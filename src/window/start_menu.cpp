@@ -21,7 +21,7 @@ void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
 }  // namespace
 
 std::string describeSavedRack(const SavedRack& rack) {
-  const std::string p2 = rack.opponent ? std::string("Computer") : rack.names[1];
+  const std::string p2 = isComputer(rack.opponent) ? std::string("Computer") : rack.names[1];
   const std::string game =
       rack.game == defaultGame().id ? "" : std::string(gameDef(rack.game).name) + ", ";
   return game + rack.names[0] + " vs " + p2 + ": rack " + std::to_string(rack.rack_index + 1) +
@@ -62,7 +62,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
       session = std::move(resumed);
       computer.setOpponent(session, saved->opponent);
       session.setSeatName(0, saved->names[0]);
-      if (!saved->opponent) session.setSeatName(1, saved->names[1]);
+      if (!isComputer(saved->opponent)) session.setSeatName(1, saved->names[1]);
       session.say("Rack resumed: " + describeSavedRack(*saved) + ".");
       logger("game")->info("resumed the saved rack: {} turns replayed", saved->turns.size());
       return true;
@@ -78,14 +78,14 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   setup.rules = choice.rules;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);
-    computer.setOpponent(session, std::nullopt);
+    computer.setOpponent(session, HumanSeat{});
     return true;
   }
   session = GameSession(setup);
   session.setTurnObserver(observer);
   computer.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);
-  if (!choice.opponent) session.setSeatName(1, choice.names[1]);
+  if (!isComputer(choice.opponent)) session.setSeatName(1, choice.names[1]);
   return true;
 }
 

@@ -17,7 +17,10 @@
 #include "window/game_session.hpp"
 
 using nineball::BallState;
+using nineball::ComputerSeat;
+using nineball::HumanSeat;
 using nineball::MatchSetup;
+using nineball::Seat;
 using nineball::TurnInput;
 using nineball::Vec2;
 using nineball::ai::Level;
@@ -77,20 +80,19 @@ void holdThinkingUntil(ComputerPlayer& c, std::atomic<bool>& release) {
 }  // namespace
 
 TEST(Opponent, NamesAndTheCycleOfTheOKey) {
+  using nineball::seatFromName;
   using nineball::app::nextOpponent;
-  using nineball::app::Opponent;
-  using nineball::app::opponentFromName;
-  ASSERT_TRUE(opponentFromName("human"));
-  EXPECT_EQ(*opponentFromName("human"), Opponent{});
-  ASSERT_TRUE(opponentFromName("ai:hard"));
-  EXPECT_EQ(*opponentFromName("ai:hard"), Opponent{Level::Hard});
-  EXPECT_FALSE(opponentFromName("ai:pro"));
-  EXPECT_EQ(nineball::app::opponentName(Level::Medium), "ai:medium");
-  EXPECT_EQ(nineball::app::opponentLabel(Level::Easy), "vs computer (easy)");
-  EXPECT_EQ(nineball::app::opponentLabel(std::nullopt), "2 players");
-  Opponent o;
-  for (Opponent expected :
-       {Opponent{Level::Easy}, Opponent{Level::Medium}, Opponent{Level::Hard}, Opponent{}}) {
+  ASSERT_TRUE(seatFromName("human"));
+  EXPECT_EQ(*seatFromName("human"), Seat{HumanSeat{}});
+  ASSERT_TRUE(seatFromName("ai:hard"));
+  EXPECT_EQ(*seatFromName("ai:hard"), Seat{ComputerSeat{Level::Hard}});
+  EXPECT_FALSE(seatFromName("ai:pro"));
+  EXPECT_EQ(nineball::seatName(ComputerSeat{Level::Medium}), "ai:medium");
+  EXPECT_EQ(nineball::app::opponentLabel(ComputerSeat{Level::Easy}), "vs computer (easy)");
+  EXPECT_EQ(nineball::app::opponentLabel(HumanSeat{}), "2 players");
+  Seat o;
+  for (Seat expected : {Seat{ComputerSeat{Level::Easy}}, Seat{ComputerSeat{Level::Medium}},
+                        Seat{ComputerSeat{Level::Hard}}, Seat{HumanSeat{}}}) {
     o = nextOpponent(o);
     EXPECT_EQ(o, expected);
   }
@@ -100,12 +102,12 @@ TEST(ComputerPlayer, OnlyPlayerTwosSeatAndOnlyWhenChosen) {
   GameSession s{MatchSetup{}};
   ComputerPlayer c(1);
   EXPECT_EQ(s.seatName(1), "Player 2");
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   EXPECT_EQ(s.seatName(1), "Computer");
   EXPECT_FALSE(c.controls(s));  // Player 1 breaks
   c.update(s, kFrame);
   EXPECT_EQ(c.stage(), Stage::Idle);
-  c.setOpponent(s, std::nullopt);
+  c.setOpponent(s, HumanSeat{});
   EXPECT_EQ(s.seatName(1), "Player 2");
 }
 
@@ -114,7 +116,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   GameSession s(layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
                         BallState::at(3, {0.0, 0.0}), BallState::at(9, {0.8, -0.3})}));
   ComputerPlayer c(7);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   std::atomic<bool> release{false};
   holdThinkingUntil(c, release);
   s.setHeading(0.0);
@@ -166,7 +168,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
@@ -199,7 +201,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   EXPECT_FALSE(s.pushOutDeclared());
   // O gives the seat back to a person, who may then play it.
   for (int i = 0; i < 3; ++i) tap(sf::Keyboard::O);  // medium, hard, 2 players
-  EXPECT_FALSE(c.opponent());
+  EXPECT_FALSE(nineball::isComputer(c.opponent()));
   EXPECT_FALSE(c.controls(s));
   tap(sf::Keyboard::Space);
   EXPECT_EQ(s.phase(), Phase::Rolling);
@@ -209,7 +211,7 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   std::atomic<bool> release{false};
   holdThinkingUntil(c, release);
   s.setHeading(0.0);
@@ -220,10 +222,10 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   ASSERT_EQ(c.stage(), Stage::Thinking);
   // Back to the computer at another level while the dropped plan is still under way: a new
   // planner takes the turn, and the old one's answer is never played.
-  c.setOpponent(s, std::nullopt);
+  c.setOpponent(s, HumanSeat{});
   EXPECT_EQ(c.stage(), Stage::Idle);
   EXPECT_FALSE(c.controls(s));
-  c.setOpponent(s, Level::Medium);
+  c.setOpponent(s, ComputerSeat{Level::Medium});
   c.update(s, kFrame);
   EXPECT_EQ(c.stage(), Stage::Thinking);
   release = true;
@@ -236,7 +238,7 @@ TEST(ComputerPlayer, APlannerThatFailsGivesAPlainShotAtTheBallOn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   c.setWaitForPlans(true);
   c.setThinker([](nineball::ai::Planner&, const nineball::ai::PlanInput&, bool) -> ComputerMove {
     throw std::runtime_error("no plan");
@@ -258,7 +260,7 @@ TEST(ComputerPlayer, AnswersAPushOut) {
   // may push out; the computer then chooses.
   GameSession s{MatchSetup{}};
   ComputerPlayer c(3);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   c.setWaitForPlans(true);
   ASSERT_TRUE(s.shoot());
   ASSERT_TRUE(roll(s));
@@ -285,7 +287,7 @@ TEST(ComputerPlayer, AnswersAPushOut) {
 TEST(ComputerPlayer, PlaysARackToTheEndAgainstTheTestsShots) {
   GameSession s{MatchSetup{}};
   ComputerPlayer c(1);
-  c.setOpponent(s, Level::Easy);
+  c.setOpponent(s, ComputerSeat{Level::Easy});
   c.setWaitForPlans(true);
   int computer_shots = 0, human_shots = 0;
   std::set<Stage> seen;

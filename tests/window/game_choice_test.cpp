@@ -24,17 +24,17 @@ int rowNamed(const MenuModel& m, const std::string& label) {
 
 TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   Settings s;
-  s.last.opponent = ai::Level::Hard;
+  s.last.opponent = ComputerSeat{ai::Level::Hard};
   s.last.rules = rules::RuleSet::Paper;
   MenuModel m(s, std::nullopt);
   const int game = rowNamed(m, "Game");
   ASSERT_GE(game, 0);
   EXPECT_EQ(m.rows()[game].value, "Nine-ball");
-  EXPECT_TRUE(m.rows()[rowNamed(m, "app::Opponent")].enabled);
+  EXPECT_TRUE(m.rows()[rowNamed(m, "Opponent")].enabled);
   m.click(game);
   EXPECT_EQ(m.rows()[game].value, "Eight-ball");
   EXPECT_EQ(m.rows()[rowNamed(m, "Play eight-ball")].label, "Play eight-ball");
-  const MenuRow versus = m.rows()[rowNamed(m, "app::Opponent")];
+  const MenuRow versus = m.rows()[rowNamed(m, "Opponent")];
   EXPECT_TRUE(versus.enabled);
   EXPECT_EQ(versus.value, "Computer");
   EXPECT_TRUE(m.rows()[rowNamed(m, "Computer level")].enabled);
@@ -48,7 +48,7 @@ TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.game, rules::Game::TenBall);
   EXPECT_EQ(c.mode, GameMode::Match);
-  EXPECT_EQ(c.opponent, app::Opponent(ai::Level::Hard));
+  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Hard}));
   EXPECT_EQ(c.rules, rules::RuleSet::Wpa);
   EXPECT_EQ(m.settings().last.game, rules::Game::TenBall);
 }
@@ -93,7 +93,7 @@ TEST(GameChoice, TheSessionRacksTheGameChosen) {
     GameSession s(setup);
     EXPECT_EQ(s.match().rack().game(), game);
     EXPECT_EQ(s.match().rack().ballsOnTable().size(), balls);
-    EXPECT_EQ(saveOf(s, std::nullopt).game, game);
+    EXPECT_EQ(saveOf(s, HumanSeat{}).game, game);
     s.rematch();
     EXPECT_EQ(s.match().rack().game(), game);
   }
@@ -106,8 +106,8 @@ TEST(GameChoice, TheComputerTakesTheSeatInEveryGame) {
     setup.game = game;
     GameSession s(setup);
     ComputerPlayer computer(1);
-    computer.setOpponent(s, ai::Level::Medium);
-    EXPECT_EQ(computer.opponent(), app::Opponent(ai::Level::Medium));
+    computer.setOpponent(s, ComputerSeat{ai::Level::Medium});
+    EXPECT_EQ(computer.opponent(), Seat(ComputerSeat{ai::Level::Medium}));
     EXPECT_EQ(s.seatName(1), "Computer");
   }
 }

@@ -70,7 +70,7 @@ LiveRack playLive(const MatchSetup& setup, ai::Level seat1, ai::Level seat2, std
   rack.setup = s.rackSetup();
   ComputerPlayer computer(seed);
   computer.setWaitForPlans(true);
-  computer.setOpponent(s, seat2);
+  computer.setOpponent(s, ComputerSeat{seat2});
   ai::Planner player(seat1, seed + 17, 1);
   bool was_break = true;
   s.setTurnObserver([&](int, const TurnRecord& r, bool) {

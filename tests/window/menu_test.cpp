@@ -30,7 +30,7 @@ TEST(Menu, StartsOnPlayAndSkipsWhatIsGreyed) {
   m.key(MenuKey::Down);
   EXPECT_EQ(m.rows()[m.selected()].label, "Practice");
   m.key(MenuKey::Down);
-  EXPECT_EQ(m.rows()[m.selected()].label, "app::Opponent");
+  EXPECT_EQ(m.rows()[m.selected()].label, "Opponent");
   m.key(MenuKey::Up);
   m.key(MenuKey::Up);
   EXPECT_EQ(m.rows()[m.selected()].label, "Play nine-ball");
@@ -49,7 +49,7 @@ TEST(Menu, PracticeIsAGameModeOfItsOwn) {
 
 TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
   MenuModel m(Settings{}, std::nullopt);
-  selectRow(m, "app::Opponent");
+  selectRow(m, "Opponent");
   m.key(MenuKey::Right);
   EXPECT_EQ(m.rows()[m.selected()].value, "Computer");
   EXPECT_TRUE(m.rows()[rowNamed(m, "Computer level")].enabled);
@@ -65,11 +65,11 @@ TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
   ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.mode, GameMode::Match);
-  EXPECT_EQ(c.opponent, app::Opponent(ai::Level::Hard));
+  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Hard}));
   EXPECT_EQ(c.rules, rules::RuleSet::Paper);
   EXPECT_FALSE(c.resume);
   // The settings keep the choice for the next start.
-  EXPECT_EQ(m.settings().last.opponent, app::Opponent(ai::Level::Hard));
+  EXPECT_EQ(m.settings().last.opponent, Seat(ComputerSeat{ai::Level::Hard}));
   EXPECT_EQ(m.settings().last.rules, rules::RuleSet::Paper);
 }
 
@@ -115,9 +115,9 @@ TEST(Menu, ResumeComesFirstWhenARackIsSaved) {
 
 TEST(Menu, TheSettingsScreenEditsTheSettings) {
   Settings s;
-  s.last.opponent = ai::Level::Easy;
+  s.last.opponent = ComputerSeat{ai::Level::Easy};
   MenuModel m(s, std::nullopt);
-  EXPECT_EQ(m.choice().opponent, app::Opponent(ai::Level::Easy));  // preset from the last game
+  EXPECT_EQ(m.choice().opponent, Seat(ComputerSeat{ai::Level::Easy}));  // preset from the last game
   selectRow(m, "Settings");
   m.key(MenuKey::Enter);
   ASSERT_EQ(m.screen(), MenuModel::Screen::Settings);

@@ -69,12 +69,12 @@ TEST_F(RackFiles, SaveLoadReplayGivesTheSameBalls) {
   const std::string path = rackSavePath();
   EXPECT_EQ(path, (dir_ / "nineball" / "rack.json").string());
   std::string why;
-  ASSERT_TRUE(saveRack(saveOf(played, ai::Level::Medium), path, why)) << why;
+  ASSERT_TRUE(saveRack(saveOf(played, ComputerSeat{ai::Level::Medium}), path, why)) << why;
   const auto loaded = loadRack(path);
   ASSERT_TRUE(loaded);
   EXPECT_EQ(loaded->turns.size(), played.rackTurns().size());
   EXPECT_EQ(loaded->names[0], "Ann");
-  EXPECT_EQ(loaded->opponent, app::Opponent(ai::Level::Medium));
+  EXPECT_EQ(loaded->opponent, Seat(ComputerSeat{ai::Level::Medium}));
 
   MatchSetup again;
   again.rules = loaded->rules;
@@ -105,7 +105,7 @@ TEST_F(RackFiles, ALaterRackResumesWithItsSeedBreakerAndScore) {
   EXPECT_EQ(played.seatToMove(), 1);  // the seats take turns to break
   ASSERT_TRUE(played.shoot());
   ASSERT_TRUE(roll(played));
-  const SavedRack saved = saveOf(played, std::nullopt);
+  const SavedRack saved = saveOf(played, HumanSeat{});
   std::string why;
   const auto back = rackFromJson(nlohmann::json::parse(rackToJson(saved).dump()), why);
   ASSERT_TRUE(back) << why;

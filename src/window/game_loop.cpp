@@ -1,0 +1,438 @@
+#include "window/game_loop.hpp"
+
+#include <SFML/System/Sleep.hpp>
+#include <algorithm>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "app/exit_codes.hpp"
+#include "common/atomic_file.hpp"
+#include "common/log.hpp"
+#include "nineball/games.hpp"
+#include "nineball/seat.hpp"
+#include "play/bank_guide.hpp"
+#include "render/png_capture.hpp"
+#include "window/frame_builder.hpp"
+#include "window/menu_screen.hpp"
+#include "window/rack_save.hpp"
+#include "window/start_menu.hpp"
+#include "window/window_icon.hpp"
+#include "window/window_placement.hpp"
+
+namespace nineball::window {
+namespace {
+
+constexpr const char* kTitle = "nineball";
+// A screenshot run steps a fixed 1/60 s per frame, so that its picture is always the same.
+constexpr double kFixedFrame = 1.0 / 60.0;
+// A frame longer than this (a stall, a dragged window) counts as this long.
+constexpr double kMaxFrame = 0.25;
+// When nothing moves and no key is held, the window looks at its events this often (s) and
+// redraws only when one came, or at this interval (a window uncovered shows itself again).
+constexpr double kIdlePoll = 0.03;
+constexpr double kIdleRedraw = 2.0;
+constexpr unsigned kAntialiasing = 0;
+
+void openWindow(sf::RenderWindow& window, bool fullscreen, unsigned width, unsigned height,
+                bool vsync) {
+  sf::ContextSettings settings;
+  settings.antialiasingLevel = kAntialiasing;
+  if (fullscreen) {
+    window.create(sf::VideoMode::getDesktopMode(), kTitle, sf::Style::Fullscreen, settings);
+  } else {
+    window.create(sf::VideoMode(width, height), kTitle, sf::Style::Default, settings);
+    const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+    window.setPosition(centredOnDesktop(window.getSize(), {desktop.width, desktop.height}));
+  }
+  setWindowIcon(window);
+  window.setKeyRepeatEnabled(false);
+  window.setVerticalSyncEnabled(vsync);
+}
+
+// The window fits the desktop unless its size was asked for.
+void fitDesktop(app::GameOptions& o) {
+  if (o.size_given) return;
+  const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+  const double fit =
+      std::min({1.0, 0.92 * desktop.width / o.width, 0.88 * desktop.height / o.height});
+  o.width = static_cast<unsigned>(o.width * fit);
+  o.height = static_cast<unsigned>(o.height * fit);
+}
+
+std::string timestampedName() {
+  const std::time_t now = std::time(nullptr);
+  char name[64];
+  std::strftime(name, sizeof name, "nineball-%Y%m%d-%H%M%S.png", std::localtime(&now));
+  return name;
+}
+
+void logFrameRate(const FrameTimer& moving, long frames) {
+  if (moving.count() == 0) {
+    logger("game")->info("{} frames drawn, none while balls moved", frames);
+    return;
+  }
+  const double median = moving.quantile(0.5);
+  logger("game")->info(
+      "{} frames drawn; {} while balls moved: median {:.2f} ms ({:.0f} fps), 95th percentile "
+      "{:.2f} ms ({:.0f} fps)",
+      frames, moving.count(), median * 1e3, 1.0 / median, moving.quantile(0.95) * 1e3,
+      1.0 / moving.quantile(0.95));
+}
+
+// For the tests that check that no text spills: each line drawn, its box and its room.
+void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>& texts,
+                   unsigned width, unsigned height) {
+  std::ofstream out(path);
+  out << "window 0 0 " << width << ' ' << height << '\n';
+  for (const render::DrawnText& t : texts) {
+    out << "text " << t.box.left << ' ' << t.box.top << ' ' << t.box.width << ' ' << t.box.height
+        << " room " << t.room.left << ' ' << t.room.top << ' ' << t.room.width << ' '
+        << t.room.height << " : " << t.text << '\n';
+  }
+}
+
+bool keyPressed(const sf::Event& event, sf::Keyboard::Key key) {
+  return event.type == sf::Event::KeyPressed && event.key.code == key;
+}
+
+}  // namespace
+
+GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err)
+    : err_(err),
+      session_(start.setup, options.practice),
+      count_([this](int seat, const TurnRecord& record, bool was_break) {
+        stats_.record(seat, record, was_break);
+      }),
+      computer_(start.setup.seed),
+      options_(options),
+      capture_(!options.screenshot.empty()),
+      benchmark_(!capture_ && options.frames.has_value()),
+      interactive_(!capture_ && !benchmark_),
+      // The start menu, the settings file and the saved rack belong to a game a person starts;
+      // screenshots and scripts (the tests) see none of them unless --menu asks.
+      show_menu_(options.menu || (interactive_ && options.script.empty())),
+      keep_rack_(interactive_ && options.script.empty()),
+      frame_limit_(options.frames.value_or(capture_ ? 1 : -1)),
+      input_(session_, ui_, computer_) {
+  setup_status_ = setUp(start);
+}
+
+std::optional<int> GameLoop::setUp(const GameStart& start) {
+  session_.setTurnObserver(count_);
+  if (!options_.practice) {
+    computer_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
+  }
+  if (const auto status = playScript(start)) return status;
+  if (const auto status = openDisplay()) return status;
+  // Refused before a window opens and frames are drawn for nothing.
+  std::string why;
+  if (capture_ && !canWriteFile(options_.screenshot, why)) {
+    err_ << "nineball: --screenshot: " << why << '\n';
+    return app::kExitBadInput;
+  }
+  readSettings(start);
+  openGameWindow();
+  if (const auto status = startMenu()) return status;
+  prepareFrames(start);
+  return std::nullopt;
+}
+
+std::optional<int> GameLoop::playScript(const GameStart& start) {
+  for (std::size_t i = 0; i < start.turns.size(); ++i) {
+    try {
+      session_.playTurn(start.turns[i]);
+    } catch (const IllegalAction& e) {
+      err_ << "nineball: " << start.script_name << ": turns[" << i << "]: " << e.what() << '\n';
+      return 2;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<int> GameLoop::openDisplay() {
+  display_.emplace();
+  if (!display_->connected()) {
+    err_ << "nineball: no display found; run the game under a virtual display, e.g. xvfb-run -a "
+            "nineball\n";
+    return 1;
+  }
+  std::string why;
+  fonts_ = render::loadFonts(why);
+  if (!fonts_) {
+    err_ << "nineball: " << why << '\n';
+    return 1;
+  }
+  sfml_log_.emplace();
+  return std::nullopt;
+}
+
+void GameLoop::readSettings(const GameStart& start) {
+  settings_ = show_menu_ ? loadSettings(settingsPath()) : Settings{};
+  // An opponent or rules asked for on the command line preset the menu.
+  if (options_.opponent != "human") {
+    settings_.last.opponent = seatFromName(options_.opponent).value_or(HumanSeat{});
+  }
+  if (options_.rules != "wpa") settings_.last.rules = start.setup.rules;
+  if (options_.game != defaultGame().name) settings_.last.game = start.setup.game;
+}
+
+void GameLoop::openGameWindow() {
+  if (!capture_) fitDesktop(options_);
+  fullscreen_ = options_.fullscreen && !capture_;
+  window_.emplace();
+  openWindow(*window_, fullscreen_, options_.width, options_.height, interactive_);
+  painter_.emplace(session_.match().world().table(), *fonts_);
+  painter_->resize(window_->getSize().x, window_->getSize().y);
+  menu_painter_.emplace(*fonts_);
+}
+
+// Nothing when the game goes on to its frames.
+std::optional<int> GameLoop::startMenu() {
+  StartMenuContext menu{*window_, *painter_, *menu_painter_,
+                        [this] { return buildFrame(session_, ui_, computer_); }};
+  if (show_menu_ && capture_) {
+    drawStartMenu(menu, settings_);
+    std::string why;
+    if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
+      err_ << "nineball: --screenshot: " << why << '\n';
+      return app::kExitBadInput;
+    }
+    return 0;
+  }
+  if (show_menu_) {
+    if (!runStartMenu(menu, session_, computer_, settings_, count_)) return 0;
+  }
+  return std::nullopt;
+}
+
+void GameLoop::prepareFrames(const GameStart& start) {
+  sounds_ = options_.mute ? nullptr : audio::ImpactSounds::open();
+  applySound();
+  // A picture taken after N fixed frames must not depend on how fast the planner was.
+  computer_.setWaitForPlans(capture_);
+  if (options_.frames && start.turns.empty()) session_.shoot();  // the opening break, as a demo
+  if (options_.replay) session_.startReplay(false);
+  logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
+                       sounds_ ? "sound on" : "no sound");
+  // The frames' clocks start with the first frame, not with the setup and its menu.
+  frame_clock_.restart();
+  display_clock_.restart();
+  since_draw_.restart();
+}
+
+void GameLoop::applySound() {
+  if (sounds_) audio::ImpactSounds::setVolume(settings_.muted ? 0.0 : settings_.volume);
+}
+
+void GameLoop::saveSettingsNow() {
+  if (!show_menu_) return;
+  std::string whynot;
+  if (!saveSettings(settings_, settingsPath(), whynot)) {
+    logger("game")->warn("settings not saved: {}", whynot);
+  }
+}
+
+int GameLoop::run() {
+  if (setup_status_) return *setup_status_;
+  while (window_->isOpen()) {
+    const bool changed = handleEvents();
+    if (!window_->isOpen()) break;
+    if (waitWhileIdle(changed)) continue;
+    const bool rolling = advance();
+    draw();
+    if (capture_ && frame_ >= frame_limit_) {
+      if (!saveCapture()) return app::kExitBadInput;
+      break;
+    }
+    takeRequestedScreenshot();
+    present(rolling);
+    if (benchmark_ && frame_ >= frame_limit_) break;
+    answerRequests();
+    capFrameRate();
+  }
+  return finish();
+}
+
+// True when anything came (or on the first frame): the picture must be drawn again.
+bool GameLoop::handleEvents() {
+  sf::Event event;
+  bool changed = frame_ == 0;
+  while (window_->pollEvent(event)) {
+    changed = true;
+    handleEvent(event);
+  }
+  return changed;
+}
+
+void GameLoop::handleEvent(const sf::Event& event) {
+  if (event.type == sf::Event::Closed) {
+    window_->close();
+  } else if (event.type == sf::Event::Resized) {
+    const float w = static_cast<float>(event.size.width);
+    const float h = static_cast<float>(event.size.height);
+    window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
+    painter_->resize(w, h);
+  } else if (settings_menu_) {
+    handleSettingsMenuEvent(event);
+  } else if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
+    settings_menu_ = MenuModel::settingsOnly(settings_);
+  } else if (keyPressed(event, sf::Keyboard::M)) {
+    settings_.muted = !settings_.muted;
+    applySound();
+    saveSettingsNow();
+    session_.say(settings_.muted ? "Sound off (M turns it on)." : "Sound on (M mutes it).");
+  } else {
+    input_.handle(event, painter_->view());
+  }
+}
+
+void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
+  if (keyPressed(event, sf::Keyboard::F2)) settings_menu_->key(MenuKey::Escape);
+  if (keyPressed(event, sf::Keyboard::F12)) input_.requests().screenshot = true;
+  // A key held when the settings opened is still let go in the game.
+  if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
+    input_.handle(event, painter_->view());
+  }
+  handleMenuEvent(*settings_menu_, event, window_->getSize().x, window_->getSize().y);
+  settings_ = settings_menu_->settings();
+  applySound();
+  if (settings_menu_->outcome() != MenuModel::Outcome::None) {
+    settings_menu_.reset();
+    saveSettingsNow();
+  }
+}
+
+// True when the frame is skipped.
+bool GameLoop::waitWhileIdle(bool changed) {
+  // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
+  // instead of drawing the same picture again (the idle window costs next to nothing).
+  const bool still = session_.phase() != Phase::Rolling && !session_.replaying() &&
+                     !computer_.controls(session_) && !input_.keysHeld() && ui_.drag == Drag::None;
+  if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
+    sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
+    frame_clock_.restart();
+    return true;
+  }
+  return false;
+}
+
+// One frame of play: the held keys, the computer, the balls. True when the balls were rolling
+// as the frame began (its time counts in the frame rate while balls move).
+bool GameLoop::advance() {
+  const double dt =
+      capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
+  input_.update(dt);
+  // The computer waits while the help or the quit question is open, as a player would.
+  if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
+    computer_.update(session_, dt);
+  }
+  const bool rolling = session_.phase() == Phase::Rolling;
+  const auto impacts = session_.advance(dt);
+  if (keep_rack_ && session_.phase() == Phase::GameOver &&
+      forgotten_rack_ != session_.rackNumber()) {
+    forgetRack(rackSavePath());  // a finished rack has nothing to resume
+    forgotten_rack_ = session_.rackNumber();
+  }
+  if (sounds_ && !impacts.empty()) sounds_->play(impacts);
+  return rolling;
+}
+
+void GameLoop::draw() {
+  render::Frame picture = buildFrame(session_, ui_, computer_);
+  picture.guide_scale = guideLengthFactor(settings_.guide);
+  if (settings_.bank_line && picture.guide) {
+    picture.bank = bankGuide(session_.match().world().table(), picture.ball_radius, picture.balls,
+                             *picture.guide);
+  }
+  if (picture.hud.overlay == render::Overlay::GameOver) {
+    for (int seat = 0; seat < 2; ++seat) {
+      picture.hud.overlay_lines.push_back(session_.seatName(seat) + ": " + stats_.line(seat));
+    }
+  }
+  painter_->draw(*window_, picture);
+  if (settings_menu_) {
+    menu_painter_->draw(*window_, window_->getSize().x, window_->getSize().y,
+                        menuPicture(*settings_menu_));
+  }
+  since_draw_.restart();
+  ++frame_;
+}
+
+// --screenshot: the picture after the frames asked for. False when it could not be saved.
+bool GameLoop::saveCapture() {
+  std::string why;
+  if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
+    err_ << "nineball: --screenshot: " << why << '\n';
+    return false;
+  }
+  logger("game")->info("saved {} after {} frames", options_.screenshot, frame_);
+  if (const char* boxes = std::getenv("NINEBALL_HUD_TEXTS")) {
+    writeHudTexts(boxes, painter_->hudTexts(), window_->getSize().x, window_->getSize().y);
+  }
+  return true;
+}
+
+// F12: the picture as drawn, before it is shown.
+void GameLoop::takeRequestedScreenshot() {
+  WindowRequests& requests = input_.requests();
+  if (!requests.screenshot) return;
+  requests.screenshot = false;
+  const std::string name = timestampedName();
+  std::string why;
+  if (render::saveWindowPng(*window_, name, why)) {
+    session_.say("Screenshot saved: " + name);
+  } else {
+    session_.say("Screenshot failed: " + why, render::Tone::Warning);
+  }
+}
+
+void GameLoop::present(bool rolling) {
+  window_->display();
+  const double frame_time = display_clock_.restart().asSeconds();
+  if (rolling) moving_.add(frame_time);
+}
+
+// Quit and full screen, asked for by a key.
+void GameLoop::answerRequests() {
+  WindowRequests& requests = input_.requests();
+  if (requests.quit) window_->close();
+  if (requests.toggle_fullscreen) {
+    requests.toggle_fullscreen = false;
+    fullscreen_ = !fullscreen_;
+    openWindow(*window_, fullscreen_, options_.width, options_.height, true);
+    window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(window_->getSize().x),
+                                            static_cast<float>(window_->getSize().y))));
+    painter_->resize(window_->getSize().x, window_->getSize().y);
+  }
+}
+
+void GameLoop::capFrameRate() {
+  if (interactive_ && settings_.frame_cap > 0) {
+    const double spare = 1.0 / settings_.frame_cap - frame_clock_.getElapsedTime().asSeconds();
+    if (spare > 0.0) sf::sleep(sf::seconds(static_cast<float>(spare)));
+  }
+}
+
+int GameLoop::finish() {
+  logFrameRate(moving_, frame_);
+  if (keep_rack_ && !session_.practice()) {
+    // A rack in play is kept for the next start (a finished one was forgotten as it ended;
+    // a rack not yet broken leaves an older save alone).
+    const std::string path = rackSavePath();
+    if (session_.phase() != Phase::GameOver && !session_.rackTurns().empty()) {
+      std::string why;
+      if (saveRack(saveOf(session_, computer_.opponent()), path, why)) {
+        logger("game")->info("rack saved to {}", path);
+      } else {
+        logger("game")->warn("rack not saved: {}", why);
+      }
+    }
+  }
+  return 0;
+}
+
+}  // namespace nineball::window

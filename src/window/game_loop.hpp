@@ -1,0 +1,107 @@
+#pragma once
+
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/System/Clock.hpp>
+#include <SFML/Window/Event.hpp>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+
+#include "app/game_options.hpp"
+#include "audio/impact_sounds.hpp"
+#include "render/fonts.hpp"
+#include "render/menu_painter.hpp"
+#include "render/scene_painter.hpp"
+#include "render/sfml_errors.hpp"
+#include "window/computer_player.hpp"
+#include "window/display_probe.hpp"
+#include "window/frame_timer.hpp"
+#include "window/game_input.hpp"
+#include "window/game_session.hpp"
+#include "window/game_window.hpp"
+#include "window/menu.hpp"
+#include "window/session_stats.hpp"
+#include "window/settings.hpp"
+#include "window/ui_state.hpp"
+
+namespace nineball::window {
+
+/// The game window from start to end. Construction sets the game up: the script's turns, the
+/// display and the fonts, the window, the start menu. run() then goes round the frame: the
+/// events, the shot and the computer, the picture, the screenshots, the wait when nothing
+/// moves; and at the end keeps the rack in play for the next start.
+class GameLoop {
+ public:
+  GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err);
+  GameLoop(const GameLoop&) = delete;
+  GameLoop& operator=(const GameLoop&) = delete;
+
+  /// The exit status when the setup already ended the game (see runGame: a refusal, or 0 after
+  /// the start menu's screenshot or its Quit); nothing when run() is to play.
+  std::optional<int> setupStatus() const { return setup_status_; }
+  /// Plays frame after frame until the window closes, the screenshot is taken or the --frames
+  /// are drawn; returns the exit status.
+  int run();
+
+ private:
+  // The setup, in its order.
+  std::optional<int> setUp(const GameStart& start);
+  std::optional<int> playScript(const GameStart& start);
+  std::optional<int> openDisplay();
+  void readSettings(const GameStart& start);
+  void openGameWindow();
+  std::optional<int> startMenu();
+  void prepareFrames(const GameStart& start);
+
+  // The steps of one frame, in their order.
+  bool handleEvents();
+  void handleEvent(const sf::Event& event);
+  void handleSettingsMenuEvent(const sf::Event& event);
+  bool waitWhileIdle(bool changed);
+  bool advance();
+  void draw();
+  bool saveCapture();
+  void takeRequestedScreenshot();
+  void present(bool rolling);
+  void answerRequests();
+  void capFrameRate();
+  int finish();
+
+  void applySound();
+  void saveSettingsNow();
+
+  std::ostream& err_;
+  GameSession session_;
+  SessionStats stats_;
+  const GameSession::TurnObserver count_;
+  ComputerPlayer computer_;
+  // Made in the setup's order, once the steps before them went through.
+  std::optional<DisplayConnection> display_;
+  std::optional<render::Fonts> fonts_;
+  std::optional<render::SfmlErrorsToLog> sfml_log_;
+  app::GameOptions options_;
+  const bool capture_;      // --screenshot: draw, save the picture, exit
+  const bool benchmark_;    // --frames without --screenshot
+  const bool interactive_;  // a person plays
+  const bool show_menu_;
+  const bool keep_rack_;
+  const long frame_limit_;
+  Settings settings_;
+  bool fullscreen_ = false;
+  std::optional<sf::RenderWindow> window_;
+  std::optional<render::ScenePainter> painter_;
+  UiState ui_;
+  std::optional<render::MenuPainter> menu_painter_;
+  std::unique_ptr<audio::ImpactSounds> sounds_;
+  std::optional<MenuModel> settings_menu_;  // F2: the settings over the game
+  GameInput input_;
+  FrameTimer moving_;
+  sf::Clock frame_clock_;
+  sf::Clock display_clock_;
+  sf::Clock since_draw_;
+  int forgotten_rack_ = 0;
+  long frame_ = 0;
+  std::optional<int> setup_status_;
+};
+
+}  // namespace nineball::window
