@@ -8,7 +8,8 @@
 
 namespace nineball {
 
-/// Id of the cue ball; object balls are 1-9 in nine-ball (any other id is allowed in scenes).
+/// Id of the cue ball; object balls carry the numbers their game gives them (any other id is
+/// allowed in scenes).
 constexpr int kCueBall = 0;
 
 /// A ball as the world outside the physics sees it.

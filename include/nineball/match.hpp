@@ -27,8 +27,9 @@ class IllegalAction : public std::runtime_error {
 /// How a rack starts.
 struct MatchSetup {
   rules::Game game = defaultGame().id;
-  rules::RuleSet rules = rules::RuleSet::Wpa;  ///< Paper: nine-ball only
-  std::uint64_t seed = 1;                      ///< places the rack's free balls
+  rules::RuleSet rules =
+      rules::RuleSet::Wpa;  ///< Paper: only the games that GameDef::rule_sets says
+  std::uint64_t seed = 1;   ///< places the rack's free balls
   TableDef table;
   PhysicsParams physics;
   StepParams step;
@@ -43,8 +44,8 @@ struct TurnInput {
   Kind kind = Kind::Shot;
   Shot shot;
   std::optional<Vec2> cue;  ///< where to place the cue ball (ball in hand, or the break)
-  /// The called ball and pocket: needed when Rack::callRequired() (ten-ball after the break,
-  /// eight-ball on the 8); a push-out needs none.
+  /// The called ball and pocket: needed when Rack::callRequired() (the game's rules say
+  /// when: GameDef::called_shots); a push-out needs none.
   std::optional<rules::Call> call;
   /// Decision: shoot / play on (true), or pass the shot back / re-rack (false).
   bool shoot = true;
@@ -61,9 +62,9 @@ struct TurnRecord {
   bool shoot = true;  ///< for a decision: shoot / play on (true), or pass / rerack (false)
 };
 
-/// A rack of nine-, eight- or ten-ball played through the real physics: the table, the balls, the
-/// rules. Headless and deterministic. A window drives it with beginShot / step / finishShot; a
-/// script with play().
+/// A rack of any game of the registry (nineball/games.hpp) played through the real physics: the
+/// table, the balls, the rules. Headless and deterministic. A window drives it with beginShot /
+/// step / finishShot; a script with play().
 class Match {
  public:
   explicit Match(const MatchSetup& setup);

@@ -81,9 +81,8 @@ const char* shotKindName(ShotKind kind);
 /// The planner's answer for one position.
 struct Plan {
   /// The shot as intended (no execution noise): kind Shot (or PushOut), `cue` set when
-  /// placing the ball, `call` set when the rules need one (ten-ball after the break, eight-ball
-  /// on the 8): the target and its pocket, or for a safety the ball on and the pocket nearest
-  /// to it.
+  /// placing the ball, `call` set when the rules need one (GameDef::called_shots): the target and
+  /// its pocket, or for a safety the ball on and the pocket nearest to it.
   TurnInput turn;
   ShotKind kind = ShotKind::Safety;
   int target = 0;                  ///< the ball meant to drop (pot, combination, bank)
@@ -124,10 +123,10 @@ class Planner {
   /// The best shot found for the position, as intended. The rack must not be waiting for a
   /// decision after a push-out (see shootAfterPushOut).
   Plan plan(const PlanInput& in);
-  /// The pending decision of `in.rack` (after a push-out or a ten-ball call breach: true to
-  /// shoot, false to pass back; after an illegal eight-ball break: true to play on, false to
-  /// re-rack). Takes the table when its best shot from there is worth at least what the
-  /// opponent would get.
+  /// The pending decision of `in.rack` (a play-or-pass choice, after a push-out or a pot not as
+  /// called: true to shoot, false to pass back; a re-rack choice after an illegal break: true to
+  /// play on, false to re-rack). Takes the table when its best shot from there is worth at least
+  /// what the opponent would get.
   bool shootAfterPushOut(const PlanInput& in);
   /// The plan as this level cues it: heading and speed with the level's noise, drawn from the
   /// planner's own seeded generator.

@@ -315,10 +315,10 @@ std::vector<const BallState*> targetBalls(const SearchContext& ctx,
   return out;
 }
 
-// With several balls to choose from (eight-ball) the easiest lines are easier than with one
-// (nine-ball): 5 in 8 of them are kept (rounded up), so that the search costs about the same.
-// Hard eight-ball (`ai-bench --game eight-ball`) with 8, 6 and 5 lines: run-outs 48, 50 and 59
-// of 100, think time median 0.23, 0.21 and 0.20 s.
+// With several balls to choose from (a game of groups) the easiest lines are easier than with
+// one ball on: 5 in 8 of them are kept (rounded up), so that the search costs about the same.
+// Hard, in the game of groups (`ai-bench --game <it>`), with 8, 6 and 5 lines: run-outs 48, 50 and
+// 59 of 100, think time median 0.23, 0.21 and 0.20 s.
 int potLineCount(const LevelSettings& level, std::size_t targets) {
   return targets > 1 ? (level.max_pot_lines * 5 + 7) / 8 : level.max_pot_lines;
 }

@@ -13,7 +13,7 @@
 namespace nineball::ai {
 
 /// What every generator reads: the position, the table as built, the level, and the balls the
-/// cue ball may hit first (nine- and ten-ball: the ball on; eight-ball: the shooter's group,
+/// cue ball may hit first (the ball on; in a game of groups, the shooter's group,
 /// any but the 8 on an open table, or the 8), lowest first.
 struct SearchContext {
   const PlanInput& in;

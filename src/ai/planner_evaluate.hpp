@@ -44,7 +44,7 @@ struct Outcome {
 /// Plays shots from one position through the physics and scores each outcome for the shooter
 /// with the rules: a win 1, a loss 0; a legal pot 0.55 + 0.4 x the chance of potting a ball
 /// on next from where the cue ball stops; a legal miss 0.45 - 0.4 x the opponent's chance; a
-/// position the opponent may play or pass back (a push-out, a ten-ball call breach) the lesser
+/// position the opponent may play or pass back (a push-out, a pot not as called) the lesser
 /// of its worth to either player, since the opponent takes the better; a foul below any legal
 /// shot. Safe to call from several threads: every call builds its own world.
 class Evaluator {

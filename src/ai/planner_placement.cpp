@@ -17,9 +17,9 @@ constexpr double kPlacementGap = 0.001;
 // 30 racks a setting: from the middle at 8-9.5 m/s with a centre or slightly low tip every
 // break pocketed a ball and none scratched; from 0.25 m out a quarter pocketed nothing.
 // Ten-ball's tighter rack is another matter: from the middle alone 7 breaks of 30 pocketed a
-// ball, choosing among all five spots 24 of 30 (`ai-bench --game ten-ball --racks 30`, hard),
-// so ten-ball tries every spot. Eight-ball does not: its breaks pocketed a ball in 93 of 100
-// racks from the middle and in 49 choosing among the five.
+// ball, choosing among all five spots 24 of 30 (`ai-bench --racks 30`, hard, in the game that sets
+// GameDef::break_from_every_spot), so that game tries every spot. Another did not: its breaks
+// pocketed a ball in 93 of 100 racks from the middle and in 49 choosing among the five.
 const double kBreakSpots[] = {0.0, 0.12, -0.12, 0.25, -0.25};
 const Vec2 kBreakTips[] = {{0.0, 0.0}, {0.0, -0.2}};
 // Ball in hand: the cue ball goes this far (m) behind the ghost ball ...
@@ -137,7 +137,7 @@ Vec2 anyLegalSpot(const SearchContext& ctx) {
 }
 
 // The rack's apex: the object ball nearest the head string on the long axis (nine- and
-// ten-ball rack the 1 there).
+// rack whose apex ball must be hit first, the ball there).
 const BallState* apexBall(const SearchContext& ctx) {
   const Vec2 head{ctx.table.headStringX(), 0.0};
   const BallState* apex = nullptr;

@@ -12,8 +12,8 @@
 namespace nineball::app {
 
 /// A seeded practice position: the cue ball and 3 to 5 object balls placed at random on the
-/// table, none touching another or a cushion: distinct numbers 1-9 in nine-ball, 1-10 in
-/// ten-ball, and in eight-ball the 8 and 3 to 5 others of 1-15. The same seed gives the same
+/// table, none touching another or a cushion: distinct numbers of the game's balls, with
+/// the balls its layouts require (GameDef::required_balls). The same seed gives the same
 /// position on every machine.
 std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
                                       const PhysicsParams& physics,

@@ -8,6 +8,7 @@
 #include "app/exit_codes.hpp"
 #include "common/limits.hpp"
 #include "io/result_json.hpp"
+#include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 
 namespace nineball::app {
@@ -32,7 +33,8 @@ const CLI::Validator kSpeedRange(
 }  // namespace
 
 CLI::App* addBreakCommand(CLI::App& app, BreakOptions& options) {
-  CLI::App* cmd = app.add_subcommand("break", "Simulate the standard nine-ball break headless");
+  CLI::App* cmd = app.add_subcommand(
+      "break", (std::string("Simulate the standard ") + defaultGame().name + " break headless"));
   cmd->add_option("--seed", options.seed, "Seed of the rack order of balls 2-8")
       ->check(seedCheck())
       ->capture_default_str();

@@ -11,7 +11,7 @@ namespace nineball::app {
 /// Options of the game window (`nineball` with no subcommand).
 struct GameOptions {
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
-  std::string rules = "wpa";              ///< wpa | paper (nine-ball only)
+  std::string rules = "wpa";              ///< wpa | paper (the games GameDef::rule_sets allows)
   std::uint64_t seed = 1;          ///< rack order of balls 2-8, and the computer's cueing errors
   std::string opponent = "human";  ///< Player 2: human | ai:easy | ai:medium | ai:hard
   bool mute = false;               ///< no sound at all

@@ -58,7 +58,8 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                      ->check(CLI::IsMember(gameNames()))
                      ->capture_default_str());
   opts.push_back(app.add_option("--rules", o.rules,
-                                "Game window: the rules (paper: the seed paper's, for nine-ball)")
+                                "Game window: the rules (paper: the seed paper's, for " +
+                                    gamesPlayedBy(rules::RuleSet::Paper) + ")")
                      ->check(CLI::IsMember({"wpa", "paper"}))
                      ->capture_default_str());
   opts.push_back(

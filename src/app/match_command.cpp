@@ -10,6 +10,7 @@
 #include "app/read_input.hpp"
 #include "common/log.hpp"
 #include "io/match_json.hpp"
+#include "nineball/games.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/seat.hpp"
 
@@ -31,9 +32,9 @@ std::uint64_t plannerSeed(std::uint64_t script_seed, rules::Player p) {
 }  // namespace
 
 CLI::App* addMatchCommand(CLI::App& app, MatchOptions& options) {
-  CLI::App* cmd = app.add_subcommand(
-      "match",
-      "Play a rack of nine-, eight- or ten-ball from a JSON script and print the result as JSON");
+  CLI::App* cmd =
+      app.add_subcommand("match", "Play a rack of " + gamesPlayedBy(rules::RuleSet::Wpa) +
+                                      " from a JSON script and print the result as JSON");
   cmd->add_option("script", options.script_path, "Script file, or - to read standard input")
       ->required();
   return cmd;

@@ -10,20 +10,20 @@
 // The "game" and "rules" fields that `match` and `plan` documents share.
 namespace nineball::io {
 
-/// The document's optional "game" (nine-ball when absent).
+/// The document's optional "game" (the registry's default game when absent).
 rules::Game gameField(const nlohmann::json& doc);
 
-/// The document's optional "rules" (WPA when absent); the paper's rules are refused outside
-/// nine-ball.
+/// The document's optional "rules" (WPA when absent); rules the game is not played by
+/// (GameDef::rule_sets) are refused.
 rules::RuleSet rulesField(const nlohmann::json& doc, rules::Game game);
 
-/// The object balls a layout of `game` may hold: at least one; in eight-ball 1-15 and the 8
-/// among them (the rack is won on it), in ten-ball 1-10. Nine-ball takes any ids (scenes do).
+/// The object balls a layout of `game` may hold: at least one; within the game's highest
+/// number (GameDef::highest_ball) and holding its required balls (GameDef::required_balls).
 /// Refuses "balls" naming the ball.
 void checkGameBalls(rules::Game game, const std::vector<BallState>& balls);
 
-/// The decision words of `game`: "play-on" / "rerack" answer an illegal eight-ball break,
-/// "shoot" / "pass" a nine- or ten-ball push-out (or a ten-ball pot not as called). True for
+/// The decision words of `game`: GameDef::decision ("shoot" / "pass" after a push-out,
+/// "play-on" / "rerack" after an illegal break). True for
 /// play on / shoot. Refuses `path` for another game's word or an unknown one.
 bool decisionField(const std::string& word, rules::Game game, const std::string& path);
 

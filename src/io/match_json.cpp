@@ -19,7 +19,7 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-// The highest ball number of any game (eight-ball's 15).
+// The highest ball number of any game of the registry.
 constexpr int kHighestBall = 15;
 
 rules::Call parseCall(const json& v, const std::string& path) {

@@ -38,8 +38,9 @@ MatchScriptResult parseMatchScript(std::string_view text);
 /// The result document: {"turns": [...], "winner": null|"A"|"B", "balls": [...]}. A turn the
 /// computer played (`computer[i]` set) also carries "player": "ai:<level>" and, for a shot,
 /// "shot": {"heading_deg", "speed", "tip"} and "cue" when it placed the cue ball. A called
-/// shot echoes its "call"; ten-ball turns carry "call_breach" (null, "wrong-pocket" or
-/// "no-call"), eight-ball turns "groups": {"A", "B"} ("solids", "stripes" or null).
+/// shot echoes its "call"; games whose pot not as called passes the turn carry "call_breach" (null,
+/// "wrong-pocket" or "no-call"), games of groups "groups": {"A", "B"} ("solids", "stripes" or
+/// null).
 nlohmann::ordered_json matchResultToJson(
     const std::vector<TurnRecord>& turns, const rules::Rack& rack,
     const std::vector<BallState>& balls,

@@ -25,7 +25,9 @@ namespace nineball::app {
 namespace {
 
 int run(int argc, char** argv) {
-  CLI::App app{"nineball: nine-ball pool. Without a command, opens the game window.", "nineball"};
+  CLI::App app{
+      "nineball: pool on a real table's physics. Without a command, opens the game window.",
+      "nineball"};
   // Global options may follow the subcommand too.
   app.fallthrough();
   app.require_subcommand(0, 1);

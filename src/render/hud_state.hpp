@@ -29,7 +29,7 @@ struct HudState {
   int ball_on = 0;            ///< 0 when none is left
   std::vector<int> on_table;  ///< object balls still on the table, lowest first
   std::vector<int> pocketed;  ///< object balls down this rack, in the order they dropped
-  bool split_groups = false;  ///< eight-ball: a gap between the solids, the 8 and the stripes
+  bool split_groups = false;  ///< a game of groups: a gap between the solids, the 8 and the stripes
   std::string rules;          ///< "WPA rules", "Paper rules"
   std::string mode;           ///< who plays: "2 players", "vs computer (medium)", and the key
   std::string status;         ///< what the player to move does now

@@ -44,7 +44,7 @@ struct Frame {
   std::optional<AimGuide> bank;  ///< the path on from the first cushion (a setting)
   std::optional<CuePose> cue;
   std::optional<CueGhost> ghost;
-  std::optional<CallMark> call;    ///< the shot being called (eight- and ten-ball)
+  std::optional<CallMark> call;    ///< the shot being called (games with calls)
   BallLooks looks = poolBallLook;  ///< the game's set of balls
   HudState hud;
 };

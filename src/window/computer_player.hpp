@@ -22,8 +22,8 @@ struct ComputerMove {
 };
 
 /// How the computer finds its move, on the worker thread: `deciding` when a decision is pending
-/// (play or pass after a push-out or a ten-ball call breach, play on or re-rack after an
-/// illegal eight-ball break).
+/// (play or pass after a push-out or a pot not as called, play on or re-rack after an
+/// illegal break).
 using Thinker =
     std::function<ComputerMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding)>;
 
@@ -98,7 +98,7 @@ class ComputerPlayer {
   Thinker thinker_ = planMove;
   bool wait_ = false;
   bool deciding_ = false;       // the turn is a decision: after a push-out, or a re-rack
-  bool rerack_choice_ = false;  // ... the one after an illegal eight-ball break
+  bool rerack_choice_ = false;  // ... the one after an illegal break
   bool stuck_ = false;          // neither the plan nor the fallback was allowed: a person plays it
   Stage stage_ = Stage::Idle;
   double elapsed_ = 0.0;  // s in the current stage

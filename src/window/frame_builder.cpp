@@ -167,7 +167,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     hud.players[session.seatOf(p)].fouls = rack.consecutiveFouls(p);
   }
   hud.ball_on = rack.over() ? 0 : rack.ballOn();
-  // A ball on only when one ball may be hit first (eight-ball: the 8); groups say the rest.
+  // A ball on only when one ball may be hit first (a game of groups: its last ball); groups say the
+  // rest.
   if (rack.legalFirstBalls().size() != 1) hud.ball_on = 0;
   for (const BallState& b : session.match().balls()) {
     if (b.id != kCueBall && !b.pocket) hud.on_table.push_back(b.id);

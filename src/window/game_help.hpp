@@ -10,7 +10,7 @@ namespace nineball::window {
 /// The help screen's last lines: the game's rules in brief, and how to call a shot.
 std::vector<std::string> gameHelpLines(rules::Game game);
 
-/// An eight-ball player's group as the HUD shows it: "solids", "stripes" or "open table".
+/// A player's group as the HUD shows it: "solids", "stripes" or "open table".
 std::string groupLabel(const rules::Groups& groups, rules::Player player);
 
 }  // namespace nineball::window

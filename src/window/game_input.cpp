@@ -402,7 +402,8 @@ void GameInput::mouseReleased() {
     ui_.pull = 0.0;
     if (!strike) {
       session_.setSpeed(ui_.speed_before_drag);
-      session_.clickCall(ui_.drag_anchor);  // a click calls a pocket (or a ten-ball ball)
+      session_.clickCall(
+          ui_.drag_anchor);  // a click calls a pocket (or a ball, where any ball may be called)
     } else {
       session_.shoot();
     }

@@ -21,8 +21,8 @@ namespace nineball::window {
 enum class Phase {
   Aiming,         ///< the player to move aims (and places the cue ball when in hand)
   Rolling,        ///< a shot is on: the physics runs
-  PushOutChoice,  ///< a decision: after a push-out (or a ten-ball call breach) the player
-                  ///< shoots or passes; after an illegal eight-ball break, plays on or re-racks
+  PushOutChoice,  ///< a decision: after a push-out (or a pot not as called) the player
+                  ///< shoots or passes; after an illegal break, plays on or re-racks
   GameOver,       ///< the rack is won; a rematch racks again
 };
 
@@ -124,15 +124,16 @@ class GameSession {
   /// The aim guide from the cue ball along the current heading.
   AimGuide aimGuide() const;
 
-  /// The coming shot must carry a call (ten-ball after the break, eight-ball on the 8) and
+  /// The coming shot must carry a call (the game's rules say when) and
   /// the player to move is aiming (a push-out needs none).
   bool callRequired() const;
-  /// The ball being called: the one picked (ten-ball), else the ball on. 0 when no call is due.
+  /// The ball being called: the one picked (where any ball may be called), else the ball on. 0 when
+  /// no call is due.
   int callBall() const;
   /// The call made so far: set once a pocket is picked.
   std::optional<rules::Call> call() const;
-  /// A click on the table while a call is due: picks the pocket near `pos`, or in ten-ball the
-  /// ball there. True when the click was taken as part of the call.
+  /// A click on the table while a call is due: picks the pocket near `pos`, or, where any ball may
+  /// be called, the ball there. True when the click was taken as part of the call.
   bool clickCall(Vec2 pos);
   /// Calls the obvious shot: the aim guide's object ball (when it may be called), else the
   /// ball on, into the pocket nearest its path.
@@ -147,8 +148,8 @@ class GameSession {
   /// `turn.cue` when in hand (at the current spot if none is given); the aim, gauge and spin
   /// show it. False (and a message) when refused.
   bool shoot(const TurnInput& turn);
-  /// After the opponent's push-out (or ten-ball call breach): shoot from there (true) or pass
-  /// the shot back. After an illegal eight-ball break: play on (true) or re-rack.
+  /// After the opponent's push-out (or a pot not as called): shoot from there (true) or pass
+  /// the shot back. After an illegal break: play on (true) or re-rack.
   void decide(bool shoot_now);
   /// Racks again after a game over; the other player breaks.
   void rematch();
@@ -208,9 +209,9 @@ class GameSession {
   bool push_out_ = false;
   std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
   int ball_on_at_shot_ = 0;
-  std::optional<int> call_ball_;         // ten-ball: the ball picked to call
+  std::optional<int> call_ball_;         // the ball picked to call (GameDef::call_any_ball)
   std::optional<PocketId> call_pocket_;  // the pocket called
-  rules::Groups groups_at_shot_;         // eight-ball: the groups before the turn (its message)
+  rules::Groups groups_at_shot_;         // the groups before the turn (its message)
   bool breaking_ = false;                // the shot rolling is the break
   FixedStepClock clock_;
   ShotSteps shot_;

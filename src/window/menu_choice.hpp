@@ -26,6 +26,6 @@ struct MenuChoice {
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)
 };
 
-/// "nine-ball", "practice".
+/// a game's name, or "practice".
 
 }  // namespace nineball::window

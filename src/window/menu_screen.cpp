@@ -42,7 +42,7 @@ render::MenuPicture menuPicture(const MenuModel& model) {
   render::MenuPicture p;
   p.title = model.title();
   const bool main = model.screen() == MenuModel::Screen::Main;
-  p.subtitle = main ? "nine-ball on a real table" : "saved for the next game";
+  p.subtitle = main ? "pool on a real table" : "saved for the next game";
   for (const MenuRow& r : model.rows()) {
     render::MenuLine line;
     line.label = r.label;

@@ -149,7 +149,7 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
       return std::nullopt;
     }
     r.rules = *rules;
-    // Saves from before eight- and ten-ball came are nine-ball's.
+    // Saves from before games were named are the default game's.
     const auto game = gameNamed(j.value("game", std::string(defaultGame().name)));
     if (!game) {
       why = "unknown game";

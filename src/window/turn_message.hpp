@@ -16,7 +16,7 @@ struct TurnMessage {
 
 /// Says what a turn gave: what dropped, the foul and its reason, ball in hand, the push-out
 /// choice, the winner. `ball_on` is the ball on before the shot; `shooter` and `next` are the
-/// names of the players the record calls shooter and next; `groups_before` the eight-ball
+/// names of the players the record calls shooter and next; `groups_before` the
 /// groups before the shot (the message says when they are settled).
 TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
                          const std::string& shooter, const std::string& next,
