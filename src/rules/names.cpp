@@ -2,25 +2,6 @@
 
 namespace nineball::rules {
 
-const char* gameName(Game g) {
-  switch (g) {
-    case Game::NineBall:
-      return "nine-ball";
-    case Game::EightBall:
-      return "eight-ball";
-    case Game::TenBall:
-      return "ten-ball";
-  }
-  return "?";
-}
-
-std::optional<Game> gameFromName(const std::string& name) {
-  for (Game g : {Game::NineBall, Game::EightBall, Game::TenBall}) {
-    if (name == gameName(g)) return g;
-  }
-  return std::nullopt;
-}
-
 const char* ruleSetName(RuleSet r) {
   return r == RuleSet::Wpa ? "wpa" : "paper";
 }

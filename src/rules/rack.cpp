@@ -2,24 +2,8 @@
 #include <stdexcept>
 
 #include "nineball/rules.hpp"
-#include "rules/eight_ball.hpp"
-#include "rules/nine_ball.hpp"
-#include "rules/ten_ball.hpp"
 
 namespace nineball::rules {
-
-const RuleBook& ruleBook(Game game, RuleSet rules) {
-  static const NineBallRules nine_wpa(RuleSet::Wpa);
-  static const NineBallRules nine_paper(RuleSet::Paper);
-  static const EightBallRules eight;
-  static const TenBallRules ten;
-  if (game == Game::NineBall) return rules == RuleSet::Wpa ? nine_wpa : nine_paper;
-  if (rules != RuleSet::Wpa) {
-    throw std::invalid_argument(std::string("the paper's rules are for nine-ball, not ") +
-                                gameName(game));
-  }
-  return game == Game::EightBall ? static_cast<const RuleBook&>(eight) : ten;
-}
 
 Rack::Rack(RuleSet rules, std::vector<int> object_balls, bool opening_break)
     : Rack(Game::NineBall, rules, std::move(object_balls), opening_break) {}

@@ -1,0 +1,66 @@
+// Every game's rule books: one line a game. Its name, the books it is played by and the lookups
+// by name all read this table.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "nineball/rules.hpp"
+#include "rules/eight_ball.hpp"
+#include "rules/nine_ball.hpp"
+#include "rules/ten_ball.hpp"
+
+namespace nineball::rules {
+namespace {
+
+struct GameBooks {
+  Game game;
+  const char* name;
+  const RuleBook* wpa;
+  const RuleBook* paper;  // null: not played by the paper's rules
+};
+
+const std::vector<GameBooks>& books() {
+  static const NineBallRules nine_wpa(RuleSet::Wpa);
+  static const NineBallRules nine_paper(RuleSet::Paper);
+  static const EightBallRules eight;
+  static const TenBallRules ten;
+  static const std::vector<GameBooks> all{
+      {Game::NineBall, "nine-ball", &nine_wpa, &nine_paper},
+      {Game::EightBall, "eight-ball", &eight, nullptr},
+      {Game::TenBall, "ten-ball", &ten, nullptr},
+  };
+  return all;
+}
+
+const GameBooks* booksOf(Game game) {
+  for (const GameBooks& g : books()) {
+    if (g.game == game) return &g;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const char* gameName(Game g) {
+  const GameBooks* b = booksOf(g);
+  return b ? b->name : "?";
+}
+
+std::optional<Game> gameFromName(const std::string& name) {
+  for (const GameBooks& g : books()) {
+    if (name == g.name) return g.game;
+  }
+  return std::nullopt;
+}
+
+const RuleBook& ruleBook(Game game, RuleSet rules) {
+  const GameBooks* b = booksOf(game);
+  if (!b) throw std::invalid_argument("no rule book for this game");
+  const RuleBook* book = rules == RuleSet::Wpa ? b->wpa : b->paper;
+  if (!book) {
+    throw std::invalid_argument(std::string("the paper's rules are for nine-ball, not ") + b->name);
+  }
+  return *book;
+}
+
+}  // namespace nineball::rules
