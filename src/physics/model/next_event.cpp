@@ -16,13 +16,13 @@ constexpr double kSameInstant = 1e-12;
 // hold each centre's whole reach, grown by a radius: a pair whose boxes do not overlap cannot come
 // within two radii, so its contact test would answer "never". The pairs left are tested in the
 // order the full double loop used, which keeps every tie-break, and the results bit for bit.
-std::vector<std::pair<std::size_t, std::size_t>> partnersOf(const std::vector<Path>& paths,
-                                                            const std::vector<bool>& present,
-                                                            const std::vector<bool>& moving,
-                                                            double horizon, double r) {
+void partnersOf(const std::vector<Path>& paths, const std::vector<bool>& present,
+                const std::vector<bool>& moving, double horizon, double r,
+                std::vector<double>& half, std::vector<std::size_t>& order,
+                std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
   const std::size_t n = paths.size();
-  std::vector<double> half(n, 0.0);
-  std::vector<std::size_t> order;
+  half.assign(n, 0.0);
+  order.clear();
   for (std::size_t i = 0; i < n; ++i) {
     if (!present[i]) continue;
     half[i] = (moving[i] ? reach(paths[i], horizon) : 0.0) + r + kTouchTolerance;
@@ -32,7 +32,7 @@ std::vector<std::pair<std::size_t, std::size_t>> partnersOf(const std::vector<Pa
     const double la = paths[a].p.x - half[a], lb = paths[b].p.x - half[b];
     return la < lb || (la == lb && a < b);
   });
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (owner, partner)
+  pairs.clear();  // (owner, partner)
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t a = order[k];
     const double right = paths[a].p.x + half[a];
@@ -46,7 +46,6 @@ std::vector<std::pair<std::size_t, std::size_t>> partnersOf(const std::vector<Pa
     }
   }
   std::sort(pairs.begin(), pairs.end());
-  return pairs;
 }
 
 }  // namespace
@@ -68,9 +67,15 @@ NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double un
   }
   const Clock clock = Clock::of(physics);
   const double horizon = clock.fromTime(best.t - t);
-  std::vector<Path> paths(balls.size());
-  std::vector<std::size_t> moving;
-  std::vector<bool> present(balls.size(), false), is_moving(balls.size(), false);
+  Scratch& k = scratch_;
+  std::vector<Path>& paths = k.paths;
+  std::vector<std::size_t>& moving = k.moving;
+  paths.assign(balls.size(), Path{});
+  moving.clear();
+  k.present.assign(balls.size(), false);
+  k.is_moving.assign(balls.size(), false);
+  std::vector<bool>& present = k.present;
+  std::vector<bool>& is_moving = k.is_moving;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (!balls[i].arc) continue;
     paths[i] = pathFrom(*balls[i].arc, t, physics);
@@ -89,7 +94,8 @@ NextEvent EventSearch::next(const std::vector<Mover>& balls, double t, double un
     best_s = s;
   };
   const double r = physics.ball_radius;
-  const auto pairs = partnersOf(paths, present, is_moving, horizon, r);
+  partnersOf(paths, present, is_moving, horizon, r, k.half, k.order, k.pairs);
+  const auto& pairs = k.pairs;
   auto next_pair = pairs.begin();
   for (std::size_t m : moving) {
     // `moving` and the pairs both run in index order: m's partners come next.

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "nineball/params.hpp"
@@ -43,6 +45,19 @@ struct EventSearch {
   /// a ball's centre entering a pocket's drop circle. Contacts at the same instant go
   /// hardest first, then by ball order, so that the order follows the physics.
   NextEvent next(const std::vector<Mover>& balls, double t, double until) const;
+
+ private:
+  // Kept from search to search, so that a search allocates nothing once the buffers have grown
+  // to the number of balls (each engine owns its search; none is shared between threads).
+  struct Scratch {
+    std::vector<Path> paths;
+    std::vector<std::size_t> moving;
+    std::vector<bool> present, is_moving;
+    std::vector<double> half;
+    std::vector<std::size_t> order;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  };
+  mutable Scratch scratch_;
 };
 
 }  // namespace nineball::physics

@@ -1,7 +1,8 @@
 #include "physics/model/polynomial.hpp"
 
+#include <array>
 #include <cmath>
-#include <vector>
+#include <cstddef>
 
 namespace nineball::physics {
 namespace {
@@ -17,6 +18,16 @@ Quartic derivative(const Quartic& f) {
   for (int i = 1; i <= 4; ++i) d.c[i - 1] = i * f.c[i];
   return d;
 }
+
+// Points of [lo, hi] in order: lo, the sign changes found, hi. A quartic has at most four roots,
+// so six places hold any list: no allocation in the search (it runs for every pair of balls
+// that may meet).
+struct Points {
+  std::array<double, 6> x{};
+  std::size_t n = 0;
+
+  void push(double v) { x[n++] = v; }
+};
 
 // The boundary between a, where sign f > 0, and b, where it is <= 0, bisected down to adjacent
 // doubles.
@@ -35,30 +46,48 @@ double bisect(const Quartic& f, double a, double b, double sign = 1.0) {
 
 // Every root of f in (lo, hi), in order, where f changes sign: the stretches between the
 // roots of f' are monotonic.
-void signChanges(const Quartic& f, double lo, double hi, std::vector<double>& out) {
+void signChanges(const Quartic& f, double lo, double hi, Points& out) {
   const int d = degree(f);
   if (d == 0) return;
-  std::vector<double> points{lo};
+  Points points;
+  points.push(lo);
   if (d >= 2) signChanges(derivative(f), lo, hi, points);
-  points.push_back(hi);
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-    const double a = points[i], b = points[i + 1];
+  points.push(hi);
+  for (std::size_t i = 0; i + 1 < points.n; ++i) {
+    const double a = points.x[i], b = points.x[i + 1];
     const double fa = f(a), fb = f(b);
     if ((fa > 0.0) == (fb > 0.0)) continue;
     const double root = bisect(f, a, b, fa > 0.0 ? 1.0 : -1.0);
-    if (root > lo && root < hi) out.push_back(root);
+    if (root > lo && root < hi) out.push(root);
   }
+}
+
+// True when f stays clearly positive on [0, hi]: each term is at least c_k hi^k where c_k < 0
+// and 0 where c_k >= 0. The margin (1e-9 of the terms' sizes) is far above the rounding of
+// evaluating f, so this answers "no crossing" only where the exact search below would: the
+// roots found stay bit for bit the same, and most pairs never reach the search.
+bool clearlyPositive(const Quartic& f, double hi) {
+  double low = f.c[0], size = std::abs(f.c[0]), power = 1.0;
+  for (int k = 1; k <= 4; ++k) {
+    power *= hi;
+    const double term = f.c[k] * power;
+    if (term < 0.0) low += term;
+    size += std::abs(term);
+  }
+  return low > 1e-9 * size;
 }
 
 }  // namespace
 
 std::optional<double> firstCrossing(const Quartic& f, double lo, double hi) {
   if (!(hi > lo) || !(f(lo) > 0.0)) return std::nullopt;
-  std::vector<double> points{lo};
+  if (lo == 0.0 && std::isfinite(hi) && clearlyPositive(f, hi)) return std::nullopt;
+  Points points;
+  points.push(lo);
   if (degree(f) >= 2) signChanges(derivative(f), lo, hi, points);
-  points.push_back(hi);
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-    if (f(points[i + 1]) <= 0.0) return bisect(f, points[i], points[i + 1]);
+  points.push(hi);
+  for (std::size_t i = 0; i + 1 < points.n; ++i) {
+    if (f(points.x[i + 1]) <= 0.0) return bisect(f, points.x[i], points.x[i + 1]);
   }
   return std::nullopt;
 }
