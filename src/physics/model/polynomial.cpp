@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 
 namespace nineball::physics {
 namespace {
@@ -44,6 +45,37 @@ double bisect(const Quartic& f, double a, double b, double sign = 1.0) {
   return b;
 }
 
+// bisect's answer for a line, without bisecting. A line evaluates as c1 x + c0 rounded twice,
+// and rounding is monotonic, so its sign changes once over the doubles: the boundary bisection
+// converges to is the only one, and stepping to it from the line's own root gives the same
+// double. Nothing when the line is steep enough at a tiny root that bisection would stop before
+// reaching neighbouring doubles (its 200 halvings), or the steps run long: then bisect.
+std::optional<double> lineBoundary(const Quartic& f, double a, double b, double sign) {
+  const double root = -f.c[0] / f.c[1];
+  if (!(root > a && root < b) || !(std::abs(root) > (b - a) * 1e-30)) return std::nullopt;
+  const auto positive = [&](double x) { return sign * f(x) > 0.0; };
+  double x = root;
+  for (int step = 0; step < 64; ++step) {
+    if (positive(x)) {
+      const double up = std::nextafter(x, b);
+      if (!positive(up)) return up;
+      x = up;
+    } else {
+      const double down = std::nextafter(x, a);
+      if (down <= a || positive(down)) return x;
+      x = down;
+    }
+  }
+  return std::nullopt;
+}
+
+double boundary(const Quartic& f, int degree, double a, double b, double sign = 1.0) {
+  if (degree == 1) {
+    if (const auto x = lineBoundary(f, a, b, sign)) return *x;
+  }
+  return bisect(f, a, b, sign);
+}
+
 // Every root of f in (lo, hi), in order, where f changes sign: the stretches between the
 // roots of f' are monotonic.
 void signChanges(const Quartic& f, double lo, double hi, Points& out) {
@@ -57,7 +89,7 @@ void signChanges(const Quartic& f, double lo, double hi, Points& out) {
     const double a = points.x[i], b = points.x[i + 1];
     const double fa = f(a), fb = f(b);
     if ((fa > 0.0) == (fb > 0.0)) continue;
-    const double root = bisect(f, a, b, fa > 0.0 ? 1.0 : -1.0);
+    const double root = boundary(f, d, a, b, fa > 0.0 ? 1.0 : -1.0);
     if (root > lo && root < hi) out.push(root);
   }
 }
@@ -82,12 +114,13 @@ bool clearlyPositive(const Quartic& f, double hi) {
 std::optional<double> firstCrossing(const Quartic& f, double lo, double hi) {
   if (!(hi > lo) || !(f(lo) > 0.0)) return std::nullopt;
   if (lo == 0.0 && std::isfinite(hi) && clearlyPositive(f, hi)) return std::nullopt;
+  const int d = degree(f);
   Points points;
   points.push(lo);
-  if (degree(f) >= 2) signChanges(derivative(f), lo, hi, points);
+  if (d >= 2) signChanges(derivative(f), lo, hi, points);
   points.push(hi);
   for (std::size_t i = 0; i + 1 < points.n; ++i) {
-    if (f(points.x[i + 1]) <= 0.0) return bisect(f, points.x[i], points.x[i + 1]);
+    if (f(points.x[i + 1]) <= 0.0) return boundary(f, d, points.x[i], points.x[i + 1]);
   }
   return std::nullopt;
 }
