@@ -35,6 +35,9 @@ struct MatchSetup {
   StepParams step;
   /// A custom layout instead of the rack; the first turn is then an ordinary shot.
   std::optional<std::vector<BallState>> balls;
+
+  /// Plays `g`, on the first of the tables it is played on (GameDef::tables).
+  void setGame(rules::Game g);
 };
 
 /// One turn of a player: a shot (perhaps a push-out, perhaps placing the cue ball first), or

@@ -57,7 +57,7 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, T
   for (int i = 0; i < o.positions; ++i) {
     const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
     MatchSetup setup;
-    setup.game = game;
+    setup.setGame(game);
     setup.balls = randomPosition(seed, setup.table, setup.physics, game);
     Match match(setup);
     const int on = match.rack().ballOn();
@@ -79,7 +79,7 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
                std::ostream& err) {
   for (int i = 0; i < o.racks; ++i) {
     MatchSetup setup;
-    setup.game = game;
+    setup.setGame(game);
     setup.seed = o.seed + static_cast<std::uint64_t>(i);
     Match match(setup);
     ai::Planner planner(level, setup.seed, o.threads);

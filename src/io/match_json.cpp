@@ -102,18 +102,14 @@ MatchScript parseDocument(const json& doc) {
             {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
   MatchScript script;
   MatchSetup& setup = script.setup;
-  setup.game = gameField(doc);
+  setup.setGame(gameField(doc));
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = isComputer(script.players[0]) || isComputer(script.players[1]);
   setup.rules = rulesField(doc, setup.game);
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
   }
-  if (const json* p = optional(doc, "table")) {
-    setup.table = parseTable(*p);
-  } else {
-    setup.table = TableDef::named(gameDef(setup.game).tables.front()).value();
-  }
+  if (const json* p = optional(doc, "table")) setup.table = parseTable(*p);
   if (const json* p = optional(doc, "physics")) setup.physics = parsePhysics(*p);
   if (const json* p = optional(doc, "step")) setup.step = parseStep(*p);
   double cue_mass = setup.physics.ball_mass;

@@ -10,6 +10,12 @@
 #include "play/shot_summary.hpp"
 
 namespace nineball {
+
+void MatchSetup::setGame(rules::Game g) {
+  game = g;
+  table = TableDef::named(gameDef(g).tables.front()).value();
+}
+
 namespace {
 
 // Spotting walks the long axis in steps this small (m) looking for room.

@@ -16,7 +16,7 @@ namespace nineball::window {
 
 int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostream& err) {
   GameStart start;
-  start.setup.game = *rules::gameFromName(options.game);
+  start.setup.setGame(*rules::gameFromName(options.game));
   start.setup.rules = *rules::ruleSetFromName(options.rules);
   const GameDef& game = gameDef(start.setup.game);
   if (&game != &defaultGame()) {

@@ -52,7 +52,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
 
   MatchSetup setup = session.setup();
   if (outcome == MenuModel::Outcome::Resume && saved) {
-    setup.game = saved->game;
+    setup.setGame(saved->game);
     setup.rules = saved->rules;
     setup.seed = saved->seed;
     try {
@@ -74,7 +74,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     }
   }
   const MenuChoice choice = model.choice();
-  setup.game = choice.mode == GameMode::Practice ? defaultGame().id : choice.game;
+  setup.setGame(choice.mode == GameMode::Practice ? defaultGame().id : choice.game);
   setup.rules = choice.rules;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);
