@@ -22,7 +22,14 @@ void BM_BreakToRest(benchmark::State& state, StepParams step) {
   scene.step = step;
   for (auto _ : state) benchmark::DoNotOptimize(simulate(scene));
 }
+StepParams onEngine(const char* name) {
+  StepParams step;
+  step.engine = EngineKind::named(name);
+  return step;
+}
 BENCHMARK_CAPTURE(BM_BreakToRest, adaptive_default, StepParams{})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BreakToRest, reference_engine, onEngine("reference"))
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_BreakToRest, plain_baseline, StepParams::plainBaseline())
     ->Unit(benchmark::kMillisecond);
 
@@ -73,36 +80,31 @@ BENCHMARK(BM_RollingAmongRestingBalls)->Arg(0)->Arg(9)->Arg(99)->Unit(benchmark:
 
 // N balls on an even grid over the table, all rolling at 3 m/s in seeded directions, to rest:
 // how the contact search scales with the number of moving balls.
-std::vector<BallState> movingGrid(int n) {
-  const TableDef table;
-  const double r = PhysicsParams{}.ball_radius;
-  const int cols = static_cast<int>(std::ceil(std::sqrt(2.0 * n)));
-  const int rows = (n + cols - 1) / cols;
-  std::uint64_t seed = 12345;
-  std::vector<BallState> balls;
-  for (int i = 0; i < n; ++i) {
-    const double x = -table.length / 2 + (table.length * ((i % cols) + 0.5)) / cols;
-    const double y = -table.width / 2 + (table.width * ((i / cols) + 0.5)) / rows;
-    const double angle = uniform(seed, 0.0, 2.0 * kPi);
-    const Vec2 v = fromAngle(angle) * 3.0;
-    BallState b = BallState::at(i, {x, y}, v);
-    b.w = {-v.y / r, v.x / r, 0.0};
-    balls.push_back(b);
-  }
-  return balls;
-}
-
-void BM_MovingGridToRest(benchmark::State& state) {
-  const std::vector<BallState> balls = movingGrid(static_cast<int>(state.range(0)));
+void BM_MovingGridToRest(benchmark::State& state, StepParams step) {
+  const std::vector<BallState> balls = movingGridScene(static_cast<int>(state.range(0))).balls;
   for (auto _ : state) {
-    const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, PhysicsParams{}, StepParams{});
+    const std::unique_ptr<Engine> w_engine = makeEngine(TableDef{}, PhysicsParams{}, step);
     Engine& w = *w_engine;
     for (const BallState& b : balls) w.addBall(b);
     w.runUntilRest();
     benchmark::DoNotOptimize(w.time());
+    const SearchWork work = w.searchWork();
+    state.counters["events"] = static_cast<double>(work.events);
+    state.counters["pairs"] = static_cast<double>(work.pair_predictions);
   }
 }
-BENCHMARK(BM_MovingGridToRest)->Arg(9)->Arg(30)->Arg(60)->Arg(100)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MovingGridToRest, box2d, StepParams{})
+    ->Arg(9)
+    ->Arg(30)
+    ->Arg(60)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MovingGridToRest, reference, onEngine("reference"))
+    ->Arg(9)
+    ->Arg(30)
+    ->Arg(60)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond);
 
 // One candidate of the planner: a cut of the 1 into a corner from a five-ball position, played
 // to rest through a fresh world and scored by the rules (what `ai-bench` counts as a shot).

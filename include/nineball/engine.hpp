@@ -19,6 +19,15 @@ namespace physics {
 class ArcLog;
 }
 
+/// What an engine's event search has done since it was made: each prediction is worked out
+/// once and kept until one of its balls changes, so these grow with the balls each event
+/// touches, not with the balls on the table.
+struct SearchWork {
+  long events = 0;            ///< events found (phase ends and sensor reports included)
+  long ball_predictions = 0;  ///< a ball's own next event (phase end, cushion, pocket) worked out
+  long pair_predictions = 0;  ///< a pair's next contact worked out past the bounding-box test
+};
+
 /// The physics of one table, run by one of the engines of the registry
 /// (src/physics/engines/registry.cpp), made by makeEngine from StepParams::engine. Both
 /// engines follow the same models (src/physics/resolve); they differ in how they find the next
@@ -76,6 +85,11 @@ class Engine {
   virtual const TableGeometry& table() const = 0;
   virtual const PhysicsParams& physics() const = 0;
   virtual const StepParams& stepParams() const = 0;
+  virtual SearchWork searchWork() const = 0;
+  /// Every ball, event and arc log removed and the clock back at zero: the engine is then what
+  /// makeEngine made, to the bit, without building its table again (the planner's thousands of
+  /// candidates reuse one engine per thread).
+  virtual void reset() = 0;
 };
 
 /// The engine `step.engine` names, for this table and these settings.

@@ -154,7 +154,7 @@ struct PhysicsParams {
 
 /// Solver settings. Box2D units are metres x scale.
 struct StepParams {
-  double hz = 60.0;  ///< base step rate; steps split further for fast balls and contacts
+  double hz = 60.0;  ///< base step rate: where stepping stops (a frame); events fall between
   int velocity_iterations = 8;
   int position_iterations = 3;
   double scale = 50.0;  ///< Box2D units per metre (k)

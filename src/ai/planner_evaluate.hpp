@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -76,6 +77,8 @@ class Evaluator {
   const PlanInput& in_;
   const TableGeometry& table_;
   StepParams step_;
+  std::uint64_t id_ = 0;  // which evaluator a thread's kept engine was made for
+  Engine& engineForThisThread() const;
   double sigma_rad_;
   std::vector<int> legal_first_;  // what the cue ball may hit first, found once per position
 };

@@ -38,16 +38,21 @@ TEST(Stress, ScenesThatOnceFailedPass) {
   for (const std::string& f : r.first_failures) ADD_FAILURE() << f;
 }
 
-TEST(Stress, ChecksCatchBox2DsOwnBallSolver) {
-  // With Box2D's sequential solver resolving the frictionless e = 1 rack (contacts "box2d")
-  // clusters gain energy: the checks must see it.
+TEST(Stress, Box2DsOwnBallSolverHoldsOnExactPositions) {
+  // Box2D's sequential solver (contacts "box2d") gained energy in the frictionless e = 1
+  // clusters (a row frozen to the top rail, hit along it) while Box2D moved the bodies itself
+  // and pressed them together in floats. Its bodies now take the exact positions before each
+  // solve, and every check holds. (That the checks can fail: the NINEBALL_BREAK_ENERGY build,
+  // docs/physics.md.)
   nineball::StressOptions o;
-  o.random_layouts = 20;
+  o.random_layouts = 100;
   o.random_settings = 0;
   o.long_run_s = 5.0;
   o.step.contacts = nineball::ContactModel::Box2D;
   const nineball::StressReport r = nineball::runStress(o);
-  EXPECT_GT(r.failures.count("energy never rises"), 0u);
+  EXPECT_GT(r.checks, 10000);
+  EXPECT_EQ(r.failureCount(), 0);
+  for (const std::string& f : r.first_failures) ADD_FAILURE() << f;
 }
 
 TEST(Stress, CushionSinkMeasuresHowDeepABallIsIn) {

@@ -17,6 +17,22 @@ Quartic separation(Vec2 d, Vec2 e, Vec2 g, double distance) {
            0.25 * dot(g, g)}};
 }
 
+// True when a relative path d + e s + g s^2 / 2 runs along a straight line (e and g parallel,
+// as for two rolling balls, or a rolling ball and a point) that passes further than `distance`
+// from the origin: then it never comes that close. The margin (1e-9 relative, and the line's
+// straightness to 1e-12) is far above the rounding of the test.
+bool lineMisses(Vec2 d, Vec2 e, Vec2 g, double distance) {
+  const double ee = dot(e, e), gg = dot(g, g);
+  const Vec2 dir = ee >= gg ? e : g;
+  const double dd = ee >= gg ? ee : gg;
+  if (!(dd > 0.0)) return false;
+  const double bend = cross(e, g);
+  if (bend * bend > 1e-24 * ee * gg) return false;
+  const double off = cross(d, dir);  // |d| |dir| sin: the line's distance from 0, times |dir|
+  const double reach = distance + kTouchTolerance;
+  return off * off > reach * reach * dd * (1.0 + 1e-9) + 1e-18 * dot(d, d) * dd;
+}
+
 // Two circles `distance` apart at their closest: first touch while closing. With
 // `pressed_apart`, circles resting against each other are met again once pressed a touch
 // tolerance together, for the contact to set them back to touching.
@@ -45,6 +61,7 @@ std::optional<double> meet(Vec2 d, Vec2 e, Vec2 g, double distance, double horiz
         horizon);
   }
   if (gap > length(e) * horizon + 0.5 * length(g) * horizon * horizon) return std::nullopt;
+  if (lineMisses(d, e, g, distance)) return std::nullopt;
   return firstCrossing(separation(d, e, g, distance), 0.0, horizon);
 }
 
@@ -171,6 +188,8 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
                                          double horizon) {
   std::optional<CushionHit> best;
   const double limit = reach(path, horizon) + radius + kTouchTolerance;
+  // Whatever the ball touches lies within a radius of its path (the slack covers rounding).
+  const Box near = boxOf(path, horizon).grown(radius + 2.0 * kTouchTolerance);
   auto consider = [&](double s, Vec2 normal) {
     if (!best || s < best->s) best = CushionHit{s, normal};
   };
@@ -178,6 +197,9 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
     const double height = dot(path.p - seg.a, seg.inward);
     const double foot = dot(path.p - seg.a, seg.along);
     if (height > limit || foot < -limit || foot > seg.length + limit) return;
+    const Box extent{std::min(seg.a.x, seg.b.x), std::max(seg.a.x, seg.b.x),
+                     std::min(seg.a.y, seg.b.y), std::max(seg.a.y, seg.b.y)};
+    if (!near.overlaps(extent)) return;
     const double gap = height - radius;
     const double vn = dot(path.v, seg.inward);
     const double an = dot(path.a, seg.inward);
@@ -210,6 +232,7 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
   };
   auto corner = [&](Vec2 c) {
     const Vec2 d = path.p - c;
+    if (!near.overlaps({c.x, c.x, c.y, c.y})) return;
     const double distance = length(d);
     if (distance > limit) return;
     if (auto s = cornerContact(d, path, distance - radius, radius, horizon)) {
@@ -255,7 +278,10 @@ std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushion
 std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon) {
   const Vec2 d = path.p - centre;
   if (dot(d, d) <= radius * radius) return 0.0;
+  const Box circle = Box{centre.x, centre.x, centre.y, centre.y}.grown(radius + kTouchTolerance);
+  if (!boxOf(path, horizon).overlaps(circle)) return std::nullopt;
   if (length(d) - radius > reach(path, horizon) + kTouchTolerance) return std::nullopt;
+  if (lineMisses(d, path.v, path.a, radius)) return std::nullopt;
   return firstCrossing(separation(d, path.v, path.a, radius), 0.0, horizon);
 }
 

@@ -178,6 +178,33 @@ double Clock::toTime(double s) const {
   return x >= 1.0 ? kNever : -std::log1p(-x) / damping;
 }
 
+namespace {
+
+// The extent of p + v s + a s^2 / 2 over s in [0, span], on one axis.
+void extent(double p, double v, double a, double span, double& lo, double& hi) {
+  const double end = p + v * span + 0.5 * a * span * span;
+  lo = std::min(p, end);
+  hi = std::max(p, end);
+  if (a != 0.0) {
+    const double s = -v / a;
+    if (s > 0.0 && s < span) {
+      const double turn = p + v * s + 0.5 * a * s * s;
+      lo = std::min(lo, turn);
+      hi = std::max(hi, turn);
+    }
+  }
+}
+
+}  // namespace
+
+Box boxOf(const Path& path, double span) {
+  if (!std::isfinite(span)) return {-kNever, kNever, -kNever, kNever};
+  Box b{};
+  extent(path.p.x, path.v.x, path.a.x, span, b.x0, b.x1);
+  extent(path.p.y, path.v.y, path.a.y, span, b.y0, b.y1);
+  return b;
+}
+
 Path pathFrom(const Arc& arc, double t, const PhysicsParams& p) {
   const Kinematics k = stateAt(arc, t, p);
   if (!arc.translating()) return {k.p, {}, {}};

@@ -70,6 +70,18 @@ struct Path {
   Vec2 at(double s) const { return p + v * s + a * (0.5 * s * s); }
 };
 
+/// An axis-aligned box, for the cheap tests that come before any polynomial.
+struct Box {
+  double x0, x1, y0, y1;
+
+  bool overlaps(const Box& o) const { return !(x0 > o.x1 || o.x0 > x1 || y0 > o.y1 || o.y0 > y1); }
+  Box grown(double m) const { return {x0 - m, x1 + m, y0 - m, y1 + m}; }
+};
+
+/// The smallest box holding the path's point over s in [0, span] (everything when span is not
+/// finite).
+Box boxOf(const Path& path, double span);
+
 /// The path of `arc` from time t on, in the clock's units, while the phase lasts.
 Path pathFrom(const Arc& arc, double t, const PhysicsParams& p);
 

@@ -2,8 +2,7 @@
 
 #include <cstddef>
 #include <memory>
-#include <utility>
-#include <vector>
+#include <optional>
 
 #include "nineball/params.hpp"
 #include "nineball/table.hpp"
@@ -20,16 +19,23 @@ struct Mover {
 
 /// The next thing that changes a ball's motion, with its exact time.
 struct NextEvent {
-  enum class Kind { None, PhaseEnd, Ball, Cushion, Pocket };
+  /// Sensor: the ball's centre comes within EventSearch::sensor_margin of a pocket's drop
+  /// circle, where the Box2D engine's sensor must see it (only while may_drop is false).
+  enum class Kind { None, PhaseEnd, Ball, Cushion, Pocket, Sensor };
   Kind kind = Kind::None;
   double t = 0.0;
   std::size_t i = 0;  ///< the ball (the first of a pair)
   std::size_t j = 0;  ///< the second ball of a pair
   Vec2 normal;        ///< cushion: unit normal from the cushion to the ball
   PocketId pocket = PocketId::TopLeft;
+  double closing = 0.0;  ///< ball contact: the speed at which the pair closes, m/s
 };
 
-/// Everything the search needs that does not change during a run.
+/// Contacts closer together than this (s) are at the same instant.
+constexpr double kSameInstant = 1e-12;
+
+/// The predictions of one table and cloth: each is a function of the arcs it reads alone (a
+/// ball's own arc, or a pair's two), so that it can be kept until one of them changes.
 struct EventSearch {
   const TableGeometry* table = nullptr;
   // Shared by every search on the same table: building the grid for each world of the
@@ -37,27 +43,20 @@ struct EventSearch {
   std::shared_ptr<const Cushions> shared_cushions;
   const Cushions& cushions;
   PhysicsParams physics;
+  /// m beyond a drop circle at which a ball that may not drop yet is reported (Kind::Sensor);
+  /// 0: never.
+  double sensor_margin = 0.0;
 
   EventSearch(const TableGeometry& t, const PhysicsParams& p);
 
-  /// The first event after time t and no later than `until`, over the balls' arcs: a phase
-  /// ending (slide to roll, rolling to rest, spin dying), a ball contact, a cushion contact or
-  /// a ball's centre entering a pocket's drop circle. Contacts at the same instant go
-  /// hardest first, then by ball order, so that the order follows the physics.
-  NextEvent next(const std::vector<Mover>& balls, double t, double until) const;
+  /// Ball i's own next event on its arc: a cushion contact, entry into a pocket's drop circle
+  /// (or, with may_drop false, its sensor circle) or the arc's end, whichever comes first (a
+  /// contact before an end at the same instant). None when the arc never ends.
+  NextEvent ownEvent(std::size_t i, const Arc& arc, bool may_drop) const;
 
- private:
-  // Kept from search to search, so that a search allocates nothing once the buffers have grown
-  // to the number of balls (each engine owns its search; none is shared between threads).
-  struct Scratch {
-    std::vector<Path> paths;
-    std::vector<std::size_t> moving;
-    std::vector<bool> present, is_moving;
-    std::vector<double> half;
-    std::vector<std::size_t> order;
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  };
-  mutable Scratch scratch_;
+  /// The first contact of balls i < j on their arcs while both hold, and how fast they close.
+  std::optional<NextEvent> pairContact(std::size_t i, const Arc& a, std::size_t j,
+                                       const Arc& b) const;
 };
 
 }  // namespace nineball::physics

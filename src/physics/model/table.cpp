@@ -167,7 +167,39 @@ std::string metres(double v) {
 
 }  // namespace
 
+namespace {
+
+bool sameTable(const TableDef& a, const TableDef& b) {
+  return a.length == b.length && a.width == b.width && a.corner_pocket == b.corner_pocket &&
+         a.side_pocket == b.side_pocket && a.corner_jaw_deg == b.corner_jaw_deg &&
+         a.side_jaw_deg == b.side_jaw_deg && a.pockets == b.pockets;
+}
+
+std::optional<std::string> checkTableOnce(const TableDef& def, double r);
+
+}  // namespace
+
 std::optional<std::string> checkTable(const TableDef& def, double r) {
+  // A stream of scenes (sim --jsonl, the planner's positions) checks the same table again and
+  // again; crossing every segment of its loop with every other is a tenth of a break's time.
+  struct Last {
+    bool valid = false;
+    TableDef def;
+    double r = 0.0;
+    std::optional<std::string> answer;
+  };
+  thread_local Last last;
+  if (last.valid && last.r == r && sameTable(last.def, def)) return last.answer;
+  last.answer = checkTableOnce(def, r);
+  last.def = def;
+  last.r = r;
+  last.valid = true;
+  return last.answer;
+}
+
+namespace {
+
+std::optional<std::string> checkTableOnce(const TableDef& def, double r) {
   if (!def.pockets) return std::nullopt;  // four straight cushions cross nothing
   const double rail = 2.0 * r * limits::kMinRailInDiameters;
   const double corner_cut = def.corner_pocket / std::sqrt(2.0);
@@ -200,6 +232,8 @@ std::optional<std::string> checkTable(const TableDef& def, double r) {
   }
   return std::nullopt;
 }
+
+}  // namespace
 
 bool TableGeometry::insideLoop(Vec2 p) const {
   bool inside = false;

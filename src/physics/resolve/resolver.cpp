@@ -31,6 +31,7 @@ Resolver::Resolver(const PhysicsParams& p, const TableGeometry& table, const Cus
 void Resolver::resolve(const NextEvent& e, EngineBalls& balls) {
   switch (e.kind) {
     case NextEvent::Kind::None:
+    case NextEvent::Kind::Sensor:  // the engine's own business
       return;
     case NextEvent::Kind::PhaseEnd:
       balls.nextPhase(e.i);

@@ -85,6 +85,10 @@ class Resolver {
   const Cushions& cushions_;
   std::vector<Event>& events_;
   JamCounter jams_;
+
+ public:
+  /// As new: nothing counted towards a jam.
+  void reset() { jams_.reset(); }
 };
 
 }  // namespace nineball::physics

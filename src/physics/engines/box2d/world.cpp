@@ -15,6 +15,7 @@
 #include "physics/engines/box2d/contact_recorder.hpp"
 #include "physics/engines/registry.hpp"
 #include "physics/model/arc_log.hpp"
+#include "physics/model/event_queue.hpp"
 #include "physics/model/motion.hpp"
 #include "physics/model/next_event.hpp"
 #include "physics/resolve/ball_ball/collide.hpp"
@@ -45,6 +46,11 @@ constexpr float kBounceStep = 1e-12f;
 // may hold as many more as their length calls for.
 constexpr std::size_t kEventsPerStepBase = 10000;
 constexpr double kCapPeriod = 1.0 / 60.0;
+// A ball that may not drop yet is reported this far (m) beyond a drop circle, where its body is
+// moved and the pocket's sensor sees it; the sensor reaches a little further, so that Box2D's
+// float test cannot miss a ball placed on the edge.
+constexpr double kSensorMargin = 0.01;
+constexpr double kSensorSlack = 0.001;
 
 }  // namespace
 
@@ -58,6 +64,7 @@ struct World::Impl final : physics::EngineBalls {
     Arc arc;  // the closed form the ball follows since the last event that changed it
   };
 
+  TableDef def;  // what the table was built from, for reset()
   TableGeometry table;
   PhysicsParams phys;
   StepParams sp;
@@ -67,6 +74,7 @@ struct World::Impl final : physics::EngineBalls {
   b2Body* table_body = nullptr;
   ContactRecorder recorder;
   physics::EventSearch search;
+  physics::EventQueue queue{search};
   std::vector<Ball> balls;
   std::vector<Event> events;
   physics::Resolver resolver{phys, table, search.cushions, events};
@@ -80,12 +88,14 @@ struct World::Impl final : physics::EngineBalls {
   std::unique_ptr<physics::ArcLog> arc_log;  // every arc followed, when a trace is asked for
 
   Impl(const TableDef& t, const PhysicsParams& p, const StepParams& s)
-      : table(buildTable(t, p.ball_radius)),
+      : def(t),
+        table(buildTable(t, p.ball_radius)),
         phys(p),
         sp(s),
         k(s.scale),
         travel(kMaxTravelUnitsPerStep / s.scale),
         search(table, p) {
+    search.sensor_margin = kSensorMargin;
     world.SetContactListener(&recorder);
     // The world predicts every contact itself: Box2D's time of impact has nothing to find,
     // and an impulse carried over from an earlier bounce must not start the next one.
@@ -108,9 +118,9 @@ struct World::Impl final : physics::EngineBalls {
     fd.userData.pointer = fixtureTag(FixtureKind::Cushion, 0);
     table_body->CreateFixture(&fd);
     for (const Pocket& pk : table.pockets) {
-      // The sensor reaches out far enough that a ball it does not touch cannot enter the drop
-      // circle within the next two pieces (its contacts are updated at the start of a step).
-      const double reach = pk.drop_radius - phys.ball_radius + 2.0 * travel;
+      // A ball's body is moved to where the queue reports it entering the sensor circle, so
+      // the sensor sees every ball before it can reach the drop circle.
+      const double reach = pk.drop_radius + kSensorMargin + kSensorSlack - phys.ball_radius;
       b2CircleShape hole;
       hole.m_p = toB2(pk.drop_centre);
       hole.m_radius = static_cast<float>(std::max(reach, 0.001) * k);
@@ -125,22 +135,37 @@ struct World::Impl final : physics::EngineBalls {
   b2Vec2 toB2(Vec2 v) const { return {static_cast<float>(v.x * k), static_cast<float>(v.y * k)}; }
   Vec2 fromB2(const b2Vec2& v) const { return {v.x / k, v.y / k}; }
 
-  Vec2 position(const Ball& b) const { return b.body ? fromB2(b.body->GetPosition()) : b.pos; }
-
-  // The ball's state now: Box2D's position, the closed form's velocity and spin.
-  Kinematics now(const Ball& b) const {
-    Kinematics s = physics::stateAt(b.arc, time, phys);
-    s.p = position(b);
-    return s;
+  // Where a ball is: its closed form. Its body mirrors it whenever Box2D must see it (mirror()).
+  Vec2 position(const Ball& b) const {
+    return b.body ? physics::stateAt(b.arc, time, phys).p : b.pos;
   }
+
+  Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, time, phys); }
+
+  std::size_t indexOf(const Ball& b) const { return static_cast<std::size_t>(&b - balls.data()); }
 
   void restart(Ball& b, const Kinematics& s) {
     b.arc = physics::beginArc(time, s, phys);
     logArc(b);
+    queue.changed(indexOf(b));
+  }
+
+  // Moves the ball's body to where the ball is, for a contact or sensor Box2D is about to
+  // resolve; Box2D is touched only then, not as the balls travel.
+  void mirror(Ball& b) {
+    if (!b.body) return;
+    const b2Vec2 at = toB2(position(b));
+    if (b.body->GetPosition() == at) return;
+    b.body->SetTransform(at, 0.0f);
+    contacts_stale = true;
+  }
+
+  void mirrorAll() {
+    for (Ball& b : balls) mirror(b);
   }
 
   void logArc(const Ball& b) {
-    if (arc_log) arc_log->record(static_cast<std::size_t>(&b - balls.data()), b.arc);
+    if (arc_log) arc_log->record(indexOf(b), b.arc);
   }
 
   void createBody(std::size_t index, Vec2 pos) {
@@ -170,6 +195,7 @@ struct World::Impl final : physics::EngineBalls {
     b.body->SetMassData(&md);
     b.pocket.reset();
     contacts_stale = true;
+    queue.changed(index);
   }
 
   std::size_t indexOf(int id) const {
@@ -186,7 +212,7 @@ struct World::Impl final : physics::EngineBalls {
     return true;
   }
 
-  // The longest piece over which the ball stays within Box2D's travel limit.
+  // The longest piece over which the ball stays within Box2D's travel limit (the baseline).
   double longestPiece(const Ball& b) const {
     const Kinematics s = physics::stateAt(b.arc, time, phys);
     const double v = length(s.v), a = length(b.arc.accel);
@@ -194,15 +220,15 @@ struct World::Impl final : physics::EngineBalls {
     return 2.0 * travel / (v + std::sqrt(v * v + 2.0 * a * travel));
   }
 
-  // Box2D moves every travelling ball along the chord to where its closed form is at the end
-  // of the piece, so that positions never drift from the closed form.
+  // The baseline's way: Box2D moves every travelling ball along the chord to where its closed
+  // form is at the end of the piece.
   void transport(double h) {
     bool any = sp.baseline;
     for (Ball& b : balls) {
       if (!b.body) continue;
       if (b.arc.translating()) {
         const Vec2 target = physics::stateAt(b.arc, time + h, phys).p;
-        b.body->SetLinearVelocity(toB2((target - position(b)) / h));
+        b.body->SetLinearVelocity(toB2((target - fromB2(b.body->GetPosition())) / h));
         if (!b.body->IsAwake()) b.body->SetAwake(true);
         any = true;
       } else if (b.body->IsAwake()) {
@@ -248,17 +274,13 @@ struct World::Impl final : physics::EngineBalls {
   Vec2 centre(std::size_t i) const override { return position(balls[i]); }
   Kinematics now(std::size_t i) const override { return now(balls[i]); }
 
-  void restart(std::size_t i, const Kinematics& s) override {
-    Ball& b = balls[i];
-    if (s.p != position(b)) b.body->SetTransform(toB2(s.p), 0.0f);
-    restart(b, s);
-  }
+  void restart(std::size_t i, const Kinematics& s) override { restart(balls[i], s); }
 
   void nextPhase(std::size_t i) override {
     Ball& b = balls[i];
     b.arc = physics::nextArc(b.arc, phys);
-    b.arc.start.p = position(b);
     logArc(b);
+    queue.changed(i);
   }
 
   void drop(std::size_t i, PocketId pocket) override {
@@ -267,6 +289,7 @@ struct World::Impl final : physics::EngineBalls {
     b.pocket = pocket;
     world.DestroyBody(b.body);
     b.body = nullptr;
+    queue.changed(i);
     if (arc_log) arc_log->pocket(i, time, b.pos);
   }
 
@@ -276,6 +299,8 @@ struct World::Impl final : physics::EngineBalls {
     Ball& b = balls[i];
     physics::CushionRebound hit;
     hit.k = s_in;
+    mirror(b);
+    if (contacts_stale) updateContacts();
     recorder.bouncing = i;
     solveContactsNow();
     Vec2 pushed;
@@ -324,6 +349,8 @@ struct World::Impl final : physics::EngineBalls {
     if (sp.contacts != ContactModel::Box2D) return false;
     Ball& a = balls[i];
     Ball& b = balls[j];
+    mirrorAll();
+    if (contacts_stale) updateContacts();
     recorder.ball_contacts = true;
     solveContactsNow();
     auto hits = recorder.ball_hits;
@@ -397,6 +424,12 @@ struct World::Impl final : physics::EngineBalls {
   }
 
   void resolveUnchecked(const NextEvent& e) {
+    if (e.kind == NextEvent::Kind::Sensor) {
+      // The ball nears a pocket: its sensor must see it before it can drop.
+      mirror(balls[e.i]);
+      updateContacts();
+      return;
+    }
     resolver.resolve(e, *this);
   }
 
@@ -415,11 +448,12 @@ struct World::Impl final : physics::EngineBalls {
       for (std::size_t i = 0; i < balls.size(); ++i) {
         const Ball& b = balls[i];
         movers[i] = {b.body ? &b.arc : nullptr, b.body && recorder.overPocket(i)};
-        if (b.body && b.arc.translating()) limit = std::min(limit, time + longestPiece(b));
+        if (sp.baseline && b.body && b.arc.translating())
+          limit = std::min(limit, time + longestPiece(b));
       }
-      const NextEvent e = search.next(movers, time, limit);
+      const NextEvent e = queue.next(movers, limit);
       if (e.t > time) {
-        transport(e.t - time);
+        if (sp.baseline) transport(e.t - time);
         ++pieces;
       }
       time = e.t;
@@ -627,6 +661,18 @@ const PhysicsParams& World::physics() const {
 }
 const StepParams& World::stepParams() const {
   return impl_->sp;
+}
+SearchWork World::searchWork() const {
+  return impl_->queue.work();
+}
+void World::reset() {
+  // Box2D's broadphase and contact lists keep the history of what they held: only a new world
+  // is the same to the bit as a new world.
+  const TableDef def = impl_->def;
+  const PhysicsParams physics = impl_->phys;
+  const StepParams step = impl_->sp;
+  impl_.reset();
+  impl_ = std::make_unique<Impl>(def, physics, step);
 }
 
 namespace physics {

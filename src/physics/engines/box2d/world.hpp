@@ -64,6 +64,8 @@ class World final : public Engine {
   const TableGeometry& table() const override;
   const PhysicsParams& physics() const override;
   const StepParams& stepParams() const override;
+  SearchWork searchWork() const override;
+  void reset() override;
 
  private:
   struct Impl;

@@ -10,6 +10,7 @@
 #include "common/limits.hpp"
 #include "common/log.hpp"
 #include "physics/model/arc_log.hpp"
+#include "physics/model/event_queue.hpp"
 #include "physics/model/motion.hpp"
 #include "physics/model/next_event.hpp"
 #include "physics/resolve/cue/cue.hpp"
@@ -38,7 +39,6 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     ball.on_table = !b.pocket;
     ball.arc = physics::beginArc(t_, {b.pos, b.vel, b.w}, p_);
     balls_.push_back(ball);
-    changed();
     if (!logging_) return;
     log_.addBall(b.id);
     if (b.pocket) {
@@ -65,7 +65,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     const Vec2 at = b.arc.t0 == t_ ? b.arc.start.p : now(b).p;
     b.arc = physics::beginArc(t_, {at, s.v, s.w}, p_);
     logArc(b);
-    changed();
+    changed(b);
     return true;
   }
 
@@ -75,24 +75,23 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     b.state.pocket.reset();
     b.state.pos = pos;
     restart(b, {pos, {}, {}});
-    changed();
   }
 
   void step() override {
     const double end = boundary(++steps_);
-    if (!exhausted_) run(end, false, end);
+    if (!exhausted_) run(end, false);
     t_ = end;
   }
 
   void runFor(double seconds) override {
     const double end = t_ + seconds;
-    run(end, false, end);
+    run(end, false);
     if (!exhausted_) t_ = end;
   }
 
   void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {}) override;
   bool stepTowardRest(double deadline) override {
-    if (!runOver(deadline)) run(std::min(boundary(++steps_), deadline), true, deadline);
+    if (!runOver(deadline)) run(std::min(boundary(++steps_), deadline), true);
     return runOver(deadline);
   }
 
@@ -129,6 +128,21 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   const TableGeometry& table() const override { return table_; }
   const PhysicsParams& physics() const override { return p_; }
   const StepParams& stepParams() const override { return sp_; }
+  SearchWork searchWork() const override { return queue_.work(); }
+
+  void reset() override {
+    balls_.clear();
+    events_.clear();
+    queue_.clear();
+    resolver_.reset();
+    log_ = physics::ArcLog{};
+    logging_ = false;
+    resolved_ = 0;
+    steps_ = 0;
+    exhausted_ = false;
+    budget_spent_.clear();
+    t_ = 0.0;
+  }
 
  private:
   struct Ball {
@@ -151,26 +165,20 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     return true;
   }
 
-  // Runs until `end`, or until every ball has stopped when `to_rest`. Each event is searched
-  // for from the last change up to `horizon`, and kept while it lies beyond `end`: a run cut
-  // into steps finds the same events, to the bit, as one run to the same horizon.
-  void run(double end, bool to_rest, double horizon) {
+  // Runs until `end`, or until every ball has stopped when `to_rest`. Every prediction is kept
+  // until its balls change, whatever the run's end: a run cut into steps finds the same events,
+  // to the bit, as one run.
+  void run(double end, bool to_rest) {
     bool was_settled = settled();
     while (t_ < end && !(to_rest && settled()) && !exhausted_) {
-      if (!pending_ || pending_horizon_ != horizon) {
-        movers_.clear();
-        for (const Ball& b : balls_) movers_.push_back({b.on_table ? &b.arc : nullptr, true});
-        pending_ = search_.next(movers_, from_, horizon);
-        pending_horizon_ = horizon;
-      }
-      const NextEvent e = *pending_;
-      if (e.kind == NextEvent::Kind::None || e.t > end) {
-        // Kept: the same search would find the same event from the next step.
-        t_ = std::min(e.t, end);
+      movers_.clear();
+      for (const Ball& b : balls_) movers_.push_back({b.on_table ? &b.arc : nullptr, true});
+      const NextEvent e = queue_.next(movers_, end);
+      if (e.kind == NextEvent::Kind::None) {
+        t_ = end;
         break;
       }
-      t_ = from_ = e.t;
-      pending_.reset();
+      t_ = e.t;
       resolver_.resolve(e, *this);
       if (++resolved_ >= limits::kMaxEvents) {
         exhausted_ = true;
@@ -188,11 +196,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     }
   }
 
-  // A ball was added, struck or placed: the event kept is void, and the next search starts now.
-  void changed() {
-    pending_.reset();
-    from_ = t_;
-  }
+  void changed(const Ball& b) { queue_.changed(static_cast<std::size_t>(&b - balls_.data())); }
 
   double boundary(long n) const { return static_cast<double>(n) / sp_.hz; }
 
@@ -203,6 +207,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   void restart(Ball& b, const physics::Kinematics& k) {
     b.arc = physics::beginArc(t_, k, p_);
     logArc(b);
+    changed(b);
   }
 
   // Only balls the log knows (a trace was asked for) are logged.
@@ -223,6 +228,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   void nextPhase(std::size_t i) override {
     balls_[i].arc = physics::nextArc(balls_[i].arc, p_);
     logArc(balls_[i]);
+    queue_.changed(i);
   }
 
   void drop(std::size_t i, PocketId pocket) override {
@@ -230,6 +236,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     a.state.pos = now(a).p;
     a.state.pocket = pocket;
     a.on_table = false;
+    queue_.changed(i);
     if (i < log_.ids().size()) log_.pocket(i, t_, a.state.pos);
   }
 
@@ -240,11 +247,9 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   std::vector<Ball> balls_;
   std::vector<Event> events_;
   physics::Resolver resolver_;
-  std::vector<physics::Mover> movers_;         // kept from event to event: no allocation per event
-  std::optional<physics::NextEvent> pending_;  // found, not yet reached
-  double pending_horizon_ = 0.0;
-  double from_ = 0.0;    // the time of the last change, where the next search starts
-  physics::ArcLog log_;  // filled only once logArcs() has been called
+  physics::EventQueue queue_{search_};
+  std::vector<physics::Mover> movers_;  // kept from event to event: no allocation per event
+  physics::ArcLog log_;                 // filled only once logArcs() has been called
   bool logging_ = false;
   long resolved_ = 0;
   long steps_ = 0;
@@ -265,7 +270,7 @@ void ReferenceEngine::runUntilRest(const std::function<bool(const std::vector<Ev
   const double deadline = t_ + sp_.max_time;
   if (!stop) {
     // Nothing to look at between steps: one run, which takes no step (see run()).
-    run(deadline, true, deadline);
+    run(deadline, true);
   } else {
     while (!runOver(deadline)) {
       stepTowardRest(deadline);

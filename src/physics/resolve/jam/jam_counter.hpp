@@ -21,6 +21,11 @@ class JamCounter {
   /// Counts a contact of ball i with ball j (or kCushion) at time t; true once either ball
   /// has met more than kJamContacts contacts at this instant.
   bool jammed(double t, std::size_t i, std::size_t j);
+  /// As new.
+  void reset() {
+    instant_ = -1.0;
+    counts_.clear();
+  }
 
  private:
   double instant_ = -1.0;

@@ -22,9 +22,10 @@ TEST(MutedBox2DClock, ABreakReadsNoClockInsideBox2D) {
   const long before = mutedClockReads();
   ASSERT_TRUE(world.strike(kCueBall, *scene.shot));
   world.runUntilRest();
-  // Box2D 2.4.1 times each step, island and solver phase: thousands of reads a break. None
-  // would land here if the override were lost and they went to the C library again.
-  EXPECT_GT(mutedClockReads() - before, 1000);
+  // Box2D 2.4.1 times each step, island and solver phase; the world steps it at the contacts
+  // and sensors it resolves (a dozen a break). None would land here if the override were lost
+  // and they went to the C library again.
+  EXPECT_GT(mutedClockReads() - before, 0);
 }
 
 TEST(MutedBox2DClock, EveryoneElseReadsTheRealTime) {

@@ -28,8 +28,10 @@ struct Contact {
     const double yi = -s.vy * sin_t + s.wx * r;                    // slip at I, across
     const double xc = s.vx - s.wy * r;                             // slip at C
     const double yc = s.vy + s.wx * r;
-    const double si = std::max(std::hypot(xi, yi), stick);
-    const double sc = std::max(std::hypot(xc, yc), stick);
+    // Slips are speeds of a few m/s: their squares can neither overflow nor underflow below
+    // the regularisation, so sqrt serves where hypot's care costs four times as much.
+    const double si = std::max(std::sqrt(xi * xi + yi * yi), stick);
+    const double sc = std::max(std::sqrt(xc * xc + yc * yc), stick);
     const double cos_i = xi / si, sin_i = yi / si, cos_c = xc / sc, sin_c = yc / sc;
     // The slate's normal force per unit P: the nose presses down by sin(theta), and the
     // nose's friction adds its vertical share. The slate can only push: when the nose's
@@ -55,33 +57,21 @@ struct Contact {
   }
 };
 
-// Steps per phase: the midpoint rule's error falls as 1/N^2; 100 hold the rebound angles to
-// 0.01 deg against 20,000 steps, at a quarter of the cost of 400.
+// Steps per phase: the midpoint rule's error falls as 1/N^2. The regularisation is sized for
+// them: one step's friction (about 7/2 (mu_w + mu_s) vy / (N cos theta) of slip) is no more
+// than it, so the integration stays stable for every allowed friction. The stiff stretch where
+// a slip stops sets the step: an adaptive Runge-Kutta 3(2) pair, tried, took four times the
+// work to stay stable there. Mathavan.HundredStepsAgainstTwentyThousand states the accuracy.
 constexpr int kSteps = 100;
 
-}  // namespace
-
-Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
-                          double& impulse) {
-  impulse = 0.0;
-  const Vec2 y = inward * -1.0;  // into the cushion
-  const Vec2 x{y.y, -y.x};       // x cross y = z
-  State s{dot(k.v, x), dot(k.v, y), k.w.x * x.x + k.w.y * x.y, k.w.x * y.x + k.w.y * y.y, k.w.z};
-  if (s.vy <= 0.0) return k;
-  const double r = p.ball_radius;
-  const double sin_t = (p.cushion_height - r) / r;
-  // Regularised below a slip of a few per cent of the approach speed: enough that one step's
-  // friction (about 7/2 (mu_w + mu_s) vy / (N cos theta) of slip) is no more than it, so the
-  // integration stays stable for every allowed friction.
-  const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
-  const double stick =
-      s.vy * std::max(0.01, 3.5 * (p.cushion_friction + p.sliding_friction) / (cos_t * kSteps));
-  const Contact c{mass, r, sin_t, cos_t, p.cushion_friction, p.sliding_friction, stick};
+// The rebound with `steps` fixed midpoint steps a phase.
+State fixedStepBounce(State s, const Contact& c, const PhysicsParams& p, int steps,
+                      double& impulse) {
   // Compression: until the ball stops moving into the cushion. Its normal speed at I is
   // vy cos(theta); the work the normal force takes is the integral of that over P.
-  const double dp = mass * s.vy / (c.cos_t * kSteps);
+  const double dp = c.mass * s.vy / (c.cos_t * steps);
   double work = 0.0;
-  for (int n = 0; n < 100 * kSteps && s.vy > 0.0; ++n) {
+  for (int n = 0; n < 100 * steps && s.vy > 0.0; ++n) {
     State next = c.step(s, dp);
     double used = dp;
     if (next.vy < 0.0) {  // the last step, cut where vy reaches 0
@@ -93,10 +83,9 @@ Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsP
     impulse += used;
     s = next;
   }
-  // Restitution: until the normal force has given back e^2 of that work.
   const double target = p.cushion_restitution * p.cushion_restitution * work;
   double given = 0.0;
-  for (int n = 0; n < 100 * kSteps && given < target; ++n) {
+  for (int n = 0; n < 100 * steps && given < target; ++n) {
     const double speed = -s.vy * c.cos_t;
     // Size the step from what is left; at the start (vy = 0) one of compression's size.
     double step = dp;
@@ -107,9 +96,39 @@ Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsP
     s = next;
     if (step < dp) break;  // that step reached the target
   }
+  return s;
+}
+
+Kinematics bounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p, int steps,
+                  double& impulse) {
+  impulse = 0.0;
+  const Vec2 y = inward * -1.0;  // into the cushion
+  const Vec2 x{y.y, -y.x};       // x cross y = z
+  State s{dot(k.v, x), dot(k.v, y), k.w.x * x.x + k.w.y * x.y, k.w.x * y.x + k.w.y * y.y, k.w.z};
+  if (s.vy <= 0.0) return k;
+  const double r = p.ball_radius;
+  const double sin_t = (p.cushion_height - r) / r;
+  // Regularised below a slip of a few per cent of the approach speed (see kSteps).
+  const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
+  const double stick =
+      s.vy * std::max(0.01, 3.5 * (p.cushion_friction + p.sliding_friction) / (cos_t * kSteps));
+  const Contact c{mass, r, sin_t, cos_t, p.cushion_friction, p.sliding_friction, stick};
+  s = fixedStepBounce(s, c, p, steps, impulse);
   k.v = x * s.vx + y * s.vy;
   k.w = {x.x * s.wx + y.x * s.wy, x.y * s.wx + y.y * s.wy, s.wz};
   return k;
+}
+
+}  // namespace
+
+Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
+                          double& impulse) {
+  return bounce(k, inward, mass, p, kSteps, impulse);
+}
+
+Kinematics mathavanBounceInSteps(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
+                                 int steps, double& impulse) {
+  return bounce(k, inward, mass, p, steps, impulse);
 }
 
 namespace {

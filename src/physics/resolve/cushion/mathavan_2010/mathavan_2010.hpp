@@ -16,9 +16,15 @@ namespace nineball::physics {
 /// given back cushion_restitution^2 of the work it took. Topspin, draw and side spin all
 /// change the rebound. Every velocity scales with the approach speed (the model is rigid and
 /// impulsive), so the rebound is the same at every speed.
-/// `inward` is the cushion's normal, into the table; `impulse` is the total P.
+/// `inward` is the cushion's normal, into the table; `impulse` is the total P, integrated in
+/// 100 midpoint steps a phase.
 Kinematics mathavanBounce(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
                           double& impulse);
+
+/// The same rebound integrated in `steps` midpoint steps a phase (the same regularisation):
+/// the yardstick mathavanBounce is held to (20,000 steps).
+Kinematics mathavanBounceInSteps(Kinematics k, Vec2 inward, double mass, const PhysicsParams& p,
+                                 int steps, double& impulse);
 
 /// "mathavan": mathavanBounce, reading cushion_height, which must stand between the ball's
 /// centre and its top.
