@@ -1,91 +1,75 @@
 #include "render/ball_painter.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <string>
-
-#include "render/palette.hpp"
 
 namespace nineball::render {
-namespace {
 
-constexpr Rgb kOutline{10, 10, 10};
-constexpr Rgb kNumberInk{20, 20, 20};
-
-// The stripe: the part of the circle within kStripeHalfHeight of its horizontal diameter.
-std::vector<Vec2> stripeOutline(Vec2 c, double r) {
-  const double a = std::asin(kStripeHalfHeight);
-  constexpr int kArc = 10;
-  std::vector<Vec2> pts;
-  for (int side = 0; side < 2; ++side) {
-    const double base = side == 0 ? 0.0 : kPi;
-    for (int i = 0; i <= kArc; ++i) {
-      pts.push_back(c + fromAngle(base - a + 2.0 * a * i / kArc) * r);
-    }
-  }
-  return pts;
-}
-
-}  // namespace
-
-sf::Text& BallPainter::number(int id, unsigned size) {
-  auto it = numbers_.find(id);
-  if (it == numbers_.end()) {
-    it = numbers_.emplace(id, sf::Text(std::to_string(id), font_, size)).first;
-    it->second.setFillColor(toSf(kNumberInk));
-  }
-  sf::Text& t = it->second;
-  if (t.getCharacterSize() != size) t.setCharacterSize(size);
-  const sf::FloatRect b = t.getLocalBounds();
-  t.setOrigin(b.left + b.width / 2.0f, b.top + b.height / 2.0f);
-  return t;
-}
-
-void BallPainter::addBall(int id, Vec2 c, double r, std::uint8_t alpha) {
+void BallPainter::shadow(Vec2 c, double r, std::uint8_t alpha) {
+  // Away from the light (up and to the top left): down and to the right on screen, soft.
+  const Vec2 at = c + Vec2{0.16 * r, 0.22 * r};
   const int segments = circleSegments(r) + 8;
-  shadows_.circle(c + Vec2{0.14 * r, 0.2 * r}, r * 1.02, sf::Color(0, 0, 0, alpha / 4), segments);
-  bodies_.circle(c, r + 0.8, toSf(kOutline, alpha / 2), segments);
-  const BallLook look = looks_(id);
-  if (look.stripe) {
-    bodies_.circle(c, r, toSf(kNumberDisc, alpha), segments);
-    bodies_.convex(stripeOutline(c, r), toSf(look.colour, alpha));
-  } else {
-    bodies_.circle(c, r, toSf(look.colour, alpha), segments);
+  shadows_.circle(at, r * 1.08, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 7)),
+                  segments);
+  shadows_.circle(at, r * 0.98, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 5)),
+                  segments);
+}
+
+void BallPainter::sinking(sf::RenderTarget& target, const ViewTransform& view, const BallState& b,
+                          double r, double time, const TableGeometry& table) {
+  const BallSpins::Drop* drop = spins_.dropOf(b.id);
+  if (!drop || !b.pocket) return;
+  const double p = (time - drop->time) / kSinkTime;
+  if (!(p >= 0.0 && p < 1.0)) return;
+  Vec2 centre = drop->at;
+  for (const Pocket& pk : table.pockets) {
+    if (pk.id == *b.pocket) centre = pk.drop_centre;
   }
-  if (look.numbered) bodies_.circle(c, r * kNumberDiscRadius, toSf(kNumberDisc, alpha));
-  bodies_.circle(c + Vec2{-0.38 * r, -0.42 * r}, 0.18 * r, sf::Color(255, 255, 255, alpha / 2));
+  // Eased: it rolls over the edge quickly, then settles into the dark.
+  const double e = 1.0 - (1.0 - p) * (1.0 - p);
+  SphereBallRenderer::Ball ball;
+  ball.look = looks_(b.id);
+  ball.number = b.id;
+  ball.q = spins_.of(b.id);
+  ball.centre_px = view.toPixels(drop->at + (centre - drop->at) * e);
+  ball.radius_px = view.px(r) * (1.0 - 0.3 * e);
+  ball.darken = 0.85 * e;
+  ball.alpha = static_cast<std::uint8_t>(std::lround(255.0 * std::min(1.0, 4.0 * (1.0 - p))));
+  spheres_.draw(target, ball);
 }
 
 void BallPainter::draw(sf::RenderTarget& target, const ViewTransform& view,
-                       const std::vector<BallState>& balls, double r) {
+                       const std::vector<BallState>& balls, double r, double time,
+                       const TableGeometry& table) {
+  spins_.advance(balls, time);
+  for (const BallState& b : balls) sinking(target, view, b, r, time, table);
   shadows_.clear();
-  bodies_.clear();
   const double r_px = view.px(r);
   for (const BallState& b : balls) {
-    if (!b.pocket) addBall(b.id, view.toPixels(b.pos), r_px, 255);
+    if (!b.pocket) shadow(view.toPixels(b.pos), r_px, 255);
   }
   shadows_.draw(target);
-  bodies_.draw(target);
-  const unsigned size = static_cast<unsigned>(std::max(6.0, std::round(r_px * 0.85)));
   for (const BallState& b : balls) {
-    if (b.pocket || !looks_(b.id).numbered) continue;
-    sf::Text& t = number(b.id, size);
-    t.setPosition(toSf(view.toPixels(b.pos)));
-    target.draw(t);
+    if (b.pocket) continue;
+    SphereBallRenderer::Ball ball;
+    ball.look = looks_(b.id);
+    ball.number = b.id;
+    ball.q = spins_.of(b.id);
+    ball.centre_px = view.toPixels(b.pos);
+    ball.radius_px = r_px;
+    spheres_.draw(target, ball);
   }
 }
 
 void BallPainter::drawOne(sf::RenderTarget& target, int id, Vec2 centre_px, double radius_px,
                           std::uint8_t alpha) {
-  shadows_.clear();
-  bodies_.clear();
-  addBall(id, centre_px, radius_px, alpha);
-  bodies_.draw(target);
-  if (!looks_(id).numbered) return;
-  sf::Text& t = number(id, static_cast<unsigned>(std::max(6.0, std::round(radius_px * 0.85))));
-  t.setPosition(toSf(centre_px));
-  t.setFillColor(toSf(kNumberInk, alpha));
-  target.draw(t);
-  t.setFillColor(toSf(kNumberInk));
+  SphereBallRenderer::Ball ball;
+  ball.look = looks_(id);
+  ball.number = id;
+  ball.centre_px = centre_px;
+  ball.radius_px = radius_px;
+  ball.alpha = alpha;
+  spheres_.draw(target, ball);
 }
 
 }  // namespace nineball::render

@@ -4,6 +4,8 @@
 #include <SFML/Graphics/Text.hpp>
 #include <cmath>
 
+#include "render/table_finish.hpp"
+
 namespace nineball::render {
 
 ScenePainter::ScenePainter(const TableGeometry& table, const Fonts& fonts)
@@ -23,6 +25,14 @@ void ScenePainter::resize(double width_px, double height_px) {
     table_picture_.clear(toSf(kBackground));
     table_painter_.draw(table_picture_);
     table_picture_.display();
+    // The materials are pixels over the flat shapes: worked out once per size, on the CPU.
+    sf::Image picture = table_picture_.getTexture().copyToImage();
+    finishTable(picture, view_, table_);
+    sf::Texture finished;
+    if (finished.loadFromImage(picture)) {
+      table_picture_.draw(sf::Sprite(finished), sf::RenderStates(sf::BlendNone));
+      table_picture_.display();
+    }
   }
 }
 
@@ -42,7 +52,7 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   }
   ball_painter_.setLooks(frame.looks);
   hud_painter_.setLooks(frame.looks);
-  ball_painter_.draw(target, view_, frame.balls, frame.ball_radius);
+  ball_painter_.draw(target, view_, frame.balls, frame.ball_radius, frame.time, table_);
   if (frame.call) drawCall(target, view_, *frame.call, frame.ball_radius);
   if (frame.ghost) {
     const double r = view_.px(frame.ball_radius);
@@ -71,15 +81,14 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
     }
   }
   if (frame.cue) {
-    const BallState* cue = nullptr;
+    std::optional<Vec2> cue = frame.cue->at;
     for (const BallState& b : frame.balls) {
-      if (b.id == kCueBall && !b.pocket) cue = &b;
+      if (!cue && b.id == kCueBall && !b.pocket) cue = b.pos;
     }
     if (cue) {
       // Side spin moves the stick off the centre line, as the tip is.
       const Vec2 right = -perp(fromAngle(frame.cue->heading_rad));
-      cue_painter_.drawStick(target, view_,
-                             cue->pos + right * (frame.cue->side * frame.ball_radius),
+      cue_painter_.drawStick(target, view_, *cue + right * (frame.cue->side * frame.ball_radius),
                              frame.cue->heading_rad, frame.ball_radius, frame.cue->pull);
     }
   }

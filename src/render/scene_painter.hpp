@@ -25,6 +25,8 @@ struct CuePose {
   double heading_rad = 0.0;
   double pull = 0.0;  ///< m pulled back from the ball
   double side = 0.0;  ///< the tip's side offset, fraction of R (right of the aim is positive)
+  /// Where the cue ball stood (the stroke's follow-through); the cue ball's place if empty.
+  std::optional<Vec2> at;
 };
 
 /// A ball being moved by hand (the cue ball in hand), wherever the pointer is.
@@ -38,6 +40,9 @@ struct CueGhost {
 /// One picture of the game: what the window shows at one instant.
 struct Frame {
   std::vector<BallState> balls;  ///< where to draw each ball (pocketed ones are skipped)
+  /// The physics' clock at this picture (s): how far each ball has turned with its spin, and
+  /// how far a pocketed one has sunk.
+  double time = 0.0;
   double ball_radius = 0.028575;
   std::optional<AimGuide> guide;
   double guide_scale = 1.0;      ///< the guide's lines after the contact, times normal

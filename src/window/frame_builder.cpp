@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/opponent.hpp"
+#include "render/cue_stick_shape.hpp"
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
 #include "window/game_help.hpp"
@@ -98,6 +99,31 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
   }
 }
 
+// The stick's stroke: the tip meets the ball at the strike (a real stroke covers the draw-back
+// in about the frame before it) and follows through past the ball's place, slowing.
+constexpr double kStroke = 0.08;         // s of the physics' clock
+constexpr double kFollowThrough = 0.06;  // m past the ball's place
+
+render::CuePose cuePose(double heading_rad, double pull, double side) {
+  render::CuePose pose;
+  pose.heading_rad = heading_rad;
+  pose.pull = pull;
+  pose.side = side;
+  return pose;
+}
+
+double addressPull(double power) {
+  return std::clamp(power, 0.0, 1.0) * render::CueStickShape::kMaxPull;
+}
+
+render::CuePose stroke(const GameSession::Strike& s, const GameSession& session) {
+  const double p = std::clamp(s.since / kStroke, 0.0, 1.0);
+  const double e = 1.0 - (1.0 - p) * (1.0 - p);  // fast through the ball, slowing after
+  render::CuePose pose = cuePose(s.heading_rad, -kFollowThrough * e, session.tip().x);
+  pose.at = s.from;
+  return pose;
+}
+
 }  // namespace
 
 std::optional<Vec2> dialogKeepClear(const GameSession& session) {
@@ -117,6 +143,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
                          const ComputerPlayer& computer) {
   render::Frame f;
   f.balls = session.ballsToDraw();
+  f.time = session.drawTime();
   f.ball_radius = session.match().world().physics().ball_radius;
   f.looks = gameDef(session.match().rack().game()).looks;
   const bool aiming = session.phase() == Phase::Aiming && !session.replaying();
@@ -124,7 +151,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   if (computer_turn) {
     if (aiming && computer.showsCue()) {
       f.guide = session.aimGuide();
-      f.cue = render::CuePose{session.heading(), computer.pull(), session.tip().x};
+      f.cue = cuePose(session.heading(), computer.pull(), session.tip().x);
     }
     if (const auto carried = computer.carriedCue()) {
       for (BallState& b : f.balls) {
@@ -133,8 +160,11 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   } else if (aiming && ui.drag != Drag::Cue && ui.drag != Drag::Ball) {
     f.guide = session.aimGuide();
-    f.cue = render::CuePose{session.heading(), ui.pull, session.tip().x};
+    // Drawn back as far as the power set asks (a drag sets both at once).
+    f.cue = cuePose(session.heading(), std::max(ui.pull, addressPull(session.power())),
+                    session.tip().x);
   }
+  if (const auto s = session.strike(); s && s->since < kStroke) f.cue = stroke(*s, session);
   if ((ui.drag == Drag::Cue || ui.drag == Drag::Ball) && ui.ghost) {
     f.ghost = ui.ghost;
     for (BallState& b : f.balls) {

@@ -53,6 +53,7 @@ void GameSession::rebuildPractice() {
   s.balls = practice_->layout();
   match_ = std::make_unique<Match>(s);
   shot_.current = shot_.previous = match_->balls();
+  shot_.current_time = shot_.previous_time = match_->world().time();
   pocketed_.clear();
   for (int id = 1; id <= 9; ++id) {
     if (!practice_->has(id)) pocketed_.push_back(id);
@@ -244,6 +245,7 @@ void GameSession::startRack() {
 
 void GameSession::startTurn() {
   shot_.current = shot_.previous = match_->balls();
+  shot_.current_time = shot_.previous_time = match_->world().time();
   phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
   push_out_ = false;
   tip_ = {};
@@ -349,6 +351,10 @@ bool GameSession::shoot(const TurnInput& given) {
   phase_ = Phase::Rolling;
   clock_.reset();
   shot_.begin(*match_);
+  strike_from_ = cuePosition();
+  for (const BallState& b : shot_.current) {
+    if (b.id == kCueBall) strike_from_ = b.pos;
+  }
   message_.clear();
   return true;
 }
@@ -493,6 +499,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   if (const auto winner = match_->rack().winner()) {
     ++racks_won_[seatOf(*winner)];
     shot_.current = shot_.previous = match_->balls();
+    shot_.current_time = shot_.previous_time = match_->world().time();
     phase_ = Phase::GameOver;
     return;
   }
@@ -554,6 +561,17 @@ std::vector<BallState> GameSession::ballsToDraw() const {
     }
   }
   return out;
+}
+
+double GameSession::drawTime() const {
+  if (replay_) return replay_->time();
+  if (phase_ == Phase::Rolling) return shot_.timeBetween(clock_.alpha());
+  return shot_.current_time;
+}
+
+std::optional<GameSession::Strike> GameSession::strike() const {
+  if (phase_ != Phase::Rolling || replay_) return std::nullopt;
+  return Strike{strike_from_, heading_, power(), drawTime() - shot_.start};
 }
 
 std::string GameSession::status() const {

@@ -171,6 +171,18 @@ class GameSession {
   /// The balls where the frame should draw them: between the last two steps while rolling,
   /// the cue ball at its spot in hand otherwise.
   std::vector<BallState> ballsToDraw() const;
+  /// The physics' clock at the balls ballsToDraw gives (s; the replay's own while it plays).
+  double drawTime() const;
+  /// The shot being played, for the stick's stroke through the ball: where the cue ball
+  /// stood, the heading and speed, and how long ago it was struck (s of the physics' clock).
+  struct Strike {
+    Vec2 from;
+    double heading_rad = 0.0;
+    double power = 0.0;  ///< 0-1, as power()
+    double since = 0.0;
+  };
+  /// While a shot rolls (not in a replay).
+  std::optional<Strike> strike() const;
   /// Simulated seconds since the shot began.
   double shotTime() const;
 
@@ -213,6 +225,7 @@ class GameSession {
   std::optional<PocketId> call_pocket_;  // the pocket called
   rules::Groups groups_at_shot_;         // the groups before the turn (its message)
   bool breaking_ = false;                // the shot rolling is the break
+  Vec2 strike_from_;  // where the cue ball stood when the rolling shot was struck
   FixedStepClock clock_;
   ShotSteps shot_;
   std::vector<int> pocketed_;

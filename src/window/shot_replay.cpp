@@ -57,4 +57,8 @@ std::vector<BallState> ShotReplay::balls() const {
   return steps_.between(clock_.alpha());
 }
 
+double ShotReplay::time() const {
+  return steps_.timeBetween(clock_.alpha());
+}
+
 }  // namespace nineball::window

@@ -29,6 +29,8 @@ class ShotReplay {
   bool finished() const { return finished_; }
   /// The balls where the frame should draw them, between the last two steps.
   std::vector<BallState> balls() const;
+  /// The replayed world's time at those balls (s).
+  double time() const;
   double rate() const { return rate_; }
 
  private:

@@ -5,7 +5,7 @@ namespace nineball::window {
 void ShotSteps::begin(const Match& match) {
   current = previous = match.balls();
   events_heard = 0;
-  start = match.world().time();
+  start = previous_time = current_time = match.world().time();
 }
 
 bool ShotSteps::take(Match& match, int steps, double max_time,
@@ -13,9 +13,11 @@ bool ShotSteps::take(Match& match, int steps, double max_time,
   const Engine& world = match.world();
   for (int i = 0; i < steps; ++i) {
     previous = current;
+    previous_time = current_time;
     // The match's own steps: a rack played in the window ends as the same rack played headless.
     const bool over = match.stepShot();
     current = match.balls();
+    current_time = world.time();
     const auto& events = world.events();
     if (events.size() > events_heard) {
       const std::vector<Event> fresh(events.begin() + static_cast<long>(events_heard),
@@ -32,9 +34,17 @@ bool ShotSteps::take(Match& match, int steps, double max_time,
 std::vector<BallState> ShotSteps::between(double alpha) const {
   std::vector<BallState> out = current;
   for (std::size_t i = 0; i < out.size() && i < previous.size(); ++i) {
-    if (!out[i].pocket) out[i].pos = previous[i].pos + (out[i].pos - previous[i].pos) * alpha;
+    if (out[i].pocket || previous[i].pocket) continue;
+    const BallState& a = previous[i];
+    out[i].pos = a.pos + (out[i].pos - a.pos) * alpha;
+    out[i].vel = a.vel + (out[i].vel - a.vel) * alpha;
+    out[i].w = a.w + (out[i].w - a.w) * alpha;
   }
   return out;
+}
+
+double ShotSteps::timeBetween(double alpha) const {
+  return previous_time + (current_time - previous_time) * alpha;
 }
 
 }  // namespace nineball::window

@@ -13,6 +13,8 @@ namespace nineball::window {
 struct ShotSteps {
   std::vector<BallState> previous;
   std::vector<BallState> current;
+  double previous_time = 0.0;  ///< the world's time at `previous` (s)
+  double current_time = 0.0;   ///< and at `current`
   std::size_t events_heard = 0;
   double start = 0.0;  ///< the world's time when the shot began (s)
 
@@ -21,8 +23,12 @@ struct ShotSteps {
   /// Takes up to `steps` fixed steps, adding the sounds of new events to `impacts`; true (and
   /// no more steps) once every ball rests or the shot has run for `max_time` s.
   bool take(Match& match, int steps, double max_time, std::vector<audio::Impact>& impacts);
-  /// The balls a frame `alpha` (0 to 1) of a step past the last state should draw.
+  /// The balls a frame `alpha` (0 to 1) of a step past the last state should draw: centres
+  /// on the chord, velocities and spins in between (the cloth changes them at a steady rate
+  /// within a phase, so a frame between two events has the physics' own).
   std::vector<BallState> between(double alpha) const;
+  /// The world's time at that frame.
+  double timeBetween(double alpha) const;
 };
 
 }  // namespace nineball::window

@@ -12,6 +12,7 @@
 #include "io/scene_json.hpp"
 #include "nineball/colours.hpp"
 #include "nineball/sim.hpp"
+#include "render/ball_spin.hpp"
 #include "render/view_transform.hpp"
 
 namespace nineball::testing {
@@ -54,9 +55,10 @@ TEST(SimPng, TheGamesRendererDrawsThePathsAndTheBallsWhereTheyStopped) {
                           static_cast<unsigned>(std::lround(p.y)));
   };
   // Each ball whole where it stopped: its colour beside the number disc.
+  // (Drawn number up, lit from above: each colour as the light shows it there.)
   for (const BallState& b : r.balls) {
     const Vec2 side = b.pos + Vec2{0.7 * s.physics.ball_radius, 0.0};
-    EXPECT_TRUE(near(at(side), ballColour(b.id))) << "ball " << b.id;
+    EXPECT_TRUE(near(at(side), render::litColour(ballColour(b.id), 0.7, 0.0))) << "ball " << b.id;
   }
   // The 3's path runs along the x axis between where it started and where it stopped: its
   // rolling part (the end of its run) is solid red.
