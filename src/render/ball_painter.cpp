@@ -9,10 +9,8 @@ void BallPainter::shadow(Vec2 c, double r, std::uint8_t alpha) {
   // Away from the light (up and to the top left): down and to the right on screen, soft.
   const Vec2 at = c + Vec2{0.16 * r, 0.22 * r};
   const int segments = circleSegments(r) + 8;
-  shadows_.circle(at, r * 1.08, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 7)),
-                  segments);
-  shadows_.circle(at, r * 0.98, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 5)),
-                  segments);
+  shadows_.circle(at, r * 1.08, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 7)), segments);
+  shadows_.circle(at, r * 0.98, sf::Color(0, 0, 0, static_cast<std::uint8_t>(alpha / 5)), segments);
 }
 
 void BallPainter::sinking(sf::RenderTarget& target, const ViewTransform& view, const BallState& b,

@@ -27,8 +27,7 @@ class BallPainter {
   /// where its spin has brought it by `time` (s, the physics' clock); a ball pocketed less
   /// than kSinkTime ago sinks into its pocket of `table`.
   void draw(sf::RenderTarget& target, const ViewTransform& view,
-            const std::vector<BallState>& balls, double r, double time,
-            const TableGeometry& table);
+            const std::vector<BallState>& balls, double r, double time, const TableGeometry& table);
   /// One ball at a pixel position and pixel radius, its number up (the HUD's icons, the ball
   /// in hand); `alpha` fades it.
   void drawOne(sf::RenderTarget& target, int id, Vec2 centre_px, double radius_px,

@@ -84,8 +84,8 @@ SphereBallRenderer::SphereBallRenderer(const sf::Font& font) : quad_(sf::Triangl
                                                static_cast<float>(l.z)));
     shader_.setUniform("stripe_half", static_cast<float>(kStripeHalfHeight));
     shader_.setUniform("disc_radius", static_cast<float>(kNumberDiscRadius));
-    shader_.setUniform("spot_colour",
-                       sf::Glsl::Vec3(kCueSpot.r / 255.0f, kCueSpot.g / 255.0f, kCueSpot.b / 255.0f));
+    shader_.setUniform("spot_colour", sf::Glsl::Vec3(kCueSpot.r / 255.0f, kCueSpot.g / 255.0f,
+                                                     kCueSpot.b / 255.0f));
   }
 }
 
@@ -182,14 +182,14 @@ void SphereBallRenderer::drawOnCpu(sf::RenderTarget& target, const Ball& ball) {
   for (unsigned y = 0; y < side; ++y) {
     for (unsigned x = 0; x < side; ++x) {
       const double sx = (x + 0.5 - ox) / ball.radius_px, sy = -(y + 0.5 - oy) / ball.radius_px;
-      const Shade s = litBall(ball.look, ball.number, ball.q, sx, sy, ball.radius_px, inkFrom, this);
+      const Shade s =
+          litBall(ball.look, ball.number, ball.q, sx, sy, ball.radius_px, inkFrom, this);
       const double keep = 1.0 - ball.darken;
-      cpu_pixels_.setPixel(
-          x, y,
-          sf::Color(static_cast<sf::Uint8>(std::lround(255.0 * s.r * keep)),
-                    static_cast<sf::Uint8>(std::lround(255.0 * s.g * keep)),
-                    static_cast<sf::Uint8>(std::lround(255.0 * s.b * keep)),
-                    static_cast<sf::Uint8>(std::lround(s.a * ball.alpha))));
+      cpu_pixels_.setPixel(x, y,
+                           sf::Color(static_cast<sf::Uint8>(std::lround(255.0 * s.r * keep)),
+                                     static_cast<sf::Uint8>(std::lround(255.0 * s.g * keep)),
+                                     static_cast<sf::Uint8>(std::lround(255.0 * s.b * keep)),
+                                     static_cast<sf::Uint8>(std::lround(s.a * ball.alpha))));
     }
   }
   cpu_texture_.update(cpu_pixels_);

@@ -16,10 +16,9 @@ Shade shadeOf(Rgb c) {
 }
 
 Orientation multiply(const Orientation& a, const Orientation& b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 Vec3 rotate(const Orientation& q, Vec3 v) {
@@ -104,8 +103,8 @@ Shade surfaceColour(const BallLook& look, int number, Vec3 body, InkSampler ink,
     const double v = body.y / kNumberDiscRadius;
     const double coverage = ink ? ink(glyphs, number, u, v) : 0.0;
     const Shade k = shadeOf(kInk);
-    c = {c.r + (k.r - c.r) * coverage, c.g + (k.g - c.g) * coverage,
-         c.b + (k.b - c.b) * coverage, 1.0};
+    c = {c.r + (k.r - c.r) * coverage, c.g + (k.g - c.g) * coverage, c.b + (k.b - c.b) * coverage,
+         1.0};
   } else if (!look.numbered && number == kCueBall && off < kSpotRadius) {
     c = shadeOf(kCueSpot);
   }

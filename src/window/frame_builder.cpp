@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "app/opponent.hpp"
-#include "render/cue_stick_shape.hpp"
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
+#include "render/cue_stick_shape.hpp"
 #include "window/game_help.hpp"
 
 namespace nineball::window {

@@ -198,8 +198,9 @@ class Picture {
         // Else the number disc: white, the ink, or a grey of the glyph's soft edge; or the cue
         // ball's spot.
         const bool grey = std::abs(got.r - got.g) < 16 && std::abs(got.g - got.b) < 16;
-        const bool spot = b.id == nineball::kCueBall &&
-                          near(got, nineball::render::litColour(nineball::render::kCueSpot, sx, sy));
+        const bool spot =
+            b.id == nineball::kCueBall &&
+            near(got, nineball::render::litColour(nineball::render::kCueSpot, sx, sy));
         EXPECT_TRUE(mine || grey || spot)
             << "ball " << b.id << " at (" << b.pos.x << ", " << b.pos.y << ") m, pixel (" << p.x
             << ", " << p.y << "): " << show(at(p)) << ", expected "
