@@ -25,6 +25,10 @@ struct GameOptions {
   unsigned height = 800;
   bool size_given = false;  ///< --size was given (else the desktop may shrink it)
   bool menu = false;        ///< show the start menu even with --screenshot / --frames
+  // Given on the command line (a default value too): they then win over the remembered menu.
+  bool game_given = false;
+  bool rules_given = false;
+  bool opponent_given = false;
 };
 
 }  // namespace nineball::app

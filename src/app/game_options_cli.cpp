@@ -56,11 +56,13 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   std::vector<CLI::Option*> opts;
   opts.push_back(app.add_option("--game", o.game, "Game window: the game played")
                      ->check(CLI::IsMember(gameNames()))
+                     ->each([&o](const std::string&) { o.game_given = true; })
                      ->capture_default_str());
   opts.push_back(app.add_option("--rules", o.rules,
                                 "Game window: the rules (paper: the seed paper's, for " +
                                     gamesPlayedBy(rules::RuleSet::Paper) + ")")
                      ->check(CLI::IsMember({"wpa", "paper"}))
+                     ->each([&o](const std::string&) { o.rules_given = true; })
                      ->capture_default_str());
   opts.push_back(
       app.add_option("--seed", o.seed,
@@ -71,6 +73,7 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                                 "Game window: who plays Player 2, a second person (human) or the "
                                 "computer at a level (O switches in the window)")
                      ->check(CLI::IsMember(opponentNames()))
+                     ->each([&o](const std::string&) { o.opponent_given = true; })
                      ->capture_default_str());
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));
   opts.push_back(app.add_flag("--fullscreen", o.fullscreen, "Game window: start in full screen"));

@@ -45,6 +45,7 @@ double impactVolume(const Impact& impact) {
   double full = 6.0;
   if (impact.kind == ImpactKind::Cushion) full = 4.0;
   if (impact.kind == ImpactKind::Pocket) full = 3.0;
+  if (impact.kind == ImpactKind::Cue) full = 8.0;  // a firm break
   constexpr double kSilent = 0.01;
   if (!(impact.strength > kSilent)) return 0.0;
   const double v = 100.0 * std::pow(std::min(1.0, impact.strength / full), 0.6);

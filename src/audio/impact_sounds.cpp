@@ -60,7 +60,7 @@ std::unique_ptr<ImpactSounds> ImpactSounds::open() {
     QuietStderr quiet;
     sounds.reset(new ImpactSounds());
     loaded = load(sounds->click_, synthClick()) && load(sounds->thud_, synthThud()) &&
-             load(sounds->drop_, synthPocketDrop());
+             load(sounds->drop_, synthPocketDrop()) && load(sounds->strike_, synthCueStrike());
     said = quiet.sfmlSaid();
   }
   if (!loaded || said.find("Failed to open the audio device") != std::string::npos ||
@@ -87,6 +87,8 @@ sf::SoundBuffer& ImpactSounds::buffer(ImpactKind kind) {
       return thud_;
     case ImpactKind::Pocket:
       return drop_;
+    case ImpactKind::Cue:
+      return strike_;
     case ImpactKind::Ball:
       break;
   }

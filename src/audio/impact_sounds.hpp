@@ -30,6 +30,7 @@ class ImpactSounds {
   sf::SoundBuffer click_;
   sf::SoundBuffer thud_;
   sf::SoundBuffer drop_;
+  sf::SoundBuffer strike_;
   std::array<sf::Sound, 16> voices_;
   std::size_t next_voice_ = 0;
 };

@@ -76,6 +76,12 @@ std::vector<std::int16_t> synthThud() {
   return toSamples(w);
 }
 
+std::vector<std::int16_t> synthCueStrike() {
+  std::vector<double> w = silence(0.05);
+  addStrike(w, 0.0, {{1400.0, 1.0, 0.004}, {2300.0, 0.45, 0.003}, {650.0, 0.3, 0.006}}, 0.7, 0.001);
+  return toSamples(w);
+}
+
 std::vector<std::int16_t> synthPocketDrop() {
   std::vector<double> w = silence(0.55);
   addStrike(w, 0.0, {{1250.0, 0.5, 0.01}, {2100.0, 0.25, 0.006}}, 0.4, 0.004);

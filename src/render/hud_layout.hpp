@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "render/hud_state.hpp"
 #include "render/view_transform.hpp"
@@ -32,11 +33,16 @@ struct HudLayout {
   /// The room (m at the view's scale) left of the spin icon for its three labels.
   static constexpr double kSpinLabelsWidth = 0.42;
 
+  /// How far (m) from a ball's centre a strip must stay to leave the ball in sight: its radius
+  /// and a little.
+  static constexpr double kKeepClearReach = 0.03;
+
   /// The layout for a view (its size and scale) and the dialog shown. The push-out choice and
-  /// the rack's end are strips along one long cushion that leave the balls in sight: the one
-  /// away from `keep_clear` (a point on the table, m). Help is wide.
+  /// the rack's end are strips across the table that leave the balls in sight: along a long
+  /// cushion when that hides none of `keep_clear` (the balls, m), else the place across the
+  /// table (or, failing that, over a HUD band) that hides the fewest. Help is wide.
   static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None,
-                      std::optional<Vec2> keep_clear = std::nullopt) {
+                      const std::vector<Vec2>& keep_clear = {}) {
     const bool strip = overlay == Overlay::PushOutChoice || overlay == Overlay::GameOver;
     const bool wide = overlay == Overlay::Help;
     HudLayout h;
@@ -63,18 +69,66 @@ struct HudLayout {
                        : wide                            ? 1.02
                                                          : 0.6) *
                       s;
-    double top = c.y - ph / 2.0;
-    if (strip) {
-      const double edge = view.table().width / 2.0 - 0.04;
-      const bool upper_free = !keep_clear || keep_clear->y <= 0.0;
-      top = upper_free ? view.toPixels({0.0, edge}).y : view.toPixels({0.0, -edge}).y - ph;
-    }
-    h.panel = {c.x - pw / 2.0, top, pw, ph};
+    h.panel = {c.x - pw / 2.0, c.y - ph / 2.0, pw, ph};
+    if (strip) h.panel.top = stripTop(view, h.panel, keep_clear);
     const double bw = 0.5 * s, bh = 0.085 * s, gap = 0.08 * s;
     const double by = h.panel.top + ph - bh - 0.04 * s;
     h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
     h.button_right = {c.x + gap / 2.0, by, bw, bh};
     return h;
+  }
+
+  /// The character size of a ball's number on a HUD icon of radius `r` (px): as the table's
+  /// balls have it, but small enough that a number `width_per_size` px wide per px of size
+  /// stays inside the number disc (two digits are wider than the disc at the table's size).
+  static double iconNumberSize(double r, double width_per_size) {
+    const double disc = 2.0 * r * 0.5 * 0.9;  // the disc's diameter (half the ball's), less an edge
+    return std::min(0.85 * r, disc / std::max(width_per_size, 1e-9));
+  }
+
+  /// How many of `points` (m) a panel hides.
+  static int hiddenBy(const ViewTransform& view, const PixelRect& panel,
+                      const std::vector<Vec2>& points) {
+    const double reach = view.px(kKeepClearReach);
+    int n = 0;
+    for (const Vec2& p : points) {
+      const Vec2 c = view.toPixels(p);
+      if (c.x + reach > panel.left && c.x - reach < panel.left + panel.width &&
+          c.y + reach > panel.top && c.y - reach < panel.top + panel.height) {
+        ++n;
+      }
+    }
+    return n;
+  }
+
+  /// The top of a strip that hides none of `keep` if it can: the places along the long
+  /// cushions first, then across the table from both sides, then over the HUD's bands.
+  static double stripTop(const ViewTransform& view, PixelRect panel,
+                         const std::vector<Vec2>& keep) {
+    const double edge = view.table().width / 2.0 - 0.04;
+    const double upper = view.toPixels({0.0, edge}).y;
+    const double lower = view.toPixels({0.0, -edge}).y - panel.height;
+    std::vector<double> tops;
+    constexpr int kSteps = 24;
+    for (int i = 0; i <= kSteps / 2; ++i) {
+      tops.push_back(upper + (lower - upper) * i / kSteps);
+      tops.push_back(lower - (lower - upper) * i / kSteps);
+    }
+    const PixelRect below = view.bottomBand();
+    tops.push_back(view.topBand().top);
+    tops.push_back(below.top + below.height - panel.height);
+    double best = tops.front();
+    int best_hidden = -1;
+    for (double top : tops) {
+      panel.top = top;
+      const int hidden = hiddenBy(view, panel, keep);
+      if (best_hidden < 0 || hidden < best_hidden) {
+        best = top;
+        best_hidden = hidden;
+      }
+      if (hidden == 0) break;
+    }
+    return best;
   }
 
   /// Where on the tilt ring a cue `elevation` (rad) above the table points from, as a unit

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "nineball/ball.hpp"
+#include "render/palette.hpp"
 
 namespace nineball::render {
 namespace {
@@ -17,6 +18,8 @@ const sf::Color kWin(130, 230, 140);
 const sf::Color kPanel(16, 20, 24, 232);
 const sf::Color kButton(54, 92, 70);
 const sf::Color kGauge(60, 64, 70);
+const sf::Color kBallOnRing(235, 235, 225, 220);
+const sf::Color kNumberInk(20, 20, 20);
 // Text never shrinks below this many pixels: smaller is unreadable.
 constexpr double kMinTextSize = 7.0;
 
@@ -137,7 +140,11 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
     const PixelRect room{centre.left, band.top, mid - r * 1.6 - centre.left, band.height * 0.6};
     text(target, "ball on", {mid - r * 1.6, row1 - layout.text_px * 0.65}, layout.text_px, kText,
          room, Align::Right);
-    balls_.drawOne(target, hud.ball_on, {mid, row1}, r);
+    // A light ring: the black 8 would hardly show on the dark band.
+    batch_.clear();
+    batch_.ring({mid, row1}, r + 1.0, r + std::max(2.0, 0.16 * r), kBallOnRing);
+    batch_.draw(target);
+    drawBallIcon(target, hud.ball_on, {mid, row1}, r);
   }
   const PixelRect info{mid + r * 1.6, band.top, centre.left + centre.width - mid - r * 1.6,
                        band.height * 0.6};
@@ -156,6 +163,24 @@ int groupIndex(int ball) {
   return ball < 8 ? 0 : ball == 8 ? 1 : 2;
 }
 }  // namespace
+
+void HudPainter::drawBallIcon(sf::RenderTarget& target, int id, Vec2 centre, double r) {
+  balls_.drawOne(target, id, centre, r);
+  if (id < 10 || !looks_(id).numbered) return;  // one digit fits the disc as the balls draw it
+  batch_.clear();
+  batch_.circle(centre, r * kNumberDiscRadius, toSf(kNumberDisc));
+  batch_.draw(target);
+  constexpr unsigned kProbe = 100;
+  sf::Text number(std::to_string(id), fonts_.bold, kProbe);
+  const double per_size = number.getLocalBounds().width / kProbe;
+  number.setCharacterSize(
+      static_cast<unsigned>(std::max(1.0, std::floor(HudLayout::iconNumberSize(r, per_size)))));
+  const sf::FloatRect b = number.getLocalBounds();
+  number.setOrigin(b.left + b.width / 2.0f, b.top + b.height / 2.0f);
+  number.setPosition(toSf(centre));
+  number.setFillColor(kNumberInk);
+  target.draw(number);
+}
 
 void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const PixelRect& room,
                           double r) {
@@ -176,7 +201,7 @@ void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const P
   double x = room.left + (room.width - width * scale) / 2.0 + rr;
   const double cy = room.top + room.height * 0.62;
   auto ball = [&](int id, const char* where) {
-    balls_.drawOne(target, id, {x, cy}, rr);
+    drawBallIcon(target, id, {x, cy}, rr);
     drawn_.push_back({std::string(where) + " " + std::to_string(id),
                       {x - rr, cy - rr, 2.0 * rr, 2.0 * rr},
                       room});
@@ -238,7 +263,7 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
   std::snprintf(speed, sizeof speed, "%.1f m/s", hud.speed);
   text(target, std::string("power  ") + speed, {g.left, g.top - small * 1.5}, small, kText,
        gauge_room);
-  text(target, hud.push_out_declared ? "PUSH-OUT declared (P)" : "H help   Esc quit",
+  text(target, hud.push_out_declared ? "PUSH-OUT declared (P)" : hud.keys,
        {g.left, g.top + g.height + small * 0.3}, small * 0.9,
        hud.push_out_declared ? kAccent : kDim, gauge_room);
 

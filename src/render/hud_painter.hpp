@@ -26,7 +26,10 @@ class HudPainter {
  public:
   explicit HudPainter(const Fonts& fonts) : fonts_(fonts), balls_(fonts.bold) {}
   /// The set of balls its icons show.
-  void setLooks(BallLooks looks) { balls_.setLooks(looks); }
+  void setLooks(BallLooks looks) {
+    looks_ = looks;
+    balls_.setLooks(looks);
+  }
 
   void draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
   /// Every line of text and tray ball the last draw put on screen, for checks that nothing
@@ -46,10 +49,13 @@ class HudPainter {
                    const HudLayout& layout);
   void drawBottom(sf::RenderTarget& target, const HudState& hud, const HudLayout& layout);
   void drawOverlay(sf::RenderTarget& target, const HudState& hud, const HudLayout& layout);
+  /// One ball's icon, its number (two digits too) fitted inside its number disc.
+  void drawBallIcon(sf::RenderTarget& target, int id, Vec2 centre, double r);
   void drawTray(sf::RenderTarget& target, const HudState& hud, const PixelRect& room, double r);
 
   const Fonts& fonts_;
   BallPainter balls_;
+  BallLooks looks_ = poolBallLook;
   TriangleBatch batch_;
   std::vector<DrawnText> drawn_;
 };

@@ -43,8 +43,9 @@ struct HudState {
   double max_elevation_deg = 60.0;
   bool push_out_declared = false;
   Overlay overlay = Overlay::None;
-  /// A point on the table (m) a dialog must not cover: the cue ball, when the choice is about it.
-  std::optional<Vec2> keep_clear;
+  /// The points on the table (m) a dialog should not cover: the balls the choice is about.
+  std::vector<Vec2> keep_clear;
+  std::string keys = "H help   Esc quit";  ///< the keys named under the power gauge
   std::string overlay_title;
   std::vector<std::string> overlay_lines;
   std::string button_left;   ///< empty: no button

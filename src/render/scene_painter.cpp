@@ -4,6 +4,7 @@
 #include <SFML/Graphics/Text.hpp>
 #include <cmath>
 
+#include "render/guide_foul_painter.hpp"
 #include "render/table_finish.hpp"
 
 namespace nineball::render {
@@ -46,6 +47,9 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   // The guide goes under the balls: the balls hide its ends, the lines stay visible.
   if (frame.guide) {
     cue_painter_.drawGuide(target, view_, *frame.guide, frame.ball_radius, frame.guide_scale);
+    if (!frame.guide_foul.empty()) {
+      drawGuideFoul(target, view_, *frame.guide, frame.ball_radius, frame.guide_foul, fonts_);
+    }
   }
   if (frame.bank) {
     cue_painter_.drawGuide(target, view_, *frame.bank, frame.ball_radius, frame.guide_scale, true);

@@ -47,6 +47,9 @@ struct Frame {
   std::optional<AimGuide> guide;
   double guide_scale = 1.0;      ///< the guide's lines after the contact, times normal
   std::optional<AimGuide> bank;  ///< the path on from the first cushion (a setting)
+  /// The guide's first ball would be a foul: why, in a few words ("foul: the 3 is not the ball
+  /// on"); the guide is then drawn red with this beside its ghost ball. Empty: no foul.
+  std::string guide_foul;
   std::optional<CuePose> cue;
   std::optional<CueGhost> ghost;
   std::optional<CallMark> call;    ///< the shot being called (games with calls)

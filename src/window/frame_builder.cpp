@@ -5,6 +5,7 @@
 #include "app/opponent.hpp"
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
+#include "nineball/seat.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "window/game_help.hpp"
 
@@ -13,28 +14,39 @@ namespace {
 
 using render::Overlay;
 
-const std::vector<std::string> kHelpLines = {
-    "Mouse: point where to aim; press, drag back and let go to strike",
-    "  (the further you drag, the harder the shot; right click cancels)",
-    "Left / Right: turn the aim (Shift: finer)    Up / Down: power",
-    "Space: shoot    E / Q: raise / lower the cue",
-    "T / B / L / R: top / back / left / right spin",
-    "Click the cue-ball icon for side spin, the arc by it to tilt the cue (C: reset)",
-    "The aim line is the ghost ball's: throw, squirt and swerve bend the real paths",
-    "Ball in hand: drag the cue ball, or move it with W A S D",
-    "P: declare a push-out when offered; then S: play or P: pass",
-    "V: replay the last shot (Shift+V: slowed)    R: rematch after a rack",
-    "M: mute    F1: full screen    F2: settings    F12: screenshot",
-};
+// The leave dialog's line: what becomes of the rack in play (or the practice table).
+std::string whatLeavingKeeps(const GameSession& session, const UiState& ui) {
+  if (session.practice()) return "The practice table is not kept.";
+  if (session.rackTurns().empty() || session.phase() == Phase::GameOver) {
+    return "No rack in play to lose.";
+  }
+  if (ui.rack_kept) return "The rack is saved: \"Resume rack\" in the menu plays on.";
+  return "The rack in play will be lost.";
+}
 
-void fillDialog(render::HudState& hud, const GameSession& session, Overlay overlay,
+// Nine-ball's "foul: the 3 is not the ball on", or nothing when the guide's first ball may be hit.
+std::string guideFoul(const GameSession& session, const AimGuide& guide) {
+  if (session.practice() || session.pushOutDeclared() || guide.target != AimTarget::Ball) return "";
+  const std::vector<int> legal = session.match().rack().legalFirstBalls();
+  if (legal.empty() || std::find(legal.begin(), legal.end(), guide.ball) != legal.end()) return "";
+  const std::string ball = "foul: the " + std::to_string(guide.ball);
+  return legal.size() == 1 ? ball + " is not the ball on" : ball + " may not be hit first";
+}
+
+void fillDialog(render::HudState& hud, const GameSession& session, const UiState& ui,
                 const ComputerPlayer& computer) {
+  const Overlay overlay = activeOverlay(session, ui);
   const bool computer_decides = computer.controls(session);
   hud.overlay = overlay;
   switch (overlay) {
     case Overlay::Help: {
       hud.overlay_title = "How to play";
-      hud.overlay_lines = kHelpLines;
+      hud.overlay_lines = controlHelpLines();
+      if (session.practice()) {
+        hud.overlay_lines.push_back(
+            "Practice: Shift+drag moves a ball; 1-9 add / remove; U undo (shots and moves), Y "
+            "retry");
+      }
       const std::optional<ai::Level> level = computerLevel(computer.opponent());
       hud.overlay_lines.insert(hud.overlay_lines.end(),
                                "O: 2 players, or vs computer easy / medium / hard (now: " +
@@ -48,9 +60,9 @@ void fillDialog(render::HudState& hud, const GameSession& session, Overlay overl
       break;
     }
     case Overlay::ConfirmQuit:
-      hud.overlay_title = "Quit nineball?";
-      hud.overlay_lines = {"The rack in play will be lost."};
-      hud.button_left = "Quit (Y)";
+      hud.overlay_title = ui.leave_to_menu ? "Back to the menu?" : "Quit nineball?";
+      hud.overlay_lines = {whatLeavingKeeps(session, ui)};
+      hud.button_left = ui.leave_to_menu ? "Menu (Y)" : "Quit (Y)";
       hud.button_right = "Keep playing (N)";
       break;
     case Overlay::PushOutChoice: {
@@ -126,8 +138,21 @@ render::CuePose stroke(const GameSession::Strike& s, const GameSession& session)
 
 }  // namespace
 
-std::optional<Vec2> dialogKeepClear(const GameSession& session) {
-  return session.cuePosition();
+std::vector<Vec2> dialogKeepClear(const GameSession& session) {
+  std::vector<Vec2> keep;
+  for (const BallState& b : session.ballsToDraw()) {
+    if (!b.pocket) keep.push_back(b.pos);
+  }
+  return keep;
+}
+
+bool leavingLosesNothing(const GameSession& session, const UiState& ui) {
+  if (!ui.leave_to_menu || session.practice()) return false;
+  return ui.rack_kept || session.rackTurns().empty() || session.phase() == Phase::GameOver;
+}
+
+std::string opponentModeLabel(const Seat& opponent) {
+  return app::opponentLabel(opponent) + "   O: opponent";
 }
 
 Overlay activeOverlay(const GameSession& session, const UiState& ui) {
@@ -160,6 +185,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   } else if (aiming && ui.drag != Drag::Cue && ui.drag != Drag::Ball) {
     f.guide = session.aimGuide();
+    f.guide_foul = guideFoul(session, *f.guide);
     // Drawn back as far as the power set asks (a drag sets both at once).
     f.cue = cuePose(session.heading(), std::max(ui.pull, addressPull(session.power())),
                     session.tip().x);
@@ -215,10 +241,10 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
       panel.detail = "racks " + std::to_string(panel.racks) + "   " + groupLabel(rack.groups(), p);
     }
   }
-  hud.mode = app::opponentLabel(computer.opponent()) + "   O: opponent";
+  hud.mode = opponentModeLabel(computer.opponent());
   if (session.practice()) {
-    const std::size_t shots = session.practiceShots();
-    hud.players[0].detail = std::to_string(shots) + (shots == 1 ? " shot" : " shots") + " to undo";
+    const std::size_t steps = session.practiceSteps();
+    hud.players[0].detail = std::to_string(steps) + (steps == 1 ? " step" : " steps") + " to undo";
     hud.ball_on = 0;
     hud.rules = "Practice: no rules";
     hud.mode = "U undo   Y retry   1-9 add/remove";
@@ -233,7 +259,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.max_elevation_deg = GameSession::kMaxElevationDeg;
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
-  fillDialog(hud, session, activeOverlay(session, ui), computer);
+  hud.keys = ui.leave_to_menu ? "H help   Esc menu" : "H help   Esc quit";
+  fillDialog(hud, session, ui, computer);
   hud.keep_clear = dialogKeepClear(session);
   return f;
 }

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "render/scene_painter.hpp"
 #include "window/computer_player.hpp"
@@ -14,9 +16,16 @@ namespace nineball::window {
 render::Frame buildFrame(const GameSession& session, const UiState& ui,
                          const ComputerPlayer& computer);
 
-/// The point on the table a dialog must leave in sight: the cue ball, which the push-out choice
-/// is about and the next rack's break starts near.
-std::optional<Vec2> dialogKeepClear(const GameSession& session);
+/// The points on the table a dialog must leave in sight: every ball on it, since the push-out
+/// choice is about the whole position (and the rack's end shows how it ended).
+std::vector<Vec2> dialogKeepClear(const GameSession& session);
+
+/// True when Esc may leave for the menu without asking: the rack in play is saved for
+/// "Resume rack", or there is none to lose.
+bool leavingLosesNothing(const GameSession& session, const UiState& ui);
+
+/// "vs computer (medium)   O: opponent": who plays, as the HUD's top band says it.
+std::string opponentModeLabel(const Seat& opponent);
 
 /// The dialog on screen, if any (the same rule the input uses to route keys and clicks).
 render::Overlay activeOverlay(const GameSession& session, const UiState& ui);

@@ -7,6 +7,9 @@
 
 namespace nineball::window {
 
+/// The help screen's first lines: the mouse and the keys.
+std::vector<std::string> controlHelpLines();
+
 /// The help screen's last lines: the game's rules in brief, and how to call a shot.
 std::vector<std::string> gameHelpLines(rules::Game game);
 

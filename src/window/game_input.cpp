@@ -13,8 +13,11 @@ namespace {
 using Key = sf::Keyboard::Key;
 using render::Overlay;
 
-// One tap of an arrow turns the aim this far (deg) or changes the speed this much (m/s).
+// One tap of an arrow turns the aim this far (deg) or changes the speed this much (m/s); with
+// Ctrl or Alt, and a notch of the mouse wheel, turn it a tenth as far: a thin cut at the far
+// end of the table needs aims a hundredth of a degree apart.
 constexpr double kAimNudgeDeg = 0.1;
+constexpr double kAimFineNudgeDeg = 0.01;
 constexpr double kSpeedNudge = 0.1;
 // Held keys repeat after this delay (s), slowly for a while, then fast.
 constexpr double kHoldDelay = 0.3;
@@ -22,6 +25,7 @@ constexpr double kSlowPhase = 1.0;
 constexpr double kAimSlowDegPerS = 4.0;
 constexpr double kAimFastDegPerS = 30.0;
 constexpr double kAimFineDegPerS = 1.0;
+constexpr double kAimFinestDegPerS = 0.1;
 constexpr double kSpeedPerS = 3.0;
 constexpr double kSpinStep = 0.1;
 // Degrees of cue elevation per E / Q press: a few presses reach a swerve, twelve a masse.
@@ -31,6 +35,14 @@ constexpr double kCueMoveSpeed = 0.4;
 constexpr double kCueMoveStep = 0.002;
 // A power drag shorter than this (m) is a click: it aims, it does not shoot.
 constexpr double kMinPull = 0.01;
+// The pointer this close to the cue ball (in ball radii) does not aim: the direction from the
+// ball to a point on it is noise, and would swing the cue round (after a drop, say).
+constexpr double kAimDeadZone = 2.0;
+// An aim held this long (s) is the one a call click keeps: moving the pointer to a pocket
+// to call it swings the cue on the way.
+constexpr double kAimSettle = 0.25;
+// Fast-forward runs the physics this many times as fast (same steps, more per frame).
+constexpr double kFastForward = 4.0;
 
 bool inside(const render::PixelRect& r, Vec2 p) {
   return r.contains(p);
@@ -48,21 +60,37 @@ bool GameInput::dialogOpen() const {
   return activeOverlay(session_, ui_) != Overlay::None;
 }
 
+void GameInput::trackModifiers(const sf::Event::KeyEvent& key, bool pressed) {
+  // The event of a modifier key itself may not carry its own state yet.
+  const bool shift_key = key.code == Key::LShift || key.code == Key::RShift;
+  const bool fine_key = key.code == Key::LControl || key.code == Key::RControl ||
+                        key.code == Key::LAlt || key.code == Key::RAlt;
+  shift_ = shift_key ? pressed : key.shift;
+  fine_ = fine_key ? pressed : key.control || key.alt;
+}
+
 void GameInput::handle(const sf::Event& event, const render::ViewTransform& view) {
   switch (event.type) {
     case sf::Event::KeyPressed:
-      shift_ = event.key.shift;
+      trackModifiers(event.key, true);
       if (held_.count(event.key.code) == 0) {
         held_[event.key.code] = 0.0;
         keyPressed(event.key);
       }
       break;
     case sf::Event::KeyReleased:
-      shift_ = event.key.shift;
+      trackModifiers(event.key, false);
       held_.erase(event.key.code);
       break;
     case sf::Event::LostFocus:
       held_.clear();
+      shift_ = fine_ = false;
+      break;
+    case sf::Event::MouseWheelScrolled:
+      if (event.mouseWheelScroll.wheel == sf::Mouse::VerticalWheel && mayAim()) {
+        session_.setHeading(session_.heading() +
+                            degToRad(kAimFineNudgeDeg * event.mouseWheelScroll.delta));
+      }
       break;
     case sf::Event::MouseButtonPressed: {
       const Vec2 px{static_cast<double>(event.mouseButton.x),
@@ -97,7 +125,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     return;
   }
   if (overlay == Overlay::ConfirmQuit) {
-    if (key.code == Key::Y || key.code == Key::Enter) requests_.quit = true;
+    if (key.code == Key::Y || key.code == Key::Enter) leave();
     if (key.code == Key::N || key.code == Key::Escape) ui_.confirm_quit = false;
     return;
   }
@@ -108,6 +136,8 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
       session_.setSpeed(ui_.speed_before_drag);
       ui_.drag = Drag::None;
       ui_.pull = 0.0;
+    } else if (leavingLosesNothing(session_, ui_)) {
+      requests_.menu = true;
     } else {
       ui_.confirm_quit = true;
     }
@@ -143,11 +173,11 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
       session_.shoot();
       break;
     case Key::Left:
-      session_.setHeading(session_.heading() + degToRad(kAimNudgeDeg));
+    case Key::Right: {
+      const double nudge = fine_ ? kAimFineNudgeDeg : kAimNudgeDeg;
+      session_.setHeading(session_.heading() + degToRad(key.code == Key::Left ? nudge : -nudge));
       break;
-    case Key::Right:
-      session_.setHeading(session_.heading() - degToRad(kAimNudgeDeg));
-      break;
+    }
     case Key::Up:
       session_.setSpeed(session_.speed() + kSpeedNudge);
       break;
@@ -221,8 +251,25 @@ void GameInput::switchOpponent() {
                      : "Two players: Player 2 plays at this computer too (O changes it).");
 }
 
+bool GameInput::mayAim() const {
+  return session_.phase() == Phase::Aiming && !session_.replaying() && !dialogOpen() &&
+         !computer_.controls(session_) && ui_.drag == Drag::None;
+}
+
+void GameInput::followSettledAim(double seconds) {
+  if (session_.heading() != last_heading_) {
+    last_heading_ = session_.heading();
+    heading_still_for_ = 0.0;
+    return;
+  }
+  heading_still_for_ += seconds;
+  if (heading_still_for_ >= kAimSettle) settled_heading_ = last_heading_;
+}
+
 void GameInput::update(double seconds) {
   for (auto& [key, held] : held_) held += seconds;
+  followSettledAim(seconds);
+  session_.setPlayRate(held_.count(Key::F) != 0 ? kFastForward : 1.0);
   if (session_.replaying() || dialogOpen() || computer_.controls(session_)) return;
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   auto heldFor = [&](Key k) {
@@ -233,8 +280,9 @@ void GameInput::update(double seconds) {
   for (auto [key, sign] : {std::pair{Key::Left, 1.0}, {Key::Right, -1.0}}) {
     const double h = heldFor(key);
     if (h < 0.0) continue;
-    const double rate = shift_ ? (h < kHoldDelay ? 0.0 : kAimFineDegPerS)
-                               : heldRate(h, kAimSlowDegPerS, kAimFastDegPerS);
+    const double fine_rate = fine_ ? kAimFinestDegPerS : kAimFineDegPerS;
+    const double rate = shift_ || fine_ ? (h < kHoldDelay ? 0.0 : fine_rate)
+                                        : heldRate(h, kAimSlowDegPerS, kAimFastDegPerS);
     turn_deg += sign * rate * seconds;
   }
   if (turn_deg != 0.0) session_.setHeading(session_.heading() + degToRad(turn_deg));
@@ -271,11 +319,20 @@ void GameInput::setTipFromIcon(Vec2 px, const render::ViewTransform& view) {
   session_.setTip({d.x, -d.y});
 }
 
+void GameInput::leave() {
+  if (ui_.leave_to_menu) {
+    requests_.menu = true;
+  } else {
+    requests_.quit = true;
+  }
+  ui_.confirm_quit = false;
+}
+
 void GameInput::clickButton(bool left) {
   switch (activeOverlay(session_, ui_)) {
     case Overlay::ConfirmQuit:
       if (left) {
-        requests_.quit = true;
+        leave();
       } else {
         ui_.confirm_quit = false;
       }
@@ -327,7 +384,9 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   }
   const Vec2 m = view.toWorld(px);
   const double r = session_.match().world().physics().ball_radius;
-  if (session_.practice()) {
+  // Practice moves a ball only with Shift held: a plain press on a ball aims and shoots, as
+  // the pointer on the ball aimed at is where a player presses.
+  if (session_.practice() && shift_) {
     if (const auto id = session_.ballAt(m)) {
       ui_.drag = Drag::Ball;
       ui_.ghost = render::CueGhost{m, true, "", *id};
@@ -339,8 +398,6 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
     ui_.ghost = render::CueGhost{session_.cuePosition(), true, ""};
     return;
   }
-  const double hy = view.table().width / 2.0 + render::SceneLayout::kRail;
-  if (std::abs(m.y) > hy) return;  // a click in the HUD bands does not shoot
   ui_.drag = Drag::Power;
   ui_.drag_anchor = m;
   ui_.pull = 0.0;
@@ -379,8 +436,16 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
       break;
   }
   if (session_.phase() != Phase::Aiming || dialogOpen() || computer_.controls(session_)) return;
+  if (session_.callPocketAt(m)) {
+    // The pointer went to a pocket to call it, not to aim there.
+    if (settled_heading_) session_.setHeading(*settled_heading_);
+    return;
+  }
   const Vec2 cue = session_.cuePosition();
-  if (length(m - cue) > 1e-6) session_.setHeading(std::atan2(m.y - cue.y, m.x - cue.x));
+  const double r = session_.match().world().physics().ball_radius;
+  if (length(m - cue) > kAimDeadZone * r) {
+    session_.setHeading(std::atan2(m.y - cue.y, m.x - cue.x));
+  }
 }
 
 void GameInput::mouseReleased() {
@@ -392,7 +457,8 @@ void GameInput::mouseReleased() {
     return;
   }
   if (drag == Drag::Cue) {
-    if (ui_.ghost) session_.placeCue(ui_.ghost->pos);
+    // From its new spot the cue looks at the ball on, not wherever the pointer lies on it.
+    if (ui_.ghost && session_.placeCue(ui_.ghost->pos)) session_.aimAtBallOn();
     ui_.ghost.reset();
   } else if (drag == Drag::Ball) {
     if (ui_.ghost) session_.moveBall(ui_.ghost->id, ui_.ghost->pos);

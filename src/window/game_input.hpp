@@ -2,6 +2,7 @@
 
 #include <SFML/Window/Event.hpp>
 #include <map>
+#include <optional>
 
 #include "render/view_transform.hpp"
 #include "window/computer_player.hpp"
@@ -13,6 +14,7 @@ namespace nineball::window {
 /// What the window itself must do after an input.
 struct WindowRequests {
   bool quit = false;
+  bool menu = false;  ///< back to the start menu (the rack kept as on quitting)
   bool toggle_fullscreen = false;
   bool screenshot = false;
 };
@@ -36,6 +38,13 @@ class GameInput {
 
  private:
   void keyPressed(const sf::Event::KeyEvent& key);
+  void trackModifiers(const sf::Event::KeyEvent& key, bool pressed);
+  /// The player to move may aim now (no dialog, drag, replay or computer in the way).
+  bool mayAim() const;
+  /// Keeps the last aim held still for a moment: the one a click on a pocket keeps.
+  void followSettledAim(double seconds);
+  /// Leaves the game as the quit dialog's Yes does: to the menu when there is one.
+  void leave();
   void mousePressed(Vec2 px, const render::ViewTransform& view);
   void mouseMoved(Vec2 px, const render::ViewTransform& view);
   void mouseReleased();
@@ -53,6 +62,10 @@ class GameInput {
   WindowRequests requests_;
   std::map<sf::Keyboard::Key, double> held_;  // key -> seconds held
   bool shift_ = false;
+  bool fine_ = false;  // Ctrl or Alt held: the finest aim
+  double last_heading_ = 0.0;
+  double heading_still_for_ = 0.0;
+  std::optional<double> settled_heading_;
 };
 
 }  // namespace nineball::window

@@ -123,6 +123,8 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
 
 std::optional<int> GameLoop::setUp(const GameStart& start) {
   session_.setTurnObserver(count_);
+  ui_.leave_to_menu = show_menu_;
+  ui_.rack_kept = keep_rack_;
   if (!options_.practice) {
     computer_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
   }
@@ -172,12 +174,7 @@ std::optional<int> GameLoop::openDisplay() {
 
 void GameLoop::readSettings(const GameStart& start) {
   settings_ = show_menu_ ? loadSettings(settingsPath()) : Settings{};
-  // An opponent or rules asked for on the command line preset the menu.
-  if (options_.opponent != "human") {
-    settings_.last.opponent = seatFromName(options_.opponent).value_or(HumanSeat{});
-  }
-  if (options_.rules != "wpa") settings_.last.rules = start.setup.rules;
-  if (options_.game != defaultGame().name) settings_.last.game = start.setup.game;
+  presetFromCommandLine(settings_, options_, start.setup);
 }
 
 void GameLoop::openGameWindow() {
@@ -191,9 +188,13 @@ void GameLoop::openGameWindow() {
 }
 
 // Nothing when the game goes on to its frames.
+StartMenuContext GameLoop::menuContext() {
+  return {*window_, *painter_, *menu_painter_,
+          [this] { return buildFrame(session_, ui_, computer_); }, options_.mute};
+}
+
 std::optional<int> GameLoop::startMenu() {
-  StartMenuContext menu{*window_, *painter_, *menu_painter_,
-                        [this] { return buildFrame(session_, ui_, computer_); }};
+  StartMenuContext menu = menuContext();
   if (show_menu_ && capture_) {
     drawStartMenu(menu, settings_);
     std::string why;
@@ -280,6 +281,9 @@ void GameLoop::handleEvent(const sf::Event& event) {
     handleSettingsMenuEvent(event);
   } else if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
     settings_menu_ = MenuModel::settingsOnly(settings_);
+    settings_menu_->setMutedByOption(options_.mute);
+  } else if (keyPressed(event, sf::Keyboard::M) && options_.mute) {
+    session_.say("No sound this run: the game was started with --mute.");
   } else if (keyPressed(event, sf::Keyboard::M)) {
     settings_.muted = !settings_.muted;
     applySound();
@@ -287,6 +291,12 @@ void GameLoop::handleEvent(const sf::Event& event) {
     session_.say(settings_.muted ? "Sound off (M turns it on)." : "Sound on (M mutes it).");
   } else {
     input_.handle(event, painter_->view());
+    // The menu offers the opponent last played, O's change included.
+    if (keyPressed(event, sf::Keyboard::O) && !session_.practice() &&
+        !(settings_.last.opponent == computer_.opponent())) {
+      settings_.last.opponent = computer_.opponent();
+      saveSettingsNow();
+    }
   }
 }
 
@@ -400,6 +410,10 @@ void GameLoop::present(bool rolling) {
 void GameLoop::answerRequests() {
   WindowRequests& requests = input_.requests();
   if (requests.quit) window_->close();
+  if (requests.menu) {
+    requests.menu = false;
+    backToMenu();
+  }
   if (requests.toggle_fullscreen) {
     requests.toggle_fullscreen = false;
     fullscreen_ = !fullscreen_;
@@ -417,21 +431,43 @@ void GameLoop::capFrameRate() {
   }
 }
 
+void GameLoop::saveRackInPlay() {
+  if (!keep_rack_ || session_.practice()) return;
+  // A rack in play is kept for the next start (a finished one was forgotten as it ended;
+  // a rack not yet broken leaves an older save alone).
+  if (session_.phase() == Phase::GameOver || session_.rackTurns().empty()) return;
+  const std::string path = rackSavePath();
+  std::string why;
+  if (saveRack(saveOf(session_, computer_.opponent()), path, why)) {
+    logger("game")->info("rack saved to {}", path);
+  } else {
+    logger("game")->warn("rack not saved: {}", why);
+  }
+}
+
+// Esc: the rack kept as on quitting, then the start menu (its Resume picks the rack up).
+void GameLoop::backToMenu() {
+  saveRackInPlay();
+  const bool leave_to_menu = ui_.leave_to_menu, rack_kept = ui_.rack_kept;
+  ui_ = UiState{};
+  ui_.leave_to_menu = leave_to_menu;
+  ui_.rack_kept = rack_kept;
+  stats_ = SessionStats{};
+  forgotten_rack_ = 0;
+  StartMenuContext menu = menuContext();
+  if (!runStartMenu(menu, session_, computer_, settings_, count_)) {
+    window_->close();
+    return;
+  }
+  applySound();
+  frame_clock_.restart();
+  display_clock_.restart();
+  since_draw_.restart();
+}
+
 int GameLoop::finish() {
   logFrameRate(moving_, frame_);
-  if (keep_rack_ && !session_.practice()) {
-    // A rack in play is kept for the next start (a finished one was forgotten as it ended;
-    // a rack not yet broken leaves an older save alone).
-    const std::string path = rackSavePath();
-    if (session_.phase() != Phase::GameOver && !session_.rackTurns().empty()) {
-      std::string why;
-      if (saveRack(saveOf(session_, computer_.opponent()), path, why)) {
-        logger("game")->info("rack saved to {}", path);
-      } else {
-        logger("game")->warn("rack not saved: {}", why);
-      }
-    }
-  }
+  saveRackInPlay();
   return 0;
 }
 

@@ -22,6 +22,7 @@
 #include "window/menu.hpp"
 #include "window/session_stats.hpp"
 #include "window/settings.hpp"
+#include "window/start_menu.hpp"
 #include "window/ui_state.hpp"
 
 namespace nineball::window {
@@ -50,6 +51,7 @@ class GameLoop {
   std::optional<int> openDisplay();
   void readSettings(const GameStart& start);
   void openGameWindow();
+  StartMenuContext menuContext();
   std::optional<int> startMenu();
   void prepareFrames(const GameStart& start);
 
@@ -65,6 +67,8 @@ class GameLoop {
   void present(bool rolling);
   void answerRequests();
   void capFrameRate();
+  void saveRackInPlay();
+  void backToMenu();
   int finish();
 
   void applySound();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <utility>
 
 #include "common/log.hpp"
 #include "nineball/games.hpp"
@@ -100,7 +101,7 @@ void GameSession::toggleBall(int id, Vec2 near) {
         " puts it back).");
   } else if (const auto spot = practice_->freeSpotNear(id, near)) {
     practice_->place(id, *spot);
-    say("The " + std::to_string(id) + " is on the table: drag it where you want it.");
+    say("The " + std::to_string(id) + " is on the table: Shift+drag it where you want it.");
   } else {
     say("No room for the " + std::to_string(id) + ".", render::Tone::Warning);
     return;
@@ -118,14 +119,19 @@ void GameSession::restorePracticeShot(const PracticeShot& shot) {
 
 void GameSession::undoShot() {
   if (!practice_ || phase_ != Phase::Aiming) return;
-  const auto shot = practice_->undo();
-  if (!shot) {
-    say("Nothing to undo: no shot played yet.", render::Tone::Warning);
+  const auto step = practice_->undo();
+  if (!step) {
+    say("Nothing to undo: no shot played or ball moved yet.", render::Tone::Warning);
     return;
   }
-  restorePracticeShot(*shot);
-  say("Back to before the last shot (" + std::to_string(practice_->shotsRemembered()) +
-      " more to undo).");
+  const std::string more = " (" + std::to_string(practice_->stepsRemembered()) + " more to undo).";
+  if (!step->shot) {
+    rebuildPractice();
+    say("The last ball moved is back where it was" + more);
+    return;
+  }
+  restorePracticeShot(step->before);
+  say("Back to before the last shot" + more);
 }
 
 void GameSession::retryShot() {
@@ -206,15 +212,25 @@ Vec2 GameSession::cuePosition() const {
 
 std::optional<std::string> GameSession::placementProblem(Vec2 pos) const {
   if (!cueInHand()) return std::string("the cue ball is not in hand");
-  return match_->cuePlacementProblem(pos);
+  const auto problem = match_->cuePlacementProblem(pos);
+  // The rules give the head string as a coordinate; a player knows it as a line on the cloth.
+  if (problem && problem->find("head string") != std::string::npos) {
+    return std::string(
+        "on the break it goes behind the head string, the line through the second diamonds");
+  }
+  return problem;
 }
 
 bool GameSession::placeCue(Vec2 pos) {
   if (auto problem = placementProblem(pos)) {
     say("The cue ball cannot go there: " + *problem + ".", render::Tone::Warning);
+    placement_refused_ = true;
     return false;
   }
   cue_spot_ = pos;
+  // A refusal is out of date once the ball stands somewhere it may.
+  if (placement_refused_) say("");
+  placement_refused_ = false;
   return true;
 }
 
@@ -356,6 +372,7 @@ bool GameSession::shoot(const TurnInput& given) {
     if (b.id == kCueBall) strike_from_ = b.pos;
   }
   message_.clear();
+  strike_ = audio::cueStrike(turn.shot.speed);
   return true;
 }
 
@@ -373,11 +390,15 @@ std::optional<rules::Call> GameSession::call() const {
   return rules::Call{callBall(), *call_pocket_};
 }
 
+std::optional<PocketId> GameSession::callPocketAt(Vec2 pos) const {
+  if (!callRequired()) return std::nullopt;
+  const Engine& w = match_->world();
+  return pocketNear(w.table(), pos, 3.0 * w.physics().ball_radius);
+}
+
 bool GameSession::clickCall(Vec2 pos) {
   if (!callRequired()) return false;
-  const Engine& w = match_->world();
-  const double r = w.physics().ball_radius;
-  if (const auto pocket = pocketNear(w.table(), pos, 3.0 * r)) {
+  if (const auto pocket = callPocketAt(pos)) {
     call_pocket_ = pocket;
     say("Called: the " + std::to_string(callBall()) + " in the " + pocketName(*pocket) +
         " pocket.");
@@ -439,10 +460,13 @@ void GameSession::stopReplay() {
   replay_.reset();
 }
 
-std::vector<audio::Impact> GameSession::advance(double seconds) {
+std::vector<audio::Impact> GameSession::advance(double frame_seconds) {
+  const double seconds = frame_seconds * play_rate_;
   std::vector<audio::Impact> impacts;
+  // The strike is heard with the first frame of the shot.
+  if (strike_) impacts.push_back(*std::exchange(strike_, std::nullopt));
   if (replay_) {
-    impacts = replay_->advance(seconds);
+    for (const audio::Impact& i : replay_->advance(seconds)) impacts.push_back(i);
     if (replay_->finished()) replay_.reset();
     return impacts;
   }
@@ -472,8 +496,7 @@ void GameSession::finishPracticeShot() {
   }
   const bool cue_back = practice_->settle(after);
   rebuildPractice();
-  std::string text = down.empty() ? "Nothing down." : ballList(down) + " down.";
-  text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  std::string text = down.empty() ? "Nothing down." : sentence(ballList(down)) + " down.";
   if (cue_back) text += " The cue ball dropped: it is back where it was struck from.";
   say(text + " U: undo, Y: retry.", cue_back ? render::Tone::Foul : render::Tone::Info);
 }
@@ -489,7 +512,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   const auto& events = match_->world().events();
   const rules::ShotSummary summary = play::summarize(events);
   TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
-                               seatName(seatOf(record.verdict.next)), groups_at_shot_);
+                               seatName(seatOf(rules::other(record.shooter))), groups_at_shot_);
   const bool miscue = record.kind != TurnInput::Kind::Decision &&
                       std::any_of(events.begin(), events.end(),
                                   [](const Event& e) { return e.type == EventType::Miscue; });
@@ -583,7 +606,8 @@ std::string GameSession::status() const {
   if (practice_) {
     return phase_ == Phase::Rolling
                ? "Practice shot..."
-               : "Practice: drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as ever";
+               : "Practice: Shift+drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as "
+                 "ever";
   }
   switch (phase_) {
     case Phase::Rolling:
@@ -621,6 +645,7 @@ std::string GameSession::status() const {
 void GameSession::say(const std::string& text, render::Tone tone) {
   message_ = text;
   tone_ = tone;
+  placement_refused_ = false;
 }
 
 }  // namespace nineball::window

@@ -48,8 +48,8 @@ class GameSession {
   /// Practice mode: no rules and no turns; any ball placed anywhere, added or taken away; the
   /// last shot undone or retried.
   bool practice() const { return practice_ != nullptr; }
-  /// Practice: the shots played that undo can take back.
-  std::size_t practiceShots() const { return practice_ ? practice_->shotsRemembered() : 0; }
+  /// Practice: the steps (shots, balls moved by hand) that undo can take back.
+  std::size_t practiceSteps() const { return practice_ ? practice_->stepsRemembered() : 0; }
   /// The ball under a point on the table (practice: the balls that may be moved), or nothing.
   std::optional<int> ballAt(Vec2 pos) const;
   /// Why ball `id` may not stand at `pos` now, or nothing (practice).
@@ -59,9 +59,10 @@ class GameSession {
   /// Practice: takes ball `id` off the table, or puts it on (at `near`, or the nearest free
   /// spot to it).
   void toggleBall(int id, Vec2 near);
-  /// Practice: back to before the last shot, with its aim, power and spin.
+  /// Practice: back to before the last shot, with its aim, power and spin, or to before the
+  /// last ball moved, added or taken away by hand.
   void undoShot();
-  /// Practice: the last shot's position and cue again, to play it once more.
+  /// Practice: the last shot's position and cue again, to play it once more (after an undo too).
   void retryShot();
 
   const Match& match() const { return *match_; }
@@ -118,8 +119,11 @@ class GameSession {
   Vec2 cuePosition() const;
   /// Why the cue ball may not go there now, or nothing.
   std::optional<std::string> placementProblem(Vec2 pos) const;
-  /// Moves the cue ball in hand; false (and a message saying why) for an illegal spot.
+  /// Moves the cue ball in hand; false (and a message saying why) for an illegal spot. A
+  /// placement that succeeds clears the message of one refused before.
   bool placeCue(Vec2 pos);
+  /// Turns the aim at the ball on (a rack, a turn, a cue ball just dropped start this way).
+  void aimAtBallOn();
 
   /// The aim guide from the cue ball along the current heading.
   AimGuide aimGuide() const;
@@ -135,6 +139,8 @@ class GameSession {
   /// A click on the table while a call is due: picks the pocket near `pos`, or, where any ball may
   /// be called, the ball there. True when the click was taken as part of the call.
   bool clickCall(Vec2 pos);
+  /// The pocket a click at `pos` would call, while a call is due.
+  std::optional<PocketId> callPocketAt(Vec2 pos) const;
   /// Calls the obvious shot: the aim guide's object ball (when it may be called), else the
   /// ball on, into the pocket nearest its path.
   void callObvious();
@@ -166,8 +172,13 @@ class GameSession {
   /// The setup this rack began from (its seed and layout).
   const MatchSetup& rackSetup() const { return rack_setup_; }
 
-  /// Runs the physics for one frame's time in fixed steps; returns the sounds it made.
-  std::vector<audio::Impact> advance(double seconds);
+  /// Runs the physics for one frame's time in fixed steps (times the play rate); returns the
+  /// sounds it made.
+  std::vector<audio::Impact> advance(double frame_seconds);
+  /// Fast-forward: the physics runs `rate` times as fast, in the same steps (more of them a
+  /// frame), so the shot ends exactly as at normal speed. 1 is normal.
+  void setPlayRate(double rate) { play_rate_ = rate; }
+  double playRate() const { return play_rate_; }
   /// The balls where the frame should draw them: between the last two steps while rolling,
   /// the cue ball at its spot in hand otherwise.
   std::vector<BallState> ballsToDraw() const;
@@ -202,7 +213,6 @@ class GameSession {
   void restorePracticeShot(const PracticeShot& shot);
   void afterTurn(const TurnRecord& record, int ball_on_before);
   Vec2 freeCueSpot() const;
-  void aimAtBallOn();
 
   MatchSetup setup_;
   MatchSetup rack_setup_;
@@ -225,6 +235,9 @@ class GameSession {
   std::optional<PocketId> call_pocket_;  // the pocket called
   rules::Groups groups_at_shot_;         // the groups before the turn (its message)
   bool breaking_ = false;                // the shot rolling is the break
+  bool placement_refused_ = false;       // the message is a refused cue-ball placement
+  double play_rate_ = 1.0;
+  std::optional<audio::Impact> strike_;  // the cue's strike, heard with the next frame
   Vec2 strike_from_;  // where the cue ball stood when the rolling shot was struck
   FixedStepClock clock_;
   ShotSteps shot_;

@@ -103,6 +103,8 @@ bool MenuModel::enabled(Item item) const {
       return severalRules();
     case Item::Name2:
       return !computer_;  // the computer's seat is called "Computer"
+    case Item::Sound:
+      return !muted_by_option_;
     default:
       return true;
   }
@@ -161,7 +163,8 @@ MenuRow MenuModel::row(Item item) const {
       r = {Kind::Choice, "Volume", std::to_string(settings_.volume) + " %", true, false};
       break;
     case Item::Sound:
-      r = {Kind::Choice, "Sound (M)", settings_.muted ? "Muted" : "On", true, false};
+      r = {Kind::Choice, "Sound (M)", settings_.muted ? "Muted" : "On", r.enabled, false};
+      if (muted_by_option_) r.value = "Off this run (--mute)";
       break;
     case Item::Guide:
       r = {Kind::Choice, "Aim guide", guideLengthName(settings_.guide), true, false};

@@ -34,6 +34,8 @@ class MenuModel {
   MenuModel(const Settings& settings, std::optional<std::string> resume);
   /// The settings screen alone (from the game): Back or Esc closes it.
   static MenuModel settingsOnly(const Settings& settings);
+  /// --mute: the sound row says it is off for this run and cannot be changed.
+  void setMutedByOption(bool muted) { muted_by_option_ = muted; }
 
   void key(MenuKey k);
   /// A character typed (SFML's TextEntered), for the name being edited.
@@ -88,6 +90,7 @@ class MenuModel {
   Screen screen_ = Screen::Main;
   bool settings_only_ = false;
   bool computer_ = false;
+  bool muted_by_option_ = false;
   ai::Level level_ = ai::Level::Medium;
   int selected_ = 0;
   bool editing_ = false;

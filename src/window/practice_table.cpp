@@ -8,8 +8,8 @@ namespace {
 
 // Search step (m) for a free spot.
 constexpr double kSpotStep = 0.01;
-// A practice position keeps this many shots for undo; older ones are forgotten.
-constexpr std::size_t kMaxShots = 200;
+// A practice position keeps this many steps for undo; older ones are forgotten.
+constexpr std::size_t kMaxSteps = 200;
 
 }  // namespace
 
@@ -45,8 +45,22 @@ std::optional<std::string> PracticeTable::placementProblem(int id, Vec2 pos) con
   return std::nullopt;
 }
 
+void PracticeTable::recordMove() {
+  PracticeStep step;
+  step.before.layout = layout_;
+  steps_.push_back(std::move(step));
+  if (steps_.size() > kMaxSteps) steps_.erase(steps_.begin());
+}
+
+void PracticeTable::recordShot(PracticeShot shot) {
+  last_shot_ = shot;
+  steps_.push_back({std::move(shot), true});
+  if (steps_.size() > kMaxSteps) steps_.erase(steps_.begin());
+}
+
 bool PracticeTable::place(int id, Vec2 pos) {
   if (placementProblem(id, pos)) return false;
+  recordMove();
   for (BallState& b : layout_) {
     if (b.id == id) {
       b.pos = pos;
@@ -61,7 +75,8 @@ bool PracticeTable::place(int id, Vec2 pos) {
 }
 
 bool PracticeTable::remove(int id) {
-  if (id == kCueBall) return false;
+  if (id == kCueBall || !has(id)) return false;
+  recordMove();
   const auto before = layout_.size();
   layout_.erase(std::remove_if(layout_.begin(), layout_.end(),
                                [id](const BallState& b) { return b.id == id; }),
@@ -105,21 +120,20 @@ bool PracticeTable::settle(const std::vector<BallState>& after) {
       if (b.id == kCueBall) b.pos = freeSpotNear(kCueBall, cue_from).value_or(cue_from);
     }
   }
-  if (shots_.size() > kMaxShots) shots_.erase(shots_.begin());
   return cue_back;
 }
 
 std::optional<PracticeShot> PracticeTable::retry() {
-  if (shots_.empty()) return std::nullopt;
-  layout_ = shots_.back().layout;
-  return shots_.back();
+  if (!last_shot_) return std::nullopt;
+  layout_ = last_shot_->layout;
+  return last_shot_;
 }
 
-std::optional<PracticeShot> PracticeTable::undo() {
-  if (shots_.empty()) return std::nullopt;
-  PracticeShot last = shots_.back();
-  shots_.pop_back();
-  layout_ = last.layout;
+std::optional<PracticeStep> PracticeTable::undo() {
+  if (steps_.empty()) return std::nullopt;
+  PracticeStep last = steps_.back();
+  steps_.pop_back();
+  layout_ = last.before.layout;
   return last;
 }
 

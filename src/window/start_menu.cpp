@@ -2,6 +2,7 @@
 
 #include "common/log.hpp"
 #include "nineball/games.hpp"
+#include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/state_file.hpp"
@@ -14,11 +15,32 @@ std::optional<std::string> resumeLabel(const std::optional<SavedRack>& saved) {
   return describeSavedRack(*saved);
 }
 
-void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target) {
-  ctx.painter.draw(target, ctx.frame());
+void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target, const MenuModel& model) {
+  ctx.painter.draw(target, menuBackdrop(ctx.frame(), model));
+}
+
+MenuModel startModel(const StartMenuContext& ctx, const Settings& settings,
+                     const std::optional<SavedRack>& saved) {
+  MenuModel model(settings, resumeLabel(saved));
+  model.setMutedByOption(ctx.muted_by_option);
+  return model;
 }
 
 }  // namespace
+
+void presetFromCommandLine(Settings& settings, const app::GameOptions& options,
+                           const MatchSetup& setup) {
+  if (options.opponent_given) {
+    settings.last.opponent = seatFromName(options.opponent).value_or(HumanSeat{});
+  }
+  if (options.rules_given) settings.last.rules = setup.rules;
+  if (options.game_given) settings.last.game = setup.game;
+}
+
+render::Frame menuBackdrop(render::Frame behind, const MenuModel& model) {
+  behind.hud.mode = opponentModeLabel(model.choice().opponent);
+  return behind;
+}
 
 std::string describeSavedRack(const SavedRack& rack) {
   const std::string p2 = isComputer(rack.opponent) ? std::string("Computer") : rack.names[1];
@@ -29,8 +51,8 @@ std::string describeSavedRack(const SavedRack& rack) {
 }
 
 void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
-  MenuModel model(settings, resumeLabel(loadRack(rackSavePath())));
-  drawBehind(ctx, ctx.window);
+  const MenuModel model = startModel(ctx, settings, loadRack(rackSavePath()));
+  drawBehind(ctx, ctx.window, model);
   ctx.menu_painter.draw(ctx.window, ctx.window.getSize().x, ctx.window.getSize().y,
                         menuPicture(model));
 }
@@ -39,9 +61,9 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
                   Settings& settings, const GameSession::TurnObserver& observer) {
   const std::string rack_path = rackSavePath();
   const std::optional<SavedRack> saved = loadRack(rack_path);
-  MenuModel model(settings, resumeLabel(saved));
+  MenuModel model = startModel(ctx, settings, saved);
   const MenuModel::Outcome outcome = runMenuScreen(
-      ctx.window, model, ctx.menu_painter, [&](sf::RenderTarget& t) { drawBehind(ctx, t); },
+      ctx.window, model, ctx.menu_painter, [&](sf::RenderTarget& t) { drawBehind(ctx, t, model); },
       [&](double w, double h) { ctx.painter.resize(w, h); });
   settings = model.settings();
   std::string why;

@@ -3,6 +3,7 @@
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <functional>
 
+#include "app/game_options.hpp"
 #include "render/menu_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "window/computer_player.hpp"
@@ -19,7 +20,16 @@ struct StartMenuContext {
   render::ScenePainter& painter;
   render::MenuPainter& menu_painter;
   std::function<render::Frame()> frame;  ///< the table behind the menu
+  bool muted_by_option = false;          ///< --mute: no sound this run, whatever the settings
 };
+
+/// The menu's choices as the command line asks: an option given there (--game, --rules,
+/// --opponent, a default value too) wins over the choice the settings remember.
+void presetFromCommandLine(Settings& settings, const app::GameOptions& options,
+                           const MatchSetup& setup);
+
+/// The table behind the menu, its top band saying who plays as the menu now chooses.
+render::Frame menuBackdrop(render::Frame behind, const MenuModel& model);
 
 /// "Ann vs Computer: rack 4, racks 2-1": the saved rack's entry in the menu.
 std::string describeSavedRack(const SavedRack& rack);

@@ -1,6 +1,7 @@
 #include "window/turn_message.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace nineball::window {
 namespace {
@@ -56,13 +57,16 @@ std::string downOnFoul(const rules::Verdict& v) {
     if (std::find(v.to_spot.begin(), v.to_spot.end(), b) == v.to_spot.end()) stay.push_back(b);
   }
   if (stay.empty()) return "";
-  std::string list = ballList(stay);
-  list[0] = 'T';
-  return " " + list +
+  return " " + sentence(ballList(stay)) +
          (stay.size() == 1 ? " went down and stays down." : " went down and stay down.");
 }
 
 }  // namespace
+
+std::string sentence(std::string text) {
+  if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  return text;
+}
 
 std::string ballList(const std::vector<int>& balls) {
   std::string s;
@@ -74,9 +78,10 @@ std::string ballList(const std::vector<int>& balls) {
 }
 
 TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
-                         const std::string& shooter, const std::string& next,
+                         const std::string& shooter, const std::string& opponent,
                          const rules::Groups& groups_before) {
   const rules::Verdict& v = record.verdict;
+  const std::string& next = v.next == record.shooter ? shooter : opponent;
   TurnMessage m;
   if (record.kind == TurnInput::Kind::Decision) {
     if (record.answered == rules::Decision::RerackOrPlayOn) {
@@ -90,7 +95,10 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   }
   const std::string potted = v.pocketed.empty() ? "" : ballList(v.pocketed);
   const bool spotted = !v.to_spot.empty();
-  const std::string spot_note = spotted ? " " + ballList(v.to_spot) + " is spotted." : "";
+  const std::string spot_note = spotted
+                                    ? " " + sentence(ballList(v.to_spot)) +
+                                          (v.to_spot.size() == 1 ? " is spotted." : " are spotted.")
+                                    : "";
   if (v.winner) {
     m.tone = render::Tone::Win;
     const bool shooter_won = *v.winner == record.shooter;
@@ -117,7 +125,7 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   if (groups_before.open() && !v.groups.open()) {
     if (const auto g = v.groups.of(record.shooter)) {
       const auto o = v.groups.of(rules::other(record.shooter));
-      groups_note = " " + shooter + " has the " + rules::groupName(*g) + ", " + next + " the " +
+      groups_note = " " + shooter + " has the " + rules::groupName(*g) + ", " + opponent + " the " +
                     (o ? rules::groupName(*o) : "others") + ".";
     }
   }

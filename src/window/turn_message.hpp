@@ -15,12 +15,15 @@ struct TurnMessage {
 };
 
 /// Says what a turn gave: what dropped, the foul and its reason, ball in hand, the push-out
-/// choice, the winner. `ball_on` is the ball on before the shot; `shooter` and `next` are the
-/// names of the players the record calls shooter and next; `groups_before` the
-/// groups before the shot (the message says when they are settled).
+/// choice, the winner. `ball_on` is the ball on before the shot; `shooter` names the player
+/// who played the turn and `opponent` the other one (the record says which of them plays
+/// next); `groups_before` the groups before the shot (the message says when they are settled).
 TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& summary, int ball_on,
-                         const std::string& shooter, const std::string& next,
+                         const std::string& shooter, const std::string& opponent,
                          const rules::Groups& groups_before = {});
+
+/// `text` as the start of a sentence: its first letter a capital ("the 9" -> "The 9").
+std::string sentence(std::string text);
 
 /// "the 3", "the 3 and the 5", "the 2, the 3 and the 7".
 std::string ballList(const std::vector<int>& balls);

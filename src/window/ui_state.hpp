@@ -20,6 +20,8 @@ struct UiState {
   double speed_before_drag = 0.0;
   std::optional<render::CueGhost> ghost;  ///< the ball under the pointer while moved
   Vec2 pointer;  ///< where the pointer last was on the table (m): practice adds balls there
+  bool leave_to_menu = false;  ///< Esc leads to the start menu (else it quits the program)
+  bool rack_kept = false;      ///< leaving saves the rack in play for "Resume rack"
 };
 
 }  // namespace nineball::window

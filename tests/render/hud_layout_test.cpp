@@ -19,7 +19,7 @@ TEST(HudLayout, ChoiceDialogsNeverCoverTheCueBall) {
       // Every spot a cue ball can rest on, on a 2 cm grid.
       for (double x = -table.length / 2 + kR; x <= table.length / 2 - kR; x += 0.02) {
         for (double y = -table.width / 2 + kR; y <= table.width / 2 - kR; y += 0.02) {
-          const HudLayout layout = HudLayout::of(view, overlay, Vec2{x, y});
+          const HudLayout layout = HudLayout::of(view, overlay, {Vec2{x, y}});
           const PixelRect p = layout.panel;
           const Vec2 c = view.toPixels({x, y});
           const double r = view.px(kR);
@@ -36,13 +36,52 @@ TEST(HudLayout, TheDialogsButtonsAreInsideItsPanel) {
   const ViewTransform view(TableDef{}, 1280, 800);
   for (Overlay overlay :
        {Overlay::Help, Overlay::ConfirmQuit, Overlay::PushOutChoice, Overlay::GameOver}) {
-    const HudLayout l = HudLayout::of(view, overlay, Vec2{0.3, 0.2});
+    const HudLayout l = HudLayout::of(view, overlay, {Vec2{0.3, 0.2}});
     for (const PixelRect& b : {l.button_left, l.button_right}) {
       EXPECT_GE(b.left, l.panel.left);
       EXPECT_LE(b.left + b.width, l.panel.left + l.panel.width);
       EXPECT_GE(b.top, l.panel.top);
       EXPECT_LE(b.top + b.height, l.panel.top + l.panel.height);
     }
+  }
+}
+
+TEST(HudLayout, TheChoiceStripHidesNoBallWhereItCanBePlacedSo) {
+  // Balls by both long cushions, where the strip used to go, and a free band across the
+  // middle: the strip goes there.
+  const TableDef table;
+  const std::vector<Vec2> balls = {{-0.3, 0.55}, {0.2, -0.55}, {0.5, 0.5},
+                                   {-0.6, -0.5}, {0.0, 0.4},   {0.1, -0.4}};
+  for (const auto& [w, h] : {std::pair{1280.0, 800.0}, {640.0, 480.0}, {3840.0, 2160.0}}) {
+    const ViewTransform view(table, w, h);
+    for (Overlay overlay : {Overlay::PushOutChoice, Overlay::GameOver}) {
+      const HudLayout layout = HudLayout::of(view, overlay, balls);
+      EXPECT_EQ(HudLayout::hiddenBy(view, layout.panel, balls), 0) << w << "x" << h;
+    }
+  }
+}
+
+TEST(HudLayout, WhenEveryPlaceHidesABallTheStripHidesTheFewest) {
+  // A ball every 10 cm down the middle of the table: any strip across it hides some; the
+  // bands above and below the table hide none.
+  const TableDef table;
+  std::vector<Vec2> balls;
+  for (double y = -0.6; y <= 0.6; y += 0.1) balls.push_back({0.0, y});
+  const ViewTransform view(table, 1280, 800);
+  const HudLayout layout = HudLayout::of(view, Overlay::PushOutChoice, balls);
+  PixelRect along_cushion = layout.panel;
+  along_cushion.top = view.toPixels({0.0, table.width / 2.0 - 0.04}).y;
+  EXPECT_LT(HudLayout::hiddenBy(view, layout.panel, balls),
+            HudLayout::hiddenBy(view, along_cushion, balls));
+}
+
+TEST(HudLayout, ATwoDigitNumberFitsItsBallsNumberDisc) {
+  // A digit is about 0.6 of the character size wide in the HUD's bold face.
+  for (double r : {6.0, 10.0, 24.0}) {
+    const double two_digits = 1.2;
+    const double size = HudLayout::iconNumberSize(r, two_digits);
+    EXPECT_LE(size * two_digits, 2.0 * r * 0.5) << r;  // inside the disc (half the ball)
+    EXPECT_DOUBLE_EQ(HudLayout::iconNumberSize(r, 0.3), 0.85 * r);  // a narrow one as before
   }
 }
 

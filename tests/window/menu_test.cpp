@@ -177,5 +177,13 @@ TEST(Menu, ThePointerSelectsAndClicks) {
   EXPECT_EQ(m.outcome(), MenuModel::Outcome::Quit);
 }
 
+TEST(Menu, TheSoundRowSaysOffWhenStartedWithMute) {
+  MenuModel m = MenuModel::settingsOnly(Settings{});  // the file says sound on
+  m.setMutedByOption(true);
+  const MenuRow sound = m.rows()[rowNamed(m, "Sound (M)")];
+  EXPECT_EQ(sound.value, "Off this run (--mute)");
+  EXPECT_FALSE(sound.enabled);
+}
+
 }  // namespace
 }  // namespace nineball::window

@@ -91,8 +91,41 @@ TEST(Practice, ShotsHaveNoRulesAndCanBeUndoneAndRetried) {
   s.undoShot();
   ASSERT_NE(find(s.ballsToDraw(), 1), nullptr);
   EXPECT_EQ(find(s.ballsToDraw(), 5)->pos, (Vec2{-0.5, 0.2}));
+  // Then the 5's move by hand, which undo takes back too.
+  s.undoShot();
+  EXPECT_EQ(find(s.ballsToDraw(), 5)->pos, (Vec2{-0.8, -0.3}));
   s.undoShot();
   EXPECT_NE(s.message().find("Nothing to undo"), std::string::npos);
+}
+
+TEST(Practice, UndoTakesBackABallMovedOrTakenAwayAndRetryFollowsAnUndo) {
+  MatchSetup setup;
+  setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.4, 0.1}),
+                 BallState::at(5, {-0.8, -0.3})};
+  GameSession s(setup, true);
+  s.retryShot();
+  EXPECT_NE(s.message().find("no shot played yet"), std::string::npos) << s.message();
+  ASSERT_TRUE(s.moveBall(1, {0.5, 0.3}));
+  s.toggleBall(5, {});
+  EXPECT_EQ(find(s.ballsToDraw(), 5), nullptr);
+  EXPECT_EQ(s.practiceSteps(), 2u);
+  s.undoShot();  // the 5 comes back
+  ASSERT_NE(find(s.ballsToDraw(), 5), nullptr);
+  EXPECT_EQ(find(s.ballsToDraw(), 5)->pos, (Vec2{-0.8, -0.3}));
+  s.undoShot();  // the 1 goes back where it was
+  EXPECT_EQ(find(s.ballsToDraw(), 1)->pos, (Vec2{0.4, 0.1}));
+
+  // A shot, undone: Y then sets that shot up again rather than finding none.
+  s.setHeading(0.1);
+  s.setSpeed(2.0);
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(roll(s));
+  s.undoShot();
+  s.setHeading(1.0);
+  s.retryShot();
+  EXPECT_EQ(s.message().find("no shot played yet"), std::string::npos) << s.message();
+  EXPECT_DOUBLE_EQ(s.heading(), 0.1);
+  EXPECT_EQ(find(s.ballsToDraw(), 1)->pos, (Vec2{0.4, 0.1}));
 }
 
 TEST(Practice, BallsComeAndGoWithTheirNumbers) {

@@ -1,0 +1,64 @@
+// The picture of the game: what the leave dialog says, the aim guide's foul warning, the
+// balls a dialog keeps clear of.
+#include "window/frame_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include "window/game_rolling.hpp"
+
+namespace nineball::window {
+namespace {
+
+std::string leaveLine(const GameSession& s, const UiState& ui) {
+  UiState open = ui;
+  open.confirm_quit = true;
+  const render::Frame f = buildFrame(s, open, ComputerPlayer(1));
+  EXPECT_EQ(f.hud.overlay, render::Overlay::ConfirmQuit);
+  return f.hud.overlay_lines.empty() ? "" : f.hud.overlay_lines.front();
+}
+
+TEST(FrameBuilder, TheLeaveDialogSaysWhatBecomesOfTheRack) {
+  GameSession s{MatchSetup{}};
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(roll(s));
+  UiState kept;
+  kept.leave_to_menu = true;
+  kept.rack_kept = true;
+  EXPECT_NE(leaveLine(s, kept).find("saved"), std::string::npos) << leaveLine(s, kept);
+  EXPECT_EQ(leaveLine(s, kept).find("lost"), std::string::npos) << leaveLine(s, kept);
+  EXPECT_TRUE(leavingLosesNothing(s, kept));
+  UiState scripted;  // no menu, nothing saved: the rack is lost, and the dialog says so
+  EXPECT_NE(leaveLine(s, scripted).find("will be lost"), std::string::npos);
+  EXPECT_FALSE(leavingLosesNothing(s, scripted));
+  const GameSession practice(MatchSetup{}, true);
+  EXPECT_NE(leaveLine(practice, kept).find("practice table is not kept"), std::string::npos);
+}
+
+TEST(FrameBuilder, TheGuideWarnsWhenItsFirstBallWouldBeAFoul) {
+  MatchSetup setup;
+  setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.5, 0.4}),
+                 BallState::at(3, {0.3, 0.0})};
+  GameSession s(setup);
+  UiState ui;
+  s.setHeading(0.0);  // straight at the 3
+  const render::Frame foul = buildFrame(s, ui, ComputerPlayer(1));
+  ASSERT_TRUE(foul.guide);
+  EXPECT_EQ(foul.guide->ball, 3);
+  EXPECT_EQ(foul.guide_foul, "foul: the 3 is not the ball on");
+  s.setHeading(std::atan2(0.4, 1.1));  // at the 1
+  const render::Frame fine = buildFrame(s, ui, ComputerPlayer(1));
+  ASSERT_TRUE(fine.guide);
+  EXPECT_EQ(fine.guide->ball, 1);
+  EXPECT_EQ(fine.guide_foul, "");
+}
+
+TEST(FrameBuilder, DialogsKeepClearOfEveryBallOnTheTable) {
+  GameSession s{MatchSetup{}};
+  std::size_t on_table = 0;
+  for (const BallState& b : s.ballsToDraw()) on_table += b.pocket ? 0 : 1;
+  EXPECT_EQ(dialogKeepClear(s).size(), on_table);
+  EXPECT_GT(on_table, 1u);
+}
+
+}  // namespace
+}  // namespace nineball::window
