@@ -63,38 +63,39 @@ void CuePainter::drawGuide(sf::RenderTarget& target, const ViewTransform& view,
   const double w = std::max(1.5, view.px(0.004));
   const sf::Color path = bank ? sf::Color(190, 230, 255, 110) : sf::Color(255, 255, 255, 150);
   const double guide_length = kGuideLength * scale;
-  batch_.line(view.toPixels(guide.start), view.toPixels(guide.end), w, path);
+  batch_.softLine(view.toPixels(guide.start), view.toPixels(guide.end), w, path);
   const Vec2 end = view.toPixels(guide.end);
   switch (guide.target) {
     case AimTarget::Ball: {
-      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 190));
+      batch_.softRing(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 190));
       const Vec2 dir = normalized(guide.end - guide.start);
       // A stun hit shares the speed: cos of the cut to the object ball, sin to the cue ball.
       const double along = std::clamp(dot(dir, guide.object_dir), 0.0, 1.0);
       const Vec2 object_centre = guide.end + guide.object_dir * (2.0 * r);
       const double object_len =
           std::min(r + guide_length * along, length(guide.object_end - object_centre));
-      batch_.line(view.toPixels(object_centre),
-                  view.toPixels(object_centre + guide.object_dir * object_len), w,
-                  sf::Color(255, 226, 90, 220));
+      batch_.softLine(view.toPixels(object_centre),
+                      view.toPixels(object_centre + guide.object_dir * object_len), w,
+                      sf::Color(255, 226, 90, 220));
       const double across = std::sqrt(std::max(0.0, 1.0 - along * along));
       if (length(guide.cue_dir) > 0.0) {
         const double cue_len = std::min(guide_length * across, length(guide.cue_end - guide.end));
-        batch_.line(end, view.toPixels(guide.end + guide.cue_dir * cue_len), w,
-                    sf::Color(150, 210, 255, 200));
+        batch_.softLine(end, view.toPixels(guide.end + guide.cue_dir * cue_len), w,
+                        sf::Color(150, 210, 255, 200));
       }
       break;
     }
     case AimTarget::Cushion: {
-      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 110));
+      batch_.softRing(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 110));
       const Vec2 dir = normalized(guide.end - guide.start);
       const Vec2 n = guide.cushion_normal;
       const Vec2 bounce = dir - n * (2.0 * dot(dir, n));
-      batch_.line(end, view.toPixels(guide.end + bounce * 0.2), w, sf::Color(255, 255, 255, 70));
+      batch_.softLine(end, view.toPixels(guide.end + bounce * 0.2), w,
+                      sf::Color(255, 255, 255, 70));
       break;
     }
     case AimTarget::Pocket:
-      batch_.ring(end, view.px(r) - w, view.px(r), sf::Color(255, 120, 100, 200));
+      batch_.softRing(end, view.px(r) - w, view.px(r), sf::Color(255, 120, 100, 200));
       break;
   }
   batch_.draw(target);

@@ -21,8 +21,8 @@ void drawGuideFoul(sf::RenderTarget& target, const ViewTransform& view, const Ai
   const double r = view.px(ball_radius);
   const Vec2 ghost = view.toPixels(guide.end);
   TriangleBatch marks;
-  marks.line(view.toPixels(guide.start), ghost, w, kFoulLine);
-  marks.ring(ghost, r - w, r, kFoulLine);
+  marks.softLine(view.toPixels(guide.start), ghost, w, kFoulLine);
+  marks.softRing(ghost, r - w, r, kFoulLine);
   marks.draw(target);
   sf::Text label(why, fonts.regular, static_cast<unsigned>(std::max(10.0, r * 1.1)));
   label.setFillColor(kFoulText);

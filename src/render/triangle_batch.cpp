@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace nineball::render {
 
@@ -67,6 +68,42 @@ void TriangleBatch::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, sf::Color colour) {
 void TriangleBatch::line(Vec2 a, Vec2 b, double width, sf::Color colour) {
   const Vec2 n = perp(normalized(b - a)) * (width / 2.0);
   quad(a + n, b + n, b - n, a - n, colour);
+}
+
+void TriangleBatch::fade(Vec2 a, Vec2 b, Vec2 c, Vec2 d, sf::Color from, sf::Color to) {
+  for (const auto& [p, col] :
+       {std::pair<Vec2, sf::Color>{a, from}, {b, from}, {c, to}, {a, from}, {c, to}, {d, to}}) {
+    vertices_.emplace_back(toSf(p), col);
+  }
+}
+
+void TriangleBatch::softLine(Vec2 a, Vec2 b, double width, sf::Color colour) {
+  const Vec2 n = perp(normalized(b - a));
+  const double core = std::max(0.0, width / 2.0 - 0.5), edge = width / 2.0 + 0.5;
+  sf::Color clear = colour;
+  clear.a = 0;
+  if (core > 0.0) quad(a + n * core, b + n * core, b - n * core, a - n * core, colour);
+  fade(a + n * core, b + n * core, b + n * edge, a + n * edge, colour, clear);
+  fade(a - n * core, b - n * core, b - n * edge, a - n * edge, colour, clear);
+}
+
+void TriangleBatch::softRing(Vec2 centre, double inner, double outer, sf::Color colour) {
+  const int n = circleSegments(outer);
+  const double core_in = std::min(inner + 0.5, 0.5 * (inner + outer));
+  const double core_out = std::max(outer - 0.5, core_in);
+  sf::Color clear = colour;
+  clear.a = 0;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 u0 = fromAngle(2.0 * kPi * i / n), u1 = fromAngle(2.0 * kPi * (i + 1) / n);
+    if (core_out > core_in) {
+      quad(centre + u0 * core_in, centre + u0 * core_out, centre + u1 * core_out,
+           centre + u1 * core_in, colour);
+    }
+    fade(centre + u0 * core_out, centre + u1 * core_out, centre + u1 * (outer + 0.5),
+         centre + u0 * (outer + 0.5), colour, clear);
+    fade(centre + u0 * core_in, centre + u1 * core_in, centre + u1 * std::max(0.0, inner - 0.5),
+         centre + u0 * std::max(0.0, inner - 0.5), colour, clear);
+  }
 }
 
 void TriangleBatch::roundedRect(double left, double top, double width, double height, double radius,

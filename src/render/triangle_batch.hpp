@@ -36,6 +36,10 @@ class TriangleBatch {
   void quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d, sf::Color colour);
   /// A straight line `width` pixels wide.
   void line(Vec2 a, Vec2 b, double width, sf::Color colour);
+  /// The same with edges that fade out over a pixel (antialiased: no multisampling needed).
+  void softLine(Vec2 a, Vec2 b, double width, sf::Color colour);
+  /// A ring whose edges fade out over a pixel.
+  void softRing(Vec2 centre, double inner, double outer, sf::Color colour);
   /// An axis-aligned rectangle with rounded corners.
   void roundedRect(double left, double top, double width, double height, double radius,
                    sf::Color colour);
@@ -46,6 +50,8 @@ class TriangleBatch {
   void band(Vec2 centre, double inner, double outer, double from, double to, int n,
             sf::Color colour);
   void triangle(Vec2 a, Vec2 b, Vec2 c, sf::Color colour);
+  // A quad whose colour runs from `from` (a, b) to `to` (c, d).
+  void fade(Vec2 a, Vec2 b, Vec2 c, Vec2 d, sf::Color from, sf::Color to);
   std::vector<sf::Vertex> vertices_;
 };
 
