@@ -98,8 +98,7 @@ void SphereBallRenderer::buildGlyphs(const sf::Font& font) {
       sf::Text t(std::to_string(n), font, kCell);
       t.setFillColor(sf::Color::Black);
       const sf::FloatRect b = t.getLocalBounds();
-      // Tall enough to read, narrow enough that two digits stay inside the disc.
-      const double scale = std::min(0.62 * kCell / b.height, 0.78 * kCell / b.width);
+      const double scale = glyphScale(b.width, b.height, kCell);
       t.setOrigin(b.left + b.width / 2.0f, b.top + b.height / 2.0f);
       t.setScale(static_cast<float>(scale), static_cast<float>(scale));
       t.setPosition(static_cast<float>((n % kColumns + 0.5) * kCell),

@@ -85,6 +85,10 @@ void BallSpins::reset() {
   started_ = false;
 }
 
+double glyphScale(double width, double height, double cell) {
+  return std::min(0.62 * cell / std::max(height, 1e-9), 0.78 * cell / std::max(width, 1e-9));
+}
+
 Vec3 lightDirection() {
   const Vec3 l{-0.35, 0.45, 1.0};
   return l * (1.0 / length(l));

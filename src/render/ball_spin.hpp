@@ -68,6 +68,12 @@ struct Shade {
   double r = 0.0, g = 0.0, b = 0.0, a = 0.0;
 };
 
+/// The scale of a number's glyph, `width` x `height` as the font draws it, in a square cell of
+/// `cell` px that stands for the number disc: tall enough to read, and narrow enough that two
+/// digits stay inside the disc (within 0.78 of its width, where the disc is still flat enough
+/// to read).
+double glyphScale(double width, double height, double cell);
+
 /// The light over the table: up and a little towards the top left, as the shadows fall.
 Vec3 lightDirection();
 

@@ -78,14 +78,6 @@ struct HudLayout {
     return h;
   }
 
-  /// The character size of a ball's number on a HUD icon of radius `r` (px): as the table's
-  /// balls have it, but small enough that a number `width_per_size` px wide per px of size
-  /// stays inside the number disc (two digits are wider than the disc at the table's size).
-  static double iconNumberSize(double r, double width_per_size) {
-    const double disc = 2.0 * r * 0.5 * 0.9;  // the disc's diameter (half the ball's), less an edge
-    return std::min(0.85 * r, disc / std::max(width_per_size, 1e-9));
-  }
-
   /// How many of `points` (m) a panel hides.
   static int hiddenBy(const ViewTransform& view, const PixelRect& panel,
                       const std::vector<Vec2>& points) {

@@ -19,7 +19,6 @@ const sf::Color kPanel(16, 20, 24, 232);
 const sf::Color kButton(54, 92, 70);
 const sf::Color kGauge(60, 64, 70);
 const sf::Color kBallOnRing(235, 235, 225, 220);
-const sf::Color kNumberInk(20, 20, 20);
 // Text never shrinks below this many pixels: smaller is unreadable.
 constexpr double kMinTextSize = 7.0;
 
@@ -165,21 +164,8 @@ int groupIndex(int ball) {
 }  // namespace
 
 void HudPainter::drawBallIcon(sf::RenderTarget& target, int id, Vec2 centre, double r) {
+  // The balls' own number glyphs are sized to fit their disc, two digits too.
   balls_.drawOne(target, id, centre, r);
-  if (id < 10 || !looks_(id).numbered) return;  // one digit fits the disc as the balls draw it
-  batch_.clear();
-  batch_.circle(centre, r * kNumberDiscRadius, toSf(kNumberDisc));
-  batch_.draw(target);
-  constexpr unsigned kProbe = 100;
-  sf::Text number(std::to_string(id), fonts_.bold, kProbe);
-  const double per_size = number.getLocalBounds().width / kProbe;
-  number.setCharacterSize(
-      static_cast<unsigned>(std::max(1.0, std::floor(HudLayout::iconNumberSize(r, per_size)))));
-  const sf::FloatRect b = number.getLocalBounds();
-  number.setOrigin(b.left + b.width / 2.0f, b.top + b.height / 2.0f);
-  number.setPosition(toSf(centre));
-  number.setFillColor(kNumberInk);
-  target.draw(number);
 }
 
 void HudPainter::drawTray(sf::RenderTarget& target, const HudState& hud, const PixelRect& room,

@@ -148,5 +148,17 @@ TEST(LitBall, AStripeIsABandRoundTheBallAndTheCueBallHasSpots) {
   EXPECT_GT(spot.r, 2.0 * spot.g);
 }
 
+TEST(GlyphScale, TwoDigitsFitTheNumberDiscAndOneDigitKeepsItsHeight) {
+  // A digit is about 0.6 of its height wide in the bold face: "12" 1.2, "8" 0.6.
+  const double cell = 64.0, height = 46.0;
+  for (double digits : {1.0, 2.0}) {
+    const double width = 0.6 * height * digits;
+    const double s = glyphScale(width, height, cell);
+    EXPECT_LE(s * width, 0.78 * cell + 1e-9) << digits;
+    EXPECT_LE(s * height, 0.62 * cell + 1e-9) << digits;
+  }
+  EXPECT_DOUBLE_EQ(glyphScale(0.6 * height, height, cell) * height, 0.62 * cell);
+}
+
 }  // namespace
 }  // namespace nineball::render

@@ -75,15 +75,5 @@ TEST(HudLayout, WhenEveryPlaceHidesABallTheStripHidesTheFewest) {
             HudLayout::hiddenBy(view, along_cushion, balls));
 }
 
-TEST(HudLayout, ATwoDigitNumberFitsItsBallsNumberDisc) {
-  // A digit is about 0.6 of the character size wide in the HUD's bold face.
-  for (double r : {6.0, 10.0, 24.0}) {
-    const double two_digits = 1.2;
-    const double size = HudLayout::iconNumberSize(r, two_digits);
-    EXPECT_LE(size * two_digits, 2.0 * r * 0.5) << r;  // inside the disc (half the ball)
-    EXPECT_DOUBLE_EQ(HudLayout::iconNumberSize(r, 0.3), 0.85 * r);  // a narrow one as before
-  }
-}
-
 }  // namespace
 }  // namespace nineball::render
