@@ -4,6 +4,7 @@
 #include <SFML/Graphics/Text.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "common/log.hpp"
@@ -72,7 +73,11 @@ double inkFrom(const void* renderer, int number, double u, double v) {
 
 SphereBallRenderer::SphereBallRenderer(const sf::Font& font) : quad_(sf::TriangleStrip, 4) {
   buildGlyphs(font);
-  if (sf::Shader::isAvailable()) {
+  // NINEBALL_NO_SHADERS=1 draws as a driver without shaders would (and lets the two be compared).
+  const char* no_shaders = std::getenv("NINEBALL_NO_SHADERS");
+  if (no_shaders && std::string(no_shaders) == "1") {
+    logger("render")->info("NINEBALL_NO_SHADERS=1: the balls are drawn on the CPU");
+  } else if (sf::Shader::isAvailable()) {
     const SfmlErrorsToLog to_log;
     shader_ready_ = shader_.loadFromMemory(kFragment, sf::Shader::Fragment);
     if (!shader_ready_) logger("render")->warn("ball shader did not compile; drawing on the CPU");
@@ -123,7 +128,7 @@ double SphereBallRenderer::ink(int number, double u, double v) const {
 }
 
 void SphereBallRenderer::draw(sf::RenderTarget& target, const Ball& ball) {
-  if (shader_ready_ && !force_cpu_) {
+  if (shader_ready_) {
     drawWithShader(target, ball);
   } else {
     drawOnCpu(target, ball);

@@ -34,10 +34,9 @@ class SphereBallRenderer {
   };
   void draw(sf::RenderTarget& target, const Ball& ball);
 
-  /// True when the shader draws; false on the CPU fallback.
+  /// True when the shader draws; false on the CPU fallback (no shaders in the driver, or
+  /// NINEBALL_NO_SHADERS=1 in the environment).
   bool usesShader() const { return shader_ready_; }
-  /// Draws on the CPU even where a shader exists (for the tests that compare the two).
-  void forceCpu(bool cpu) { force_cpu_ = cpu; }
 
   /// A glyph's coverage at disc coordinates (u, v) in -1..1 (v up), 0-1; what both paths read.
   double ink(int number, double u, double v) const;
@@ -52,7 +51,6 @@ class SphereBallRenderer {
   sf::Texture glyph_texture_;
   sf::Shader shader_;
   bool shader_ready_ = false;
-  bool force_cpu_ = false;
   sf::VertexArray quad_;
   sf::Image cpu_pixels_;
   sf::Texture cpu_texture_;

@@ -6,6 +6,7 @@
 
 #include <SFML/Graphics/Image.hpp>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,11 +49,11 @@ Played playTheBreak(int frames) {
   return p;
 }
 
-sf::Image screenshot(int frames) {
+sf::Image screenshot(int frames, const std::string& env = "") {
   const std::string png =
       "/tmp/nineball-rolling-" + std::to_string(getpid()) + "-" + std::to_string(frames) + ".png";
   const testing::XvfbRun r = testing::runGameUnderXvfb(
-      "--frames " + std::to_string(frames) + " --screenshot '" + png + "'", kWidth, kHeight);
+      "--frames " + std::to_string(frames) + " --screenshot '" + png + "'", kWidth, kHeight, env);
   EXPECT_EQ(r.status, 0) << r.err;
   sf::Image image;
   EXPECT_TRUE(image.loadFromFile(png));
@@ -276,6 +277,45 @@ TEST(RollingBallsOnScreen, APocketedBallSinksAndDarkensIntoItsPocket) {
   }
   EXPECT_GE(coloured, looked / 3) << "ball " << b.id << " sinking at frame " << f << ", " << since
                                   << " s after it dropped";
+}
+
+TEST(RollingBallsOnScreen, TheCpuDrawsTheBallsAsTheShaderDoes) {
+  ASSERT_TRUE(testing::haveXvfbRun()) << "needs xvfb-run (bash scripts/setup.sh)";
+  // The break a moment in, balls turned every way: once by the shader, once as a driver
+  // without shaders draws it.
+  const Played p = playTheBreak(40);
+  const sf::Image gpu = screenshot(40);
+  const sf::Image cpu = screenshot(40, "NINEBALL_NO_SHADERS=1");
+  const render::ViewTransform view(TableDef{}, kWidth, kHeight);
+  const double r_px = view.px(PhysicsParams::real().ball_radius);
+  long pixels = 0, total = 0, far_off = 0;
+  for (const BallState& b : p.balls[40]) {
+    if (b.pocket) continue;
+    const Vec2 c = view.toPixels(b.pos);
+    for (int dy = -static_cast<int>(r_px); dy <= static_cast<int>(r_px); ++dy) {
+      for (int dx = -static_cast<int>(r_px); dx <= static_cast<int>(r_px); ++dx) {
+        const Vec2 s{(std::floor(c.x) + dx + 0.5 - c.x) / r_px,
+                     (std::floor(c.y) + dy + 0.5 - c.y) / r_px};
+        if (length(s) > 0.85) continue;  // the rim, where the two blend with the cloth apart
+        const auto x = static_cast<unsigned>(std::floor(c.x) + dx);
+        const auto y = static_cast<unsigned>(std::floor(c.y) + dy);
+        const sf::Color a = gpu.getPixel(x, y), k = cpu.getPixel(x, y);
+        const int d = std::abs(a.r - k.r) + std::abs(a.g - k.g) + std::abs(a.b - k.b);
+        total += d;
+        ++pixels;
+        // The glyphs' edges: the shader filters the glyph texture, the CPU takes its nearest
+        // texel.
+        if (d > 90) ++far_off;
+      }
+    }
+  }
+  ASSERT_GT(pixels, 1000);
+  std::printf(
+      "[ measured ] shader against CPU over %ld ball pixels: mean difference %.2f, %ld far "
+      "apart\n",
+      pixels, static_cast<double>(total) / pixels, far_off);
+  EXPECT_LT(static_cast<double>(total) / pixels, 6.0) << "mean difference per pixel";
+  EXPECT_LT(far_off, pixels / 50) << far_off << " of " << pixels << " pixels far apart";
 }
 
 }  // namespace

@@ -22,15 +22,16 @@ inline bool haveXvfbRun() {
   return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
 }
 
-/// Runs NINEBALL_BINARY muted at width x height with `args`. -a searches for a free display
-/// from a number of this run's own, so that suites started together do not race for one; under
-/// LeakSanitizer the software GL driver leaks a little from code it cannot name, which does not
-/// fail the run.
-inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigned height) {
+/// Runs NINEBALL_BINARY muted at width x height with `args`, `env` (VAR=value ...) set. -a searches
+/// for a free display from a number of this run's own, so that suites started together do not race
+/// for one; under LeakSanitizer the software GL driver leaks a little from code it cannot name,
+/// which does not fail the run.
+inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigned height,
+                                const std::string& env = "") {
   const std::string err_path = "/tmp/nineball-xvfb-err-" + std::to_string(getpid());
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const std::string cmd =
-      "LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" xvfb-run -a -n " +
+      env + " LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" xvfb-run -a -n " +
       std::to_string(200 + getpid() % 700) + " -s '-screen 0 " + size + "x24' '" + NINEBALL_BINARY +
       "' --mute --size " + size + " " + args + " 2>'" + err_path + "'";
   XvfbRun r;
