@@ -50,9 +50,32 @@ struct LevelSettings {
   int push_out_headings = 0;             ///< directions tried for a push-out (0: never pushes out)
   double aim_noise_deg = 0.0;            ///< standard deviation of the executed heading
   double speed_noise = 0.0;              ///< standard deviation of the executed speed, relative
+  double speed_noise_ms = 0.0;           ///< ... and in m/s (the tournaments' noise)
+  double elevation_noise_deg = 0.0;      ///< standard deviation of the executed cue elevation
+  double tip_noise_m = 0.0;              ///< ... of each tip offset, m on the ball
+  bool noise_on_break = false;           ///< the break cued with the whole noise (else a third)
 
   /// The settings of a level (the table in README.md, "Computer opponent").
   static LevelSettings of(Level level);
+};
+
+/// Execution noise to play with instead of a level's own.
+struct ExecutionNoise {
+  double aim_deg = 0.0;        ///< standard deviation of the heading
+  double elevation_deg = 0.0;  ///< ... of the cue's elevation
+  double speed_ms = 0.0;       ///< ... of the speed, m/s
+  double tip_m = 0.0;          ///< ... of each tip offset, m on the ball
+
+  /// The computer-pool tournaments' (Computer Olympiad eight-ball, 2005-2008: Smith, "PickPocket:
+  /// a computer billiards shark", Artificial Intelligence 171, 2007; Archibald, Altman and
+  /// Shoham, "Analysis of a winning computational billiards player", IJCAI 2009): Gaussian,
+  /// 0.1 degree of aim, 0.125 degree of elevation, 0.075 m/s of speed, 0.5 mm of each tip
+  /// offset, on every shot.
+  static ExecutionNoise olympiad();
+  /// "olympiad"; nothing for any other name ("level", the level's own, is the caller's).
+  static std::optional<ExecutionNoise> named(const std::string& name);
+  /// The settings with this noise in place of their own.
+  void applyTo(LevelSettings& s) const;
 };
 
 /// The position to plan for: the table, the balls and the rules' state of the rack.
@@ -119,6 +142,8 @@ class Planner {
  public:
   /// `threads` workers simulate candidates side by side (each with its own worlds).
   explicit Planner(Level level, std::uint64_t seed = 1, int threads = 2);
+  /// The same level cueing with `noise` instead of its own (which it also judges its shots by).
+  Planner(Level level, const ExecutionNoise& noise, std::uint64_t seed = 1, int threads = 2);
 
   /// The best shot found for the position, as intended. The rack must not be waiting for a
   /// decision after a push-out (see shootAfterPushOut).
@@ -148,6 +173,7 @@ class Planner {
   LevelSettings settings_;
   std::uint64_t rng_state_;
   int threads_;
+  double ball_radius_ = PhysicsParams{}.ball_radius;  // of the last plan, for the tip's noise
   long simulations_ = 0;
   double think_seconds_ = 0.0;
   double last_think_seconds_ = 0.0;

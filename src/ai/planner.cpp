@@ -36,6 +36,8 @@ constexpr double kBreakNoiseScale = 1.0 / 3.0;
 // Executed speeds stay within what a cue can give (m/s).
 constexpr double kMinExecutedSpeed = 0.05;
 constexpr double kMaxExecutedSpeed = 13.0;
+// The cue's tilt a noisy stroke can reach (the window allows 60 degrees).
+constexpr double kMaxExecutedElevationDeg = 60.0;
 
 std::vector<Candidate> candidatesFor(const SearchContext& ctx, const Evaluator& eval) {
   const BallState* cue = findOnTable(ctx.in.balls, kCueBall);
@@ -99,8 +101,37 @@ Planner::Planner(Level level, std::uint64_t seed, int threads)
       rng_state_(seed),
       threads_(std::max(threads, 1)) {}
 
+Planner::Planner(Level level, const ExecutionNoise& noise, std::uint64_t seed, int threads)
+    : Planner(level, seed, threads) {
+  noise.applyTo(settings_);
+}
+
+ExecutionNoise ExecutionNoise::olympiad() {
+  ExecutionNoise n;
+  n.aim_deg = 0.1;
+  n.elevation_deg = 0.125;
+  n.speed_ms = 0.075;
+  n.tip_m = 0.0005;
+  return n;
+}
+
+std::optional<ExecutionNoise> ExecutionNoise::named(const std::string& name) {
+  if (name == "olympiad") return olympiad();
+  return std::nullopt;
+}
+
+void ExecutionNoise::applyTo(LevelSettings& s) const {
+  s.aim_noise_deg = aim_deg;
+  s.speed_noise = 0.0;
+  s.speed_noise_ms = speed_ms;
+  s.elevation_noise_deg = elevation_deg;
+  s.tip_noise_m = tip_m;
+  s.noise_on_break = true;
+}
+
 Plan Planner::plan(const PlanInput& in) {
   const auto started = std::chrono::steady_clock::now();
+  ball_radius_ = in.physics.ball_radius;
   const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
   const Evaluator eval(in, table,
                        std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg));
@@ -137,7 +168,8 @@ Plan Planner::plan(const PlanInput& in) {
     if (settings_.robust_steps > 0 && top > 0) {
       const std::vector<std::size_t> ranked(order.begin(), order.begin() + top);
       choice = chooseRobustly(cands, ranked, eval, settings_, threads_,
-                              breaking ? kBreakNoiseScale : 1.0, !breaking, gains);
+                              breaking && !settings_.noise_on_break ? kBreakNoiseScale : 1.0,
+                              !breaking, gains);
       sims += choice.simulations;
     }
     return choice;
@@ -194,11 +226,25 @@ TurnInput Planner::execute(const Plan& plan) {
   TurnInput turn = plan.turn;
   const double aim_error = gaussian(rng_state_);
   const double speed_error = gaussian(rng_state_);
-  const double scale = plan.kind == ShotKind::Break ? kBreakNoiseScale : 1.0;
+  const bool softened = plan.kind == ShotKind::Break && !settings_.noise_on_break;
+  const double scale = softened ? kBreakNoiseScale : 1.0;
   turn.shot.heading_rad += scale * degToRad(settings_.aim_noise_deg) * aim_error;
-  turn.shot.speed =
-      std::clamp(turn.shot.speed * (1.0 + scale * settings_.speed_noise * speed_error),
-                 kMinExecutedSpeed, kMaxExecutedSpeed);
+  double speed = turn.shot.speed * (1.0 + scale * settings_.speed_noise * speed_error);
+  // The tournaments' terms are drawn only where set, so that a level's own draws (and with them
+  // every match it plays) stay as they were.
+  if (settings_.speed_noise_ms > 0.0)
+    speed += scale * settings_.speed_noise_ms * gaussian(rng_state_);
+  turn.shot.speed = std::clamp(speed, kMinExecutedSpeed, kMaxExecutedSpeed);
+  if (settings_.elevation_noise_deg > 0.0) {
+    const double e = turn.shot.elevation_rad +
+                     scale * degToRad(settings_.elevation_noise_deg) * gaussian(rng_state_);
+    turn.shot.elevation_rad = std::clamp(e, 0.0, degToRad(kMaxExecutedElevationDeg));
+  }
+  if (settings_.tip_noise_m > 0.0) {
+    const double k = scale * settings_.tip_noise_m / ball_radius_;
+    turn.shot.tip.x += k * gaussian(rng_state_);
+    turn.shot.tip.y += k * gaussian(rng_state_);
+  }
   return turn;
 }
 

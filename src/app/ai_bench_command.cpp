@@ -1,8 +1,11 @@
 #include "app/ai_bench_command.hpp"
 
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <vector>
 
@@ -26,6 +29,8 @@ struct Tally {
   int fouls = 0;
   int runouts = 0;
   int break_pots = 0;
+  int shots = 0;      // shots the computer played in its racks
+  int succeeded = 0;  // ... that kept the turn legally or won the rack
   int balls_before_miss = 0;
   std::vector<double> think;  // s per planned shot
   long simulations = 0;       // shots the planners simulated
@@ -53,6 +58,20 @@ bool madeIt(rules::Game game, const TurnRecord& r, int on) {
   return contains(v.pocketed, on) && v.call_breach == rules::Foul::None;
 }
 
+// A planner of the level, cueing with the tournaments' noise when asked.
+ai::Planner plannerFor(const AiBenchOptions& o, ai::Level level, std::uint64_t seed) {
+  if (const auto noise = ai::ExecutionNoise::named(o.noise)) {
+    return ai::Planner(level, *noise, seed, o.threads);
+  }
+  return ai::Planner(level, seed, o.threads);
+}
+
+// A shot that keeps the turn legally, or wins the rack.
+bool succeeded(const TurnRecord& r) {
+  const rules::Verdict& v = r.verdict;
+  return v.legal() && (v.next == r.shooter || v.winner == r.shooter);
+}
+
 void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally& t) {
   for (int i = 0; i < o.positions; ++i) {
     const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
@@ -61,7 +80,7 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, T
     setup.balls = randomPosition(seed, setup.table, setup.physics, game);
     Match match(setup);
     const int on = match.rack().ballOn();
-    ai::Planner planner(level, seed, o.threads);
+    ai::Planner planner = plannerFor(o, level, seed);
     const ai::Plan plan = planner.plan(ai::planInputFrom(match));
     t.think.push_back(planner.lastThinkSeconds());
     if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank) ++t.attempted;
@@ -82,10 +101,10 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
     setup.setGame(game);
     setup.seed = o.seed + static_cast<std::uint64_t>(i);
     Match match(setup);
-    ai::Planner planner(level, setup.seed, o.threads);
+    ai::Planner planner = plannerFor(o, level, setup.seed);
     // The opponent only answers the breaker's push-outs and illegal breaks; when it passes the
     // table back the visit goes on, when it takes the table the run is over.
-    ai::Planner opponent(level, setup.seed + 1, o.threads);
+    ai::Planner opponent = plannerFor(o, level, setup.seed + 1);
     int turns = 0;
     int pocketed = 0;
     while (!match.rack().over() && turns < kMaxTurnsPerRack) {
@@ -98,6 +117,10 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
       const TurnInput turn = planner.turnFor(match);
       t.think.push_back(planner.lastThinkSeconds());
       const TurnRecord r = match.play(turn);
+      if (turn.kind == TurnInput::Kind::Shot) {
+        ++t.shots;
+        if (succeeded(r)) ++t.succeeded;
+      }
       if (turns == 0 && r.verdict.legal() && !r.verdict.pocketed.empty()) ++t.break_pots;
       if (turns > 0) pocketed += static_cast<int>(r.verdict.pocketed.size());
       ++turns;
@@ -110,6 +133,13 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
                         turns);
     if ((i + 1) % 10 == 0) err << "ai-bench: " << (i + 1) << " racks\n" << std::flush;
   }
+}
+
+// CPU time of the whole process, every thread's (s).
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 double median(std::vector<double> v) {
@@ -141,6 +171,12 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   cmd->add_option("--threads", options.threads, "Workers simulating candidates")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cmd->add_option("--noise", options.noise,
+                  "Cueing errors: the level's own, or the computer-pool tournaments' (olympiad: "
+                  "0.1 deg aim, 0.125 deg elevation, 0.075 m/s, 0.5 mm tip)")
+      ->check(CLI::IsMember({"level", "olympiad"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", options.json, "Print one JSON object instead of the report");
   return cmd;
 }
 
@@ -150,7 +186,12 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     err << "nineball ai-bench: --level: unknown level \"" << options.level << "\"\n";
     return kExitBadInput;
   }
+  if (options.noise != "level" && !ai::ExecutionNoise::named(options.noise)) {
+    err << "nineball ai-bench: --noise: unknown noise \"" << options.noise << "\"\n";
+    return kExitBadInput;
+  }
   const auto started = std::chrono::steady_clock::now();
+  const double cpu_started = cpuSeconds();
   Tally positions, racks;
   const auto game = rules::gameFromName(options.game);
   if (!game) {
@@ -165,9 +206,28 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   const double thinking = positions.thinking + racks.thinking;
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double cpu = cpuSeconds() - cpu_started;
+  const double max_think = think.empty() ? 0.0 : *std::max_element(think.begin(), think.end());
+  if (options.json) {
+    nlohmann::ordered_json j;
+    j["game"] = options.game;
+    j["level"] = options.level;
+    j["noise"] = options.noise;
+    j["positions"] = {
+        {"made", positions.potted}, {"fouls", positions.fouls}, {"of", options.positions}};
+    j["racks"] = {{"runouts", racks.runouts},
+                  {"of", options.racks},
+                  {"ball_down_on_break", racks.break_pots}};
+    j["shots"] = {{"succeeded", racks.succeeded}, {"attempted", racks.shots}};
+    j["think_s"] = {{"median", median(think)}, {"max", max_think}};
+    j["shots_simulated_per_cpu_s"] = cpu > 0.0 ? static_cast<double>(sims) / cpu : 0.0;
+    out << j.dump() << "\n" << std::flush;
+    return out ? kExitOk : kExitInternal;
+  }
   out << std::fixed << std::setprecision(2);
   out << "Computer opponent, " << options.game << ", level " << options.level << ", "
-      << options.threads << " threads, seeds from " << options.seed << "\n";
+      << options.threads << " threads, seeds from " << options.seed
+      << (options.noise == "level" ? "" : ", " + options.noise + " noise") << "\n";
   const char* aim = gameDef(*game).made;
   out << "positions: " << aim << " in " << positions.potted << " of " << options.positions
       << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
@@ -175,12 +235,13 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   out << "racks: ran out " << racks.runouts << " of " << options.racks << " from the break ("
       << "a ball down on the break in " << racks.break_pots << ", " << racks.balls_before_miss
       << " balls potted after the break in all)\n";
+  out << "shots in the racks: " << racks.succeeded << " of " << racks.shots
+      << " kept the turn legally or won the rack\n";
   out << "search: " << sims << " shots simulated in " << thinking
       << " s of thinking: " << std::setprecision(0) << (thinking > 0.0 ? sims / thinking : 0.0)
       << " shots per second\n"
       << std::setprecision(2);
-  out << "think time per shot: median " << median(think) << " s, max "
-      << (think.empty() ? 0.0 : *std::max_element(think.begin(), think.end())) << " s over "
+  out << "think time per shot: median " << median(think) << " s, max " << max_think << " s over "
       << think.size() << " shots\n";
   out << "wall time: " << wall << " s (thinking " << thinking << " s)\n" << std::flush;
   return out ? kExitOk : kExitInternal;

@@ -17,6 +17,10 @@ struct AiBenchOptions {
   int racks = 100;                        ///< racks broken to try to run out
   std::uint64_t seed = 1;                 ///< first seed of the positions and the racks
   int threads = 2;                        ///< workers simulating candidates
+  /// "level" (the level's own cueing errors) or "olympiad" (the computer-pool tournaments'
+  /// noise, ai::ExecutionNoise::olympiad, in place of the level's).
+  std::string noise = "level";
+  bool json = false;  ///< one JSON object on stdout instead of the report
 };
 
 /// Registers `ai-bench` on the app.
@@ -24,7 +28,10 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options);
 
 /// Measures the computer opponent: how often it pots the ball on from seeded positions, how
 /// many racks it runs out from its own break, how many shots its search simulates per second
-/// and how long it thinks per shot. Prints a short report on `out`.
+/// and how long it thinks per shot. Prints a short report on `out`, or with `json` one object:
+/// {"game", "level", "noise", "positions": {"made", "fouls", "of"}, "racks": {"runouts", "of",
+/// "ball_down_on_break"}, "shots": {"succeeded", "attempted"}, "think_s": {"median", "max"},
+/// "shots_simulated_per_cpu_s"}.
 int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace nineball::app

@@ -1,0 +1,60 @@
+// nineball ai-bench's JSON contract and the computer-pool tournaments' noise (issue 30's first
+// deliveries): the fields, what they count, and bad input refused.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_runner.hpp"
+
+namespace nineball::testing {
+namespace {
+
+nlohmann::ordered_json benchJson(const std::string& args) {
+  const CliOutcome r = runNineball("ai-bench --json " + args);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return nlohmann::ordered_json::parse(r.out);
+}
+
+TEST(AiBenchJson, OneObjectWithEveryFieldOfTheContract) {
+  const nlohmann::ordered_json j =
+      benchJson("--game eight-ball --level easy --positions 4 --racks 2");
+  ASSERT_TRUE(j.is_object());
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"game", "level", "noise", "positions", "racks", "shots",
+                                            "think_s", "shots_simulated_per_cpu_s"}));
+  EXPECT_EQ(j["game"], "eight-ball");
+  EXPECT_EQ(j["level"], "easy");
+  EXPECT_EQ(j["noise"], "level");
+  EXPECT_EQ(j["positions"]["of"], 4);
+  EXPECT_LE(j["positions"]["made"].get<int>(), 4);
+  EXPECT_GE(j["positions"]["fouls"].get<int>(), 0);
+  EXPECT_EQ(j["racks"]["of"], 2);
+  EXPECT_LE(j["racks"]["runouts"].get<int>(), 2);
+  EXPECT_LE(j["racks"]["ball_down_on_break"].get<int>(), 2);
+  // Every rack starts with the computer's break: at least one shot each.
+  EXPECT_GE(j["shots"]["attempted"].get<int>(), 2);
+  EXPECT_LE(j["shots"]["succeeded"].get<int>(), j["shots"]["attempted"].get<int>());
+  EXPECT_LE(j["think_s"]["median"].get<double>(), j["think_s"]["max"].get<double>());
+  EXPECT_GT(j["shots_simulated_per_cpu_s"].get<double>(), 0.0);
+}
+
+TEST(AiBenchJson, TheTournamentNoiseIsNamedAndChangesTheCueing) {
+  const nlohmann::ordered_json level =
+      benchJson("--game eight-ball --level hard --positions 3 --racks 1");
+  const nlohmann::ordered_json olympiad =
+      benchJson("--game eight-ball --level hard --positions 3 --racks 1 --noise olympiad");
+  EXPECT_EQ(olympiad["noise"], "olympiad");
+  // The same seeds and planner, other cueing errors: the racks are played out differently.
+  EXPECT_NE(level["shots"], olympiad["shots"]);
+}
+
+TEST(AiBenchJson, AnUnknownNoiseIsRefused) {
+  const CliOutcome r = runNineball("ai-bench --json --noise loud --positions 1 --racks 0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find("--noise"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace nineball::testing
