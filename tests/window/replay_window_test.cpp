@@ -79,10 +79,27 @@ std::string rackWithFouls() {
 
 class XvfbGame {
  public:
-  XvfbGame(const std::string& dir, const std::string& args) {
+  XvfbGame(const std::string& dir, const std::string& args) : dir_(dir), args_(args) {
+    start(dir, args);
+  }
+  // Now and then, with other Xvfb tests starting beside it, the game has found no display on a
+  // server xdpyinfo had just reached (about once in four runs of the whole suite): the server
+  // and the game are then started again, up to twice. True when it did so.
+  bool restartAfterNoDisplay() {
+    if (running() || restarts_ >= 2) return false;
+    if (slurp(dir_ + "/err.log").find("no display found") == std::string::npos) return false;
+    ++restarts_;
+    stop();
+    start(dir_, args_);
+    return true;
+  }
+  void start(const std::string& dir, const std::string& args) {
+    exited_ = false;
+    display_ = -1;
     // Xvfb picks a free display itself and says which (-displayfd): the other Xvfb tests,
     // run at the same time, choose theirs by number, and a number chosen here could meet one.
     const std::string said = dir + "/display";
+    std::remove(said.c_str());
     xvfb_ = spawn("exec Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>'" + said +
                   "' 2>/dev/null");
     for (int i = 0; i < 600 && display_ < 0; ++i) {
@@ -100,12 +117,14 @@ class XvfbGame {
         spawn("cd '" + dir + "' && LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" " +
               x("exec '" + std::string(NINEBALL_BINARY) + "' " + args + " 2>err.log"));
   }
-  ~XvfbGame() {
+  void stop() {
     if (game_ > 0 && running()) kill(game_, SIGKILL);
     if (game_ > 0) waitpid(game_, nullptr, 0);
     kill(xvfb_, SIGTERM);
     waitpid(xvfb_, nullptr, 0);
+    game_ = -1;
   }
+  ~XvfbGame() { stop(); }
 
   // The command run against this display.
   std::string x(const std::string& cmd) const {
@@ -138,6 +157,8 @@ class XvfbGame {
     return pid;
   }
 
+  std::string dir_, args_;
+  int restarts_ = 0;
   int display_ = -1;
   pid_t xvfb_ = -1;
   pid_t game_ = -1;
@@ -161,7 +182,8 @@ TEST(ReplayWindow, ShiftVAtTheEndOfARackWithFoulsPlaysTheReplayAndTheGameGoesOn)
   // a machine loaded by the other tests (the stress test beside it, under the sanitizers) has
   // taken over 30 s: it is given two minutes, and a game that ends first fails at once.
   std::string window;
-  for (int i = 0; i < 1200 && window.empty() && game.running(); ++i) {
+  for (int i = 0; i < 1200 && window.empty() && (game.running() || game.restartAfterNoDisplay());
+       ++i) {
     const std::string ids = dir + "/ids";
     game.run("xdotool search --name '^nineball' >'" + ids + "' 2>/dev/null");
     std::istringstream(slurp(ids)) >> window;
