@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "app/ai_bench_positions.hpp"
@@ -142,6 +146,50 @@ double cpuSeconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+// Whole racks between two levels, the break alternating; a rack still open after kMaxRackTurns
+// turns is won by neither.
+constexpr int kMaxRackTurns = 300;
+
+struct Versus {
+  ai::Level a = ai::Level::Hard, b = ai::Level::Hard;
+  std::string a_name, b_name;
+  int racks = 0;
+  int wins_a = 0, wins_b = 0;
+};
+
+void playVersus(const AiBenchOptions& o, rules::Game game, Versus& v, Tally& t, std::ostream& err) {
+  for (int i = 0; i < v.racks; ++i) {
+    MatchSetup setup;
+    setup.setGame(game);
+    setup.seed = o.seed + static_cast<std::uint64_t>(i);
+    Match match(setup);
+    // The rack's breaker is seat A: level A sits there on even racks, level B on odd ones.
+    const bool a_breaks = i % 2 == 0;
+    ai::Planner seat_a = plannerFor(o, a_breaks ? v.a : v.b, setup.seed);
+    ai::Planner seat_b = plannerFor(o, a_breaks ? v.b : v.a, setup.seed + 1);
+    for (int turn = 0; turn < kMaxRackTurns && !match.rack().over(); ++turn) {
+      ai::Planner& p = match.rack().shooter() == rules::Player::A ? seat_a : seat_b;
+      match.play(p.turnFor(match));
+      t.think.push_back(p.lastThinkSeconds());
+    }
+    addPlanner(seat_a, t);
+    addPlanner(seat_b, t);
+    if (const auto w = match.rack().winner()) {
+      ((*w == rules::Player::A) == a_breaks ? v.wins_a : v.wins_b) += 1;
+    }
+    if ((i + 1) % 10 == 0) err << "ai-bench: " << (i + 1) << " racks\n" << std::flush;
+  }
+}
+
+// The 95 % Wilson score interval of a share of wins.
+std::pair<double, double> wilson(int wins, int n) {
+  if (n <= 0) return {0.0, 1.0};
+  const double z = 1.959964, p = static_cast<double>(wins) / n, z2n = z * z / n;
+  const double centre = (p + z2n / 2.0) / (1.0 + z2n);
+  const double half = z * std::sqrt(p * (1.0 - p) / n + z2n / (4.0 * n)) / (1.0 + z2n);
+  return {centre - half, centre + half};
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -177,6 +225,9 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
       ->check(CLI::IsMember({"level", "olympiad"}))
       ->capture_default_str();
   cmd->add_flag("--json", options.json, "Print one JSON object instead of the report");
+  cmd->add_option("--versus", options.versus,
+                  "A,B: play --racks whole racks between two levels instead, the break "
+                  "alternating, and report the wins");
   return cmd;
 }
 
@@ -190,6 +241,23 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     err << "nineball ai-bench: --noise: unknown noise \"" << options.noise << "\"\n";
     return kExitBadInput;
   }
+  std::optional<Versus> versus;
+  if (!options.versus.empty()) {
+    const auto comma = options.versus.find(',');
+    Versus v;
+    v.a_name = options.versus.substr(0, comma);
+    v.b_name = comma == std::string::npos ? "" : options.versus.substr(comma + 1);
+    const auto a = ai::levelFromName(v.a_name), b = ai::levelFromName(v.b_name);
+    if (!a || !b) {
+      err << "nineball ai-bench: --versus: two levels as A,B (easy, medium or hard), not \""
+          << options.versus << "\"\n";
+      return kExitBadInput;
+    }
+    v.a = *a;
+    v.b = *b;
+    v.racks = options.racks;
+    versus = v;
+  }
   const auto started = std::chrono::steady_clock::now();
   const double cpu_started = cpuSeconds();
   Tally positions, racks;
@@ -199,7 +267,11 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     return kExitBadInput;
   }
   playPositions(options, *game, *level, positions);
-  playRacks(options, *game, *level, racks, err);
+  if (versus) {
+    playVersus(options, *game, *versus, racks, err);
+  } else {
+    playRacks(options, *game, *level, racks, err);
+  }
   std::vector<double> think = positions.think;
   think.insert(think.end(), racks.think.begin(), racks.think.end());
   const long sims = positions.simulations + racks.simulations;
@@ -216,11 +288,17 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     j["positions"] = {
         {"made", positions.potted}, {"fouls", positions.fouls}, {"of", options.positions}};
     j["racks"] = {{"runouts", racks.runouts},
-                  {"of", options.racks},
+                  {"of", versus ? 0 : options.racks},
                   {"ball_down_on_break", racks.break_pots}};
     j["shots"] = {{"succeeded", racks.succeeded}, {"attempted", racks.shots}};
     j["think_s"] = {{"median", median(think)}, {"max", max_think}};
     j["shots_simulated_per_cpu_s"] = cpu > 0.0 ? static_cast<double>(sims) / cpu : 0.0;
+    if (versus) {
+      j["versus"] = {{"A", versus->a_name},
+                     {"B", versus->b_name},
+                     {"racks", versus->racks},
+                     {"wins", {{"A", versus->wins_a}, {"B", versus->wins_b}}}};
+    }
     out << j.dump() << "\n" << std::flush;
     return out ? kExitOk : kExitInternal;
   }
@@ -232,11 +310,20 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   out << "positions: " << aim << " in " << positions.potted << " of " << options.positions
       << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
       << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";
-  out << "racks: ran out " << racks.runouts << " of " << options.racks << " from the break ("
-      << "a ball down on the break in " << racks.break_pots << ", " << racks.balls_before_miss
-      << " balls potted after the break in all)\n";
-  out << "shots in the racks: " << racks.succeeded << " of " << racks.shots
-      << " kept the turn legally or won the rack\n";
+  if (versus) {
+    const auto [lo, hi] = wilson(versus->wins_a, versus->wins_a + versus->wins_b);
+    out << "versus: " << versus->a_name << " won " << versus->wins_a << ", " << versus->b_name
+        << " won " << versus->wins_b << " of " << versus->racks
+        << " racks (the break alternating); " << versus->a_name << "'s share of the wins "
+        << std::setprecision(3) << lo << "-" << hi << " (95 % Wilson interval)\n"
+        << std::setprecision(2);
+  } else {
+    out << "racks: ran out " << racks.runouts << " of " << options.racks << " from the break ("
+        << "a ball down on the break in " << racks.break_pots << ", " << racks.balls_before_miss
+        << " balls potted after the break in all)\n";
+    out << "shots in the racks: " << racks.succeeded << " of " << racks.shots
+        << " kept the turn legally or won the rack\n";
+  }
   out << "search: " << sims << " shots simulated in " << thinking
       << " s of thinking: " << std::setprecision(0) << (thinking > 0.0 ? sims / thinking : 0.0)
       << " shots per second\n"

@@ -21,6 +21,9 @@ struct AiBenchOptions {
   /// noise, ai::ExecutionNoise::olympiad, in place of the level's).
   std::string noise = "level";
   bool json = false;  ///< one JSON object on stdout instead of the report
+  /// "A,B": instead of the level's racks, `racks` whole racks between levels A and B, the
+  /// break alternating (A breaks the first).
+  std::string versus;
 };
 
 /// Registers `ai-bench` on the app.
@@ -31,7 +34,8 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options);
 /// and how long it thinks per shot. Prints a short report on `out`, or with `json` one object:
 /// {"game", "level", "noise", "positions": {"made", "fouls", "of"}, "racks": {"runouts", "of",
 /// "ball_down_on_break"}, "shots": {"succeeded", "attempted"}, "think_s": {"median", "max"},
-/// "shots_simulated_per_cpu_s"}.
+/// "shots_simulated_per_cpu_s"}; with `versus` also "versus": {"A", "B", "racks", "wins":
+/// {"A", "B"}}.
 int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace nineball::app

@@ -49,6 +49,22 @@ TEST(AiBenchJson, TheTournamentNoiseIsNamedAndChangesTheCueing) {
   EXPECT_NE(level["shots"], olympiad["shots"]);
 }
 
+TEST(AiBenchJson, VersusPlaysWholeRacksBetweenTwoLevels) {
+  const nlohmann::ordered_json j = benchJson("--versus easy,hard --racks 4 --positions 0");
+  ASSERT_TRUE(j.contains("versus"));
+  const auto& v = j["versus"];
+  EXPECT_EQ(v["A"], "easy");
+  EXPECT_EQ(v["B"], "hard");
+  EXPECT_EQ(v["racks"], 4);
+  const int a = v["wins"]["A"], b = v["wins"]["B"];
+  EXPECT_LE(a + b, 4);
+  EXPECT_GT(b, a);                 // the break alternates, and hard wins anyway
+  EXPECT_EQ(j["racks"]["of"], 0);  // no run-out racks of --level were played
+  const CliOutcome bad = runNineball("ai-bench --versus easy --racks 2 --positions 0");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--versus"), std::string::npos) << bad.err;
+}
+
 TEST(AiBenchJson, AnUnknownNoiseIsRefused) {
   const CliOutcome r = runNineball("ai-bench --json --noise loud --positions 1 --racks 0");
   EXPECT_EQ(r.status, 2);
