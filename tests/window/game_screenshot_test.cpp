@@ -22,6 +22,7 @@
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
 #include "window/game_session.hpp"
+#include "xvfb_run.hpp"
 
 using nineball::BallState;
 using nineball::kCueBall;
@@ -50,34 +51,12 @@ std::string slurp(const std::string& path) {
   return ss.str();
 }
 
-bool haveXvfbRun() {
-  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
-}
-
-struct XvfbRun {
-  int status = -1;
-  std::string err;
-};
+using nineball::testing::haveXvfbRun;
+using nineball::testing::XvfbRun;
 
 // Runs the game binary under a fresh virtual display with the given arguments.
 XvfbRun runUnderXvfb(const std::string& args, const std::string& env = "") {
-  const std::string err_path = "/tmp/nineball-xvfb-err-" + std::to_string(getpid());
-  // -a searches for a free display from a number of this run's own, so that two suites
-  // started together do not race for the same one. Under LeakSanitizer the software GL
-  // driver leaks a little from code it cannot name; such leaks do not fail the run, the
-  // test looks for ours in the report instead (expectNoLeakOfOurs).
-  const std::string cmd = env + " LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" " +
-                          std::string("xvfb-run -a -n ") + std::to_string(200 + getpid() % 700) +
-                          " -s '-screen 0 " + std::to_string(kWidth) + "x" +
-                          std::to_string(kHeight) + "x24' " + quoted(NINEBALL_BINARY) +
-                          " --mute --size " + std::to_string(kWidth) + "x" +
-                          std::to_string(kHeight) + " " + args + " 2>" + quoted(err_path);
-  XvfbRun r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.err = slurp(err_path);
-  std::remove(err_path.c_str());
-  return r;
+  return nineball::testing::runGameUnderXvfb(args, kWidth, kHeight, env);
 }
 
 // A leak report (sanitizer builds only) may name the GL driver, never nineball's own code.
