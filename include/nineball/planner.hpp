@@ -17,12 +17,24 @@
 // and judges each outcome with the rules. No drawing, no wall-clock input in its choices.
 namespace nineball::ai {
 
-/// How strong the computer opponent is: how much it searches and how well it cues.
-enum class Level { Easy, Medium, Hard };
+/// How strong the computer opponent is: how much it searches and how well it cues. Seven
+/// levels from an absolute beginner to a master (docs/ai.md, "The ladder").
+enum class Level { Beginner, Casual, Club, League, Advanced, Pro, Master };
 
-/// "easy", "medium", "hard".
+/// Every level, the weakest first.
+const std::vector<Level>& allLevels();
+/// "beginner", "casual", "club", "league", "advanced", "pro", "master".
 const char* levelName(Level level);
+/// A level by its name or by an older one (easy = casual, medium = club, hard = master).
 std::optional<Level> levelFromName(const std::string& name);
+/// The names levelFromName takes: the seven, then the older ones.
+std::vector<std::string> levelNames();
+/// The same for a message: "beginner, casual, ..., master or easy, medium, hard".
+std::string levelNamesText();
+
+/// The pace above which a stroke's aim grows less precise (m/s: a ball sent about three table
+/// lengths on the cloth).
+inline constexpr double kPaceReference = 2.0;
 
 /// What one level searches and how precisely it executes the chosen shot.
 struct LevelSettings {
@@ -48,12 +60,19 @@ struct LevelSettings {
   std::vector<double> lookahead_speeds;  ///< ... at these speeds (m/s)
   std::vector<Vec2> lookahead_tips;      ///< ... and tips
   int push_out_headings = 0;             ///< directions tried for a push-out (0: never pushes out)
-  double aim_noise_deg = 0.0;            ///< standard deviation of the executed heading
-  double speed_noise = 0.0;              ///< standard deviation of the executed speed, relative
-  double speed_noise_ms = 0.0;           ///< ... and in m/s (the tournaments' noise)
-  double elevation_noise_deg = 0.0;      ///< standard deviation of the executed cue elevation
-  double tip_noise_m = 0.0;              ///< ... of each tip offset, m on the ball
-  bool noise_on_break = false;           ///< the break cued with the whole noise (else a third)
+  /// The stroke model: the executed heading's standard deviation is aim_noise_deg on a
+  /// straight shot at touching distance and moderate pace, multiplied by (1 + cut_growth
+  /// sin^2 cut), (1 + reach_growth * metres from cue ball to first ball) and (1 + pace_growth *
+  /// how far the speed is above kPaceReference, relative).
+  double aim_noise_deg = 0.0;
+  double cut_growth = 0.0;
+  double reach_growth = 0.0;
+  double pace_growth = 0.0;
+  double speed_noise = 0.0;          ///< standard deviation of the executed speed, relative
+  double speed_noise_ms = 0.0;       ///< ... and in m/s (the tournaments' noise)
+  double elevation_noise_deg = 0.0;  ///< standard deviation of the executed cue elevation
+  double tip_noise_m = 0.0;          ///< ... of each tip offset, m on the ball
+  bool noise_on_break = false;       ///< the break cued with the whole noise (else a third)
 
   /// The settings of a level (the table in README.md, "Computer opponent").
   static LevelSettings of(Level level);
@@ -111,6 +130,11 @@ struct Plan {
   int target = 0;                  ///< the ball meant to drop (pot, combination, bank)
   std::optional<PocketId> pocket;  ///< where it is meant to drop
   int first = 0;                   ///< the ball the cue ball is meant to hit first (0: none)
+  /// The stroke's difficulty for the stroke model: the cut on the first ball (0 straight, up
+  /// to 90 degrees) and the cue ball's distance to it, m (both 0 when it is not aimed at
+  /// directly: a break, a kick, a sweep that misses).
+  double cut_deg = 0.0;
+  double reach_m = 0.0;
   /// Expected worth of the outcome to the shooter, 0 (loses the rack) to 1 (wins it), averaged
   /// over the robustness check when there was one.
   double value = 0.0;

@@ -17,7 +17,7 @@ struct HumanSeat {
 
 /// The computer plays the seat, with the planner at a level.
 struct ComputerSeat {
-  ai::Level level = ai::Level::Medium;
+  ai::Level level = ai::Level::Club;
 
   bool operator==(const ComputerSeat& o) const { return level == o.level; }
   bool operator!=(const ComputerSeat& o) const { return level != o.level; }
@@ -32,10 +32,14 @@ using Seat = std::variant<HumanSeat, ComputerSeat>;
 bool isComputer(const Seat& seat);
 /// The computer's level; nothing when the computer does not play the seat.
 std::optional<ai::Level> computerLevel(const Seat& seat);
-/// "human", "ai:easy", "ai:medium", "ai:hard": the seat's name in the JSON contracts (the
+/// "human" or "ai:" and the level's name ("ai:club"): the seat's name in the JSON contracts (the
 /// match script's "players", the window's --opponent, the settings and the saved rack).
 std::string seatName(const Seat& seat);
 /// Reads a seat's name; nothing for an unknown one.
 std::optional<Seat> seatFromName(const std::string& name);
+/// Every name seatFromName takes: "human", then "ai:" and each level's name or older name.
+std::vector<std::string> seatNames();
+/// The same for a message: "human or ai:<level> (beginner, ...)".
+std::string seatNamesText();
 
 }  // namespace nineball

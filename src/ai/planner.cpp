@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
 
 #include "ai/planner_candidates.hpp"
@@ -81,6 +82,31 @@ long lookFurther(const SearchContext& ctx, const Evaluator& eval,
   return sims;
 }
 
+// The stroke's cut and reach (Plan::cut_deg, reach_m): from where the cue ball is struck, along
+// the heading, to the first ball when it is aimed at directly.
+void measureStroke(const PlanInput& in, double ball_radius, Plan& plan) {
+  if (plan.kind == ShotKind::Break || plan.kind == ShotKind::Kick || plan.first == 0) return;
+  const BallState* cue = findOnTable(in.balls, kCueBall);
+  const BallState* first = findOnTable(in.balls, plan.first);
+  if (!first || (!plan.turn.cue && !cue)) return;
+  const Vec2 from = plan.turn.cue ? *plan.turn.cue : cue->pos;
+  const Vec2 to_first = first->pos - from;
+  const Vec2 heading{std::cos(plan.turn.shot.heading_rad), std::sin(plan.turn.shot.heading_rad)};
+  const double along = dot(to_first, heading);
+  const double offset = std::abs(cross(heading, to_first));
+  if (along <= 0.0 || offset >= 2.0 * ball_radius) return;
+  plan.cut_deg = radToDeg(std::asin(offset / (2.0 * ball_radius)));
+  plan.reach_m = std::max(0.0, length(to_first) - 2.0 * ball_radius);
+}
+
+// How much larger than on an easy stroke the heading's error is on this one.
+double aimGrowth(const LevelSettings& s, const Plan& plan, double speed) {
+  const double sin_cut = std::sin(degToRad(plan.cut_deg));
+  const double pace = std::max(0.0, speed / kPaceReference - 1.0);
+  return (1.0 + s.cut_growth * sin_cut * sin_cut) * (1.0 + s.reach_growth * plan.reach_m) *
+         (1.0 + s.pace_growth * pace);
+}
+
 }  // namespace
 
 PlanInput planInputFrom(const Match& match) {
@@ -122,6 +148,9 @@ std::optional<ExecutionNoise> ExecutionNoise::named(const std::string& name) {
 
 void ExecutionNoise::applyTo(LevelSettings& s) const {
   s.aim_noise_deg = aim_deg;
+  s.cut_growth = 0.0;
+  s.reach_growth = 0.0;
+  s.pace_growth = 0.0;
   s.speed_noise = 0.0;
   s.speed_noise_ms = speed_ms;
   s.elevation_noise_deg = elevation_deg;
@@ -203,6 +232,7 @@ Plan Planner::plan(const PlanInput& in) {
     plan.target = c.target;
     plan.pocket = c.pocket;
     plan.first = c.first;
+    measureStroke(in, in.physics.ball_radius, plan);
   }
   last_think_seconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -228,7 +258,9 @@ TurnInput Planner::execute(const Plan& plan) {
   const double speed_error = gaussian(rng_state_);
   const bool softened = plan.kind == ShotKind::Break && !settings_.noise_on_break;
   const double scale = softened ? kBreakNoiseScale : 1.0;
-  turn.shot.heading_rad += scale * degToRad(settings_.aim_noise_deg) * aim_error;
+  const double growth =
+      plan.kind == ShotKind::Break ? 1.0 : aimGrowth(settings_, plan, turn.shot.speed);
+  turn.shot.heading_rad += scale * growth * degToRad(settings_.aim_noise_deg) * aim_error;
   double speed = turn.shot.speed * (1.0 + scale * settings_.speed_noise * speed_error);
   // The tournaments' terms are drawn only where set, so that a level's own draws (and with them
   // every match it plays) stay as they were.

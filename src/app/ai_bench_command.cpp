@@ -151,7 +151,7 @@ double cpuSeconds() {
 constexpr int kMaxRackTurns = 300;
 
 struct Versus {
-  ai::Level a = ai::Level::Hard, b = ai::Level::Hard;
+  ai::Level a = ai::Level::Master, b = ai::Level::Master;
   std::string a_name, b_name;
   int racks = 0;
   int wins_a = 0, wins_b = 0;
@@ -203,7 +203,7 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "ai-bench", "Measure the computer opponent: pot rate, run-outs, search speed, think time");
   cmd->add_option("--level", options.level, "Level to measure")
-      ->check(CLI::IsMember({"easy", "medium", "hard"}))
+      ->check(CLI::IsMember(ai::levelNames()))
       ->capture_default_str();
   cmd->add_option("--game", options.game, "Game to play")
       ->check(CLI::IsMember(gameNames()))
@@ -249,8 +249,8 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     v.b_name = comma == std::string::npos ? "" : options.versus.substr(comma + 1);
     const auto a = ai::levelFromName(v.a_name), b = ai::levelFromName(v.b_name);
     if (!a || !b) {
-      err << "nineball ai-bench: --versus: two levels as A,B (easy, medium or hard), not \""
-          << options.versus << "\"\n";
+      err << "nineball ai-bench: --versus: two levels as A,B (" << ai::levelNamesText()
+          << "), not \"" << options.versus << "\"\n";
       return kExitBadInput;
     }
     v.a = *a;

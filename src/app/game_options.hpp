@@ -13,7 +13,7 @@ struct GameOptions {
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
   std::string rules = "wpa";              ///< wpa | paper (the games GameDef::rule_sets allows)
   std::uint64_t seed = 1;          ///< rack order of balls 2-8, and the computer's cueing errors
-  std::string opponent = "human";  ///< Player 2: human | ai:easy | ai:medium | ai:hard
+  std::string opponent = "human";  ///< Player 2: human or ai:<level> (seatNames)
   bool mute = false;               ///< no sound at all
   bool fullscreen = false;         ///< start in full screen
   std::string screenshot;          ///< draw, save this PNG and exit

@@ -72,7 +72,7 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
   opts.push_back(app.add_option("--opponent", o.opponent,
                                 "Game window: who plays Player 2, a second person (human) or the "
                                 "computer at a level (O switches in the window)")
-                     ->check(CLI::IsMember(opponentNames()))
+                     ->check(CLI::IsMember(seatNames()))
                      ->each([&o](const std::string&) { o.opponent_given = true; })
                      ->capture_default_str());
   opts.push_back(app.add_flag("--mute", o.mute, "Game window: no sound"));

@@ -1,18 +1,22 @@
 #include "app/opponent.hpp"
 
-#include <array>
+#include <vector>
 
 namespace nineball::app {
 namespace {
 
-const std::array<Seat, 4> kCycle = {HumanSeat{}, ComputerSeat{ai::Level::Easy},
-                                    ComputerSeat{ai::Level::Medium}, ComputerSeat{ai::Level::Hard}};
+// Two players, then the computer at each level, the weakest first.
+std::vector<Seat> cycle() {
+  std::vector<Seat> seats = {HumanSeat{}};
+  for (ai::Level l : ai::allLevels()) seats.emplace_back(ComputerSeat{l});
+  return seats;
+}
 
 }  // namespace
 
 std::vector<std::string> opponentNames() {
   std::vector<std::string> names;
-  for (const Seat& o : kCycle) names.push_back(seatName(o));
+  for (const Seat& o : cycle()) names.push_back(seatName(o));
   return names;
 }
 
@@ -22,8 +26,9 @@ std::string opponentLabel(const Seat& opponent) {
 }
 
 Seat nextOpponent(const Seat& opponent) {
-  for (std::size_t i = 0; i < kCycle.size(); ++i) {
-    if (kCycle[i] == opponent) return kCycle[(i + 1) % kCycle.size()];
+  const std::vector<Seat> seats = cycle();
+  for (std::size_t i = 0; i < seats.size(); ++i) {
+    if (seats[i] == opponent) return seats[(i + 1) % seats.size()];
   }
   return HumanSeat{};
 }

@@ -14,7 +14,7 @@ namespace nineball::app {
 std::vector<std::string> opponentNames();
 /// What the HUD calls the mode: "2 players", "vs computer (medium)".
 std::string opponentLabel(const Seat& opponent);
-/// The next mode of the O key: 2 players, then easy, medium, hard, and round again.
+/// The next mode of the O key: 2 players, then each level from beginner to master, and round again.
 Seat nextOpponent(const Seat& opponent);
 
 }  // namespace nineball::app

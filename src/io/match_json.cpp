@@ -72,8 +72,7 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
 Seat parsePlayer(const json& v, const std::string& path) {
   const std::string name = text(v, path);
   if (auto seat = seatFromName(name)) return *seat;
-  refuse(path, "unknown player " + quote(name) +
-                   " (expected \"human\", \"ai:easy\", \"ai:medium\" or \"ai:hard\")");
+  refuse(path, "unknown player " + quote(name) + " (expected " + seatNamesText() + ")");
 }
 
 std::array<Seat, 2> parsePlayers(const json& v) {

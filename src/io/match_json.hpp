@@ -23,7 +23,7 @@ struct MatchScript {
 
 /// A turn the computer played, as the result shows it.
 struct ComputerTurn {
-  ai::Level level = ai::Level::Hard;
+  ai::Level level = ai::Level::Master;
   TurnInput input;  ///< the shot as executed (noise included), or the decision
 };
 

@@ -31,8 +31,7 @@ PlanScene parseDocument(json doc) {
     const std::string name = text(*p, "level");
     const auto found = ai::levelFromName(name);
     if (!found) {
-      refuse("level",
-             "unknown level " + quote(name) + " (expected \"easy\", \"medium\" or \"hard\")");
+      refuse("level", "unknown level " + quote(name) + " (expected " + ai::levelNamesText() + ")");
     }
     plan.level = *found;
   }

@@ -12,14 +12,14 @@ namespace nineball::io {
 /// The position of `nineball plan`: the scene and the rules' state, and the level to plan at.
 struct PlanScene {
   ai::PlanInput input;
-  ai::Level level = ai::Level::Hard;
+  ai::Level level = ai::Level::Master;
 };
 
 using PlanSceneResult = std::variant<PlanScene, ParseError>;
 
 /// Parses the scene document of `nineball sim` plus optional "rules" ("wpa" | "paper"),
 /// "ball_in_hand" (true: the cue ball is placed first, and may be left out of "balls") and
-/// "level" ("easy" | "medium" | "hard", default hard). A "shot" or "until" is checked as in
+/// "level" (a level's name, ai::levelNames, default master). A "shot" or "until" is checked as in
 /// a sim scene and otherwise ignored. The ball on is the lowest-numbered object ball. Every
 /// refusal names the field.
 PlanSceneResult parsePlanScene(std::string_view text);

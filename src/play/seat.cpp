@@ -34,6 +34,16 @@ std::string seatName(const Seat& seat) {
                     seat);
 }
 
+std::vector<std::string> seatNames() {
+  std::vector<std::string> names = {"human"};
+  for (const std::string& level : ai::levelNames()) names.push_back(kComputerPrefix + level);
+  return names;
+}
+
+std::string seatNamesText() {
+  return "human or ai:<level> (" + ai::levelNamesText() + ")";
+}
+
 std::optional<Seat> seatFromName(const std::string& name) {
   if (name == "human") return Seat(HumanSeat{});
   const std::string prefix = kComputerPrefix;

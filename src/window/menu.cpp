@@ -39,21 +39,8 @@ void popChar(std::string& s) {
   }
 }
 
-const char* levelLabel(ai::Level l) {
-  switch (l) {
-    case ai::Level::Easy:
-      return "Easy";
-    case ai::Level::Hard:
-      return "Hard";
-    case ai::Level::Medium:
-      break;
-  }
-  return "Medium";
-}
-
-// "Eight-ball" for the menu.
-std::string gameLabel(rules::Game g) {
-  std::string s = rules::gameName(g);
+// "eight-ball" as "Eight-ball" for the menu.
+std::string capitalised(std::string s) {
   s[0] = static_cast<char>(s[0] - 'a' + 'A');
   return s;
 }
@@ -131,10 +118,10 @@ MenuRow MenuModel::row(Item item) const {
            false};
       break;
     case Item::Level:
-      r = {Kind::Choice, "Computer level", levelLabel(level_), r.enabled, false};
+      r = {Kind::Choice, "Computer level", capitalised(ai::levelName(level_)), r.enabled, false};
       break;
     case Item::Game:
-      r = {Kind::Choice, "Game", gameLabel(settings_.last.game), true, false};
+      r = {Kind::Choice, "Game", capitalised(rules::gameName(settings_.last.game)), true, false};
       break;
     case Item::Rules:
       r = {Kind::Choice, "Rules",
@@ -223,7 +210,8 @@ void MenuModel::change(Item item, int step) {
       computer_ = !computer_;
       break;
     case Item::Level: {
-      const int l = (static_cast<int>(level_) + step + 3) % 3;
+      const int n = static_cast<int>(ai::allLevels().size());
+      const int l = (static_cast<int>(level_) + step + n) % n;
       level_ = static_cast<ai::Level>(l);
       break;
     }

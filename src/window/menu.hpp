@@ -91,7 +91,7 @@ class MenuModel {
   bool settings_only_ = false;
   bool computer_ = false;
   bool muted_by_option_ = false;
-  ai::Level level_ = ai::Level::Medium;
+  ai::Level level_ = ai::Level::Club;
   int selected_ = 0;
   bool editing_ = false;
   Outcome outcome_ = Outcome::None;

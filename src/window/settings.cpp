@@ -145,7 +145,7 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
     if (o) {
       s.last.opponent = *o;
     } else {
-      warn(warnings, "last.opponent: expected human, ai:easy, ai:medium or ai:hard");
+      warn(warnings, "last.opponent: expected " + seatNamesText());
     }
   }
   if (const auto* v = field(*last, "rules")) {

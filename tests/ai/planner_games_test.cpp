@@ -65,7 +65,7 @@ TEST(PlannerEightBall, PotsItsOwnGroupAndNeverHitsTheOtherFirst) {
                      {BallState::at(0, {0.3, 0.0}), BallState::at(3, {1.15, 0.55}),
                       BallState::at(12, {0.75, -0.3}), BallState::at(8, {-0.8, 0.3}),
                       BallState::at(2, {-0.5, -0.4})}));
-  Planner planner(Level::Hard, 1);
+  Planner planner(Level::Master, 1);
   const Plan open = planner.plan(planInputFrom(match));
   EXPECT_NE(open.first, 8) << "the 8 may not be hit first on an open table";
   EXPECT_TRUE(open.kind == ShotKind::Pot || open.kind == ShotKind::Combination ||
@@ -103,7 +103,7 @@ TEST(PlannerEightBall, CallsTheEightWhereItMeansToPotIt) {
   ASSERT_TRUE(rack.callRequired());
   PlanInput in = planInputFrom(match);
   in.rack = rack;
-  Planner planner(Level::Medium, 1);
+  Planner planner(Level::Club, 1);
   const Plan plan = planner.plan(in);
   EXPECT_EQ(plan.kind, ShotKind::Pot);
   ASSERT_TRUE(plan.turn.call);
@@ -117,7 +117,7 @@ TEST(PlannerTenBall, EveryShotAfterTheBreakIsCalledAndTheMatchTakesIt) {
                      {BallState::at(0, {0.4, 0.1}), BallState::at(1, {1.0, 0.45}),
                       BallState::at(4, {-0.6, 0.2}), BallState::at(10, {-0.8, -0.3})}));
   ASSERT_TRUE(match.rack().callRequired());
-  Planner planner(Level::Medium, 1);
+  Planner planner(Level::Club, 1);
   const Plan plan = planner.plan(planInputFrom(match));
   ASSERT_TRUE(plan.turn.call);
   EXPECT_EQ(plan.turn.call->ball, plan.target);
@@ -140,7 +140,7 @@ TEST(PlannerPushOut, PushesOutWhenTheBallOnIsHiddenAndNotWhenItHangs) {
                        BallState::at(4, {1.11, 0.0}), BallState::at(6, {0.4, 0.55}),
                        BallState::at(7, {0.4, -0.55}), BallState::at(8, {-0.4, 0.55}),
                        BallState::at(9, {-0.4, -0.55})});
-  Planner planner(Level::Medium, 1);
+  Planner planner(Level::Club, 1);
   const Plan push = planner.plan(hidden);
   EXPECT_EQ(push.kind, ShotKind::PushOut) << nineball::ai::shotKindName(push.kind);
   EXPECT_EQ(push.turn.kind, TurnInput::Kind::PushOut);
@@ -164,7 +164,7 @@ TEST(PlannerLookAhead, SimulatesTheNextShotOnlyWhenTheTableIsKept) {
       inputWith(rack, {BallState::at(0, {0.4, 0.1}), BallState::at(1, {1.0, 0.45}),
                        BallState::at(2, {0.3, 0.4}), BallState::at(9, {-0.8, -0.3})});
   const nineball::TableGeometry table = nineball::buildTable(in.table, in.physics.ball_radius);
-  const nineball::ai::LevelSettings level = nineball::ai::LevelSettings::of(Level::Hard);
+  const nineball::ai::LevelSettings level = nineball::ai::LevelSettings::of(Level::Master);
   const nineball::ai::Evaluator eval(in, table);
   const nineball::ai::SearchContext ctx{in, table, level, in.physics.ball_radius, {1}};
 
@@ -196,8 +196,8 @@ void playOut(rules::Game game, std::uint64_t seed) {
   setup.game = game;
   setup.seed = seed;
   Match match(setup);
-  Planner a(Level::Medium, seed, 2);
-  Planner b(Level::Easy, seed + 7, 2);
+  Planner a(Level::Club, seed, 2);
+  Planner b(Level::Casual, seed + 7, 2);
   int turns = 0;
   while (!match.rack().over() && turns < 300) {
     Planner& p = match.rack().shooter() == rules::Player::A ? a : b;

@@ -17,7 +17,7 @@ TEST(MatchAiCli, TwoComputerPlayersPlayARackToItsEndTheSameWayEveryTime) {
   EXPECT_FALSE(doc["winner"].is_null());
   ASSERT_FALSE(doc["turns"].empty());
   for (const auto& t : doc["turns"]) {
-    EXPECT_EQ(t["player"], "ai:easy");
+    EXPECT_EQ(t["player"], "ai:casual");  // "easy" is the older name of casual
     if (!t.contains("decision")) {
       EXPECT_TRUE(t.contains("shot"));
     }
@@ -61,7 +61,7 @@ TEST(MatchAiCli, AHumanPlaysFromTheScriptUntilItRunsOut) {
   const auto doc = nlohmann::json::parse(r.out);
   ASSERT_GE(doc["turns"].size(), 2u);
   EXPECT_FALSE(doc["turns"][0].contains("player"));
-  EXPECT_EQ(doc["turns"][1]["player"], "ai:easy");
+  EXPECT_EQ(doc["turns"][1]["player"], "ai:casual");
   if (doc["winner"].is_null()) {
     EXPECT_EQ(doc["turns"].back()["next"], "A");
   }

@@ -69,7 +69,7 @@ TEST(MatchCliGames, BadGameFieldsAreRefused) {
   const std::pair<const char*, const char*> cases[] = {
       {R"({"game": "snooker", "turns": []})", "game: unknown game \"snooker\""},
       {R"({"game": "eight-ball", "rules": "paper", "turns": []})", "rules: the paper's rules"},
-      {R"({"game": "ten-ball", "players": {"A": "ai:pro"}})", "players.A: unknown player"},
+      {R"({"game": "ten-ball", "players": {"A": "ai:grandmaster"}})", "players.A: unknown player"},
       {R"({"turns": [{"heading_deg": 0, "speed": 1, "call": {"ball": 1, "pocket": "middle"}}]})",
        "turns[0].call.pocket: unknown pocket \"middle\""},
       {R"({"turns": [{"heading_deg": 0, "speed": 1, "call": {"ball": 16, "pocket": "top-left"}}]})",
@@ -118,18 +118,23 @@ TEST(MatchCliGames, BallsAndDecisionsOfAnotherGameAreRefusedByName) {
     const char* script;
     const char* message;
   };
-  for (const Case& c : {
-           Case{R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":16,"x":1.1,"y":0.465}],"players":{"A":"ai:easy","B":"ai:easy"}})",
-                ": balls: eight-ball has no ball 16 (1-15)"},
-           Case{R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":3,"x":1.1,"y":0.465}],"turns":[]})",
-                ": balls: an eight-ball layout needs the 8"},
-           Case{R"({"game":"ten-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":15,"x":1.1,"y":0.465}],"turns":[]})",
-                ": balls: ten-ball has no ball 15 (1-10)"},
-           Case{R"({"turns":[{"heading_deg":0,"speed":10},{"decision":"rerack"}]})",
-                ": turns[1].decision: expected \"shoot\" or \"pass\""},
-           Case{R"({"game":"eight-ball","turns":[{"heading_deg":0,"speed":10},{"decision":"pass"}]})",
-                ": turns[1].decision: expected \"play-on\" or \"rerack\""},
-       }) {
+  for (
+      const Case& c : {
+          Case{
+              R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":16,"x":1.1,"y":0.465}],"players":{"A":"ai:easy","B":"ai:easy"}})",
+              ": balls: eight-ball has no ball 16 (1-15)"},
+          Case{
+              R"({"game":"eight-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":3,"x":1.1,"y":0.465}],"turns":[]})",
+              ": balls: an eight-ball layout needs the 8"},
+          Case{
+              R"({"game":"ten-ball","balls":[{"id":0,"x":0.9,"y":0.265},{"id":15,"x":1.1,"y":0.465}],"turns":[]})",
+              ": balls: ten-ball has no ball 15 (1-10)"},
+          Case{R"({"turns":[{"heading_deg":0,"speed":10},{"decision":"rerack"}]})",
+               ": turns[1].decision: expected \"shoot\" or \"pass\""},
+          Case{
+              R"({"game":"eight-ball","turns":[{"heading_deg":0,"speed":10},{"decision":"pass"}]})",
+              ": turns[1].decision: expected \"play-on\" or \"rerack\""},
+      }) {
     const CliOutcome r = runMatch(c.script);
     EXPECT_EQ(r.status, 2) << c.script;
     EXPECT_TRUE(r.out.empty()) << c.script;

@@ -114,7 +114,7 @@ TEST(PlanCli, RefusesBadScenesWithStatus2AndNothingOnStdout) {
       {"{\"balls\": [", "invalid JSON"},
       {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "colour": 1})",
        "colour: unknown field"},
-      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "level": "pro"})",
+      {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "level": "grandmaster"})",
        "level: unknown level"},
       {R"({"balls": [{"id": 0, "x": 0, "y": 0}, {"id": 1, "x": 0.5, "y": 0}], "rules": "8"})",
        "rules: unknown rules"},

@@ -3,6 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
+#include "nineball/planner.hpp"
+
 namespace nineball {
 namespace {
 
@@ -14,28 +19,37 @@ TEST(Seat, APersonIsNoComputerAndHasNoLevel) {
 }
 
 TEST(Seat, TheComputerPlaysAtItsLevel) {
-  const Seat seat = ComputerSeat{ai::Level::Hard};
+  const Seat seat = ComputerSeat{ai::Level::Master};
   EXPECT_TRUE(isComputer(seat));
   ASSERT_TRUE(computerLevel(seat));
-  EXPECT_EQ(*computerLevel(seat), ai::Level::Hard);
-  EXPECT_EQ(seatName(seat), "ai:hard");
+  EXPECT_EQ(*computerLevel(seat), ai::Level::Master);
+  EXPECT_EQ(seatName(seat), "ai:master");
+}
+
+TEST(Seat, TheOlderNamesAreTheirLadderLevels) {
+  EXPECT_EQ(seatFromName("ai:easy"), Seat{ComputerSeat{ai::Level::Casual}});
+  EXPECT_EQ(seatFromName("ai:medium"), Seat{ComputerSeat{ai::Level::Club}});
+  EXPECT_EQ(seatFromName("ai:hard"), Seat{ComputerSeat{ai::Level::Master}});
+  const std::vector<std::string> names = seatNames();
+  EXPECT_EQ(names.size(), 1u + ai::allLevels().size() + 3u);
+  for (const std::string& name : names) EXPECT_TRUE(seatFromName(name)) << name;
 }
 
 TEST(Seat, ADefaultSeatIsAPerson) {
   EXPECT_EQ(Seat{}, Seat{HumanSeat{}});
-  EXPECT_NE(Seat{ComputerSeat{ai::Level::Easy}}, Seat{ComputerSeat{ai::Level::Medium}});
+  EXPECT_NE(Seat{ComputerSeat{ai::Level::Casual}}, Seat{ComputerSeat{ai::Level::Club}});
 }
 
 TEST(Seat, NamesReadBackAndUnknownOnesAreRefused) {
-  for (const Seat& seat :
-       {Seat{HumanSeat{}}, Seat{ComputerSeat{ai::Level::Easy}},
-        Seat{ComputerSeat{ai::Level::Medium}}, Seat{ComputerSeat{ai::Level::Hard}}}) {
+  std::vector<Seat> seats = {HumanSeat{}};
+  for (ai::Level l : ai::allLevels()) seats.emplace_back(ComputerSeat{l});
+  for (const Seat& seat : seats) {
     const auto back = seatFromName(seatName(seat));
     ASSERT_TRUE(back) << seatName(seat);
     EXPECT_EQ(*back, seat);
   }
-  for (const char* name :
-       {"", "Human", "ai:", "ai:pro", "ai:Easy", "easy", "ai:easy ", "computer"}) {
+  for (const char* name : {"", "Human", "ai:", "ai:grandmaster", "ai:Easy", "easy", "ai:easy ",
+                           "ai:Pro", "computer"}) {
     EXPECT_FALSE(seatFromName(name)) << name;
   }
 }

@@ -92,7 +92,7 @@ TEST(ComputerGames, DescribePlanSaysThePushOutTheFirstBallAndTheCall) {
 TEST(ComputerGames, TheComputersCallIsMadeInTheSessionShownAndPlayed) {
   GameSession s = tenBallForTheComputer();
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{ai::Level::Easy});
+  c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   ASSERT_TRUE(s.callRequired());
   s.setHeading(0.0);
   s.setSpeed(1.5);
@@ -122,7 +122,7 @@ TEST(ComputerGames, TheComputersCallIsMadeInTheSessionShownAndPlayed) {
 TEST(ComputerGames, AShotWithoutTheCallDueIsCalledTheObviousWay) {
   GameSession s = tenBallForTheComputer();
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{ai::Level::Easy});
+  c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   s.setHeading(0.0);
   s.setSpeed(1.5);
   s.callObvious();
@@ -146,7 +146,7 @@ TEST(ComputerGames, TheComputersPushOutIsDeclaredAndPlayedAsOne) {
   // 10 m/s from the head spot, so it may push out next.
   GameSession s{MatchSetup{}};
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{ai::Level::Easy});
+  c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   s.rematch();
   ASSERT_TRUE(c.controls(s));
   c.setWaitForPlans(true);
@@ -183,7 +183,7 @@ GameSession illegalEightBallBreak(ComputerPlayer& c) {
   MatchSetup setup;
   setup.game = rules::Game::EightBall;
   GameSession s(setup);
-  c.setOpponent(s, ComputerSeat{ai::Level::Easy});
+  c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   s.setSpeed(0.5);
   EXPECT_TRUE(s.shoot()) << s.message();
   EXPECT_TRUE(roll(s));
@@ -237,7 +237,7 @@ void playSomeTurns(rules::Game game) {
   setup.game = game;
   GameSession s(setup);
   ComputerPlayer c(5);
-  c.setOpponent(s, ComputerSeat{ai::Level::Easy});
+  c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   c.setWaitForPlans(true);
   int computer_turns = 0;
   bool planned = false;

@@ -85,14 +85,16 @@ TEST(Opponent, NamesAndTheCycleOfTheOKey) {
   ASSERT_TRUE(seatFromName("human"));
   EXPECT_EQ(*seatFromName("human"), Seat{HumanSeat{}});
   ASSERT_TRUE(seatFromName("ai:hard"));
-  EXPECT_EQ(*seatFromName("ai:hard"), Seat{ComputerSeat{Level::Hard}});
-  EXPECT_FALSE(seatFromName("ai:pro"));
-  EXPECT_EQ(nineball::seatName(ComputerSeat{Level::Medium}), "ai:medium");
-  EXPECT_EQ(nineball::app::opponentLabel(ComputerSeat{Level::Easy}), "vs computer (easy)");
+  EXPECT_EQ(*seatFromName("ai:hard"), Seat{ComputerSeat{Level::Master}});
+  EXPECT_FALSE(seatFromName("ai:grandmaster"));
+  EXPECT_EQ(nineball::seatName(ComputerSeat{Level::Club}), "ai:club");
+  EXPECT_EQ(nineball::app::opponentLabel(ComputerSeat{Level::Casual}), "vs computer (casual)");
   EXPECT_EQ(nineball::app::opponentLabel(HumanSeat{}), "2 players");
   Seat o;
-  for (Seat expected : {Seat{ComputerSeat{Level::Easy}}, Seat{ComputerSeat{Level::Medium}},
-                        Seat{ComputerSeat{Level::Hard}}, Seat{HumanSeat{}}}) {
+  for (Seat expected : {Seat{ComputerSeat{Level::Beginner}}, Seat{ComputerSeat{Level::Casual}},
+                        Seat{ComputerSeat{Level::Club}}, Seat{ComputerSeat{Level::League}},
+                        Seat{ComputerSeat{Level::Advanced}}, Seat{ComputerSeat{Level::Pro}},
+                        Seat{ComputerSeat{Level::Master}}, Seat{HumanSeat{}}}) {
     o = nextOpponent(o);
     EXPECT_EQ(o, expected);
   }
@@ -102,7 +104,7 @@ TEST(ComputerPlayer, OnlyPlayerTwosSeatAndOnlyWhenChosen) {
   GameSession s{MatchSetup{}};
   ComputerPlayer c(1);
   EXPECT_EQ(s.seatName(1), "Player 2");
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   EXPECT_EQ(s.seatName(1), "Computer");
   EXPECT_FALSE(c.controls(s));  // Player 1 breaks
   c.update(s, kFrame);
@@ -116,7 +118,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   GameSession s(layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
                         BallState::at(3, {0.0, 0.0}), BallState::at(9, {0.8, -0.3})}));
   ComputerPlayer c(7);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   std::atomic<bool> release{false};
   holdThinkingUntil(c, release);
   s.setHeading(0.0);
@@ -137,7 +139,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   const auto thinking = nineball::window::buildFrame(s, {}, c);
   EXPECT_FALSE(thinking.cue);
   EXPECT_EQ(thinking.hud.status, "Computer thinking...");
-  EXPECT_NE(thinking.hud.mode.find("vs computer (easy)"), std::string::npos);
+  EXPECT_NE(thinking.hud.mode.find("vs computer (casual)"), std::string::npos);
 
   release = true;
   std::set<Stage> seen;
@@ -168,7 +170,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
@@ -200,7 +202,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   EXPECT_EQ(s.heading(), heading);
   EXPECT_FALSE(s.pushOutDeclared());
   // O gives the seat back to a person, who may then play it.
-  for (int i = 0; i < 3; ++i) tap(sf::Keyboard::O);  // medium, hard, 2 players
+  for (int i = 0; i < 6; ++i) tap(sf::Keyboard::O);  // club ... master, then 2 players
   EXPECT_FALSE(nineball::isComputer(c.opponent()));
   EXPECT_FALSE(c.controls(s));
   tap(sf::Keyboard::Space);
@@ -211,7 +213,7 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   std::atomic<bool> release{false};
   holdThinkingUntil(c, release);
   s.setHeading(0.0);
@@ -225,7 +227,7 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   c.setOpponent(s, HumanSeat{});
   EXPECT_EQ(c.stage(), Stage::Idle);
   EXPECT_FALSE(c.controls(s));
-  c.setOpponent(s, ComputerSeat{Level::Medium});
+  c.setOpponent(s, ComputerSeat{Level::Club});
   c.update(s, kFrame);
   EXPECT_EQ(c.stage(), Stage::Thinking);
   release = true;
@@ -238,7 +240,7 @@ TEST(ComputerPlayer, APlannerThatFailsGivesAPlainShotAtTheBallOn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   c.setWaitForPlans(true);
   c.setThinker([](nineball::ai::Planner&, const nineball::ai::PlanInput&, bool) -> ComputerMove {
     throw std::runtime_error("no plan");
@@ -260,7 +262,7 @@ TEST(ComputerPlayer, AnswersAPushOut) {
   // may push out; the computer then chooses.
   GameSession s{MatchSetup{}};
   ComputerPlayer c(3);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   c.setWaitForPlans(true);
   ASSERT_TRUE(s.shoot());
   ASSERT_TRUE(roll(s));
@@ -287,7 +289,7 @@ TEST(ComputerPlayer, AnswersAPushOut) {
 TEST(ComputerPlayer, PlaysARackToTheEndAgainstTheTestsShots) {
   GameSession s{MatchSetup{}};
   ComputerPlayer c(1);
-  c.setOpponent(s, ComputerSeat{Level::Easy});
+  c.setOpponent(s, ComputerSeat{Level::Casual});
   c.setWaitForPlans(true);
   int computer_shots = 0, human_shots = 0;
   std::set<Stage> seen;

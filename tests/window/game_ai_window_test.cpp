@@ -55,7 +55,7 @@ void expectComputerTurns(const std::string& game) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(slurp(png).empty()) << "no screenshot";
   std::remove(png.c_str());
-  EXPECT_NE(r.err.find("opponent: vs computer (easy)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("opponent: vs computer (casual)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("Computer shoots:"), std::string::npos) << r.err;  // its own turn
   for (const char* bad : {"error", "refused", "cannot play"}) {
     EXPECT_EQ(r.err.find(bad), std::string::npos) << bad << " in:\n" << r.err;

@@ -24,7 +24,7 @@ int rowNamed(const MenuModel& m, const std::string& label) {
 
 TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   Settings s;
-  s.last.opponent = ComputerSeat{ai::Level::Hard};
+  s.last.opponent = ComputerSeat{ai::Level::Master};
   s.last.rules = rules::RuleSet::Paper;
   MenuModel m(s, std::nullopt);
   const int game = rowNamed(m, "Game");
@@ -48,7 +48,7 @@ TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.game, rules::Game::TenBall);
   EXPECT_EQ(c.mode, GameMode::Match);
-  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Hard}));
+  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Master}));
   EXPECT_EQ(c.rules, rules::RuleSet::Wpa);
   EXPECT_EQ(m.settings().last.game, rules::Game::TenBall);
 }
@@ -106,8 +106,8 @@ TEST(GameChoice, TheComputerTakesTheSeatInEveryGame) {
     setup.game = game;
     GameSession s(setup);
     ComputerPlayer computer(1);
-    computer.setOpponent(s, ComputerSeat{ai::Level::Medium});
-    EXPECT_EQ(computer.opponent(), Seat(ComputerSeat{ai::Level::Medium}));
+    computer.setOpponent(s, ComputerSeat{ai::Level::Club});
+    EXPECT_EQ(computer.opponent(), Seat(ComputerSeat{ai::Level::Club}));
     EXPECT_EQ(s.seatName(1), "Computer");
   }
 }

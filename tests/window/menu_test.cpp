@@ -55,8 +55,11 @@ TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
   EXPECT_TRUE(m.rows()[rowNamed(m, "Computer level")].enabled);
   EXPECT_FALSE(m.rows()[rowNamed(m, "Player 2 name")].enabled);
   selectRow(m, "Computer level");
-  m.key(MenuKey::Right);
-  EXPECT_EQ(m.rows()[m.selected()].value, "Hard");
+  EXPECT_EQ(m.rows()[m.selected()].value, "Club");
+  m.key(MenuKey::Left);
+  m.key(MenuKey::Left);
+  m.key(MenuKey::Left);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Master") << "the levels go round";
   selectRow(m, "Rules");
   m.key(MenuKey::Enter);
   EXPECT_EQ(m.rows()[m.selected()].value.substr(0, 5), "Paper");
@@ -65,11 +68,11 @@ TEST(Menu, ChoosesTheComputerItsLevelAndTheRules) {
   ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
   const MenuChoice c = m.choice();
   EXPECT_EQ(c.mode, GameMode::Match);
-  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Hard}));
+  EXPECT_EQ(c.opponent, Seat(ComputerSeat{ai::Level::Master}));
   EXPECT_EQ(c.rules, rules::RuleSet::Paper);
   EXPECT_FALSE(c.resume);
   // The settings keep the choice for the next start.
-  EXPECT_EQ(m.settings().last.opponent, Seat(ComputerSeat{ai::Level::Hard}));
+  EXPECT_EQ(m.settings().last.opponent, Seat(ComputerSeat{ai::Level::Master}));
   EXPECT_EQ(m.settings().last.rules, rules::RuleSet::Paper);
 }
 
@@ -115,9 +118,10 @@ TEST(Menu, ResumeComesFirstWhenARackIsSaved) {
 
 TEST(Menu, TheSettingsScreenEditsTheSettings) {
   Settings s;
-  s.last.opponent = ComputerSeat{ai::Level::Easy};
+  s.last.opponent = ComputerSeat{ai::Level::Casual};
   MenuModel m(s, std::nullopt);
-  EXPECT_EQ(m.choice().opponent, Seat(ComputerSeat{ai::Level::Easy}));  // preset from the last game
+  EXPECT_EQ(m.choice().opponent,
+            Seat(ComputerSeat{ai::Level::Casual}));  // preset from the last game
   selectRow(m, "Settings");
   m.key(MenuKey::Enter);
   ASSERT_EQ(m.screen(), MenuModel::Screen::Settings);

@@ -69,12 +69,12 @@ TEST_F(RackFiles, SaveLoadReplayGivesTheSameBalls) {
   const std::string path = rackSavePath();
   EXPECT_EQ(path, (dir_ / "nineball" / "rack.json").string());
   std::string why;
-  ASSERT_TRUE(saveRack(saveOf(played, ComputerSeat{ai::Level::Medium}), path, why)) << why;
+  ASSERT_TRUE(saveRack(saveOf(played, ComputerSeat{ai::Level::Club}), path, why)) << why;
   const auto loaded = loadRack(path);
   ASSERT_TRUE(loaded);
   EXPECT_EQ(loaded->turns.size(), played.rackTurns().size());
   EXPECT_EQ(loaded->names[0], "Ann");
-  EXPECT_EQ(loaded->opponent, Seat(ComputerSeat{ai::Level::Medium}));
+  EXPECT_EQ(loaded->opponent, Seat(ComputerSeat{ai::Level::Club}));
 
   MatchSetup again;
   again.rules = loaded->rules;

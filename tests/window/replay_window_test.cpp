@@ -62,7 +62,7 @@ std::string rackWithFouls() {
     MatchSetup setup;
     setup.seed = seed;
     Match match(setup);
-    ai::Planner planner(ai::Level::Easy, seed, 1);
+    ai::Planner planner(ai::Level::Casual, seed, 1);
     json turns = json::array();
     int fouls = 0;
     while (!match.rack().over() && turns.size() < 200) {

@@ -71,7 +71,7 @@ TEST_F(SettingsFiles, SaveThenLoadGivesTheSameSettings) {
   s.bank_line = true;
   s.frame_cap = 0;
   s.last.mode = GameMode::Practice;
-  s.last.opponent = ComputerSeat{ai::Level::Hard};
+  s.last.opponent = ComputerSeat{ai::Level::Master};
   s.last.rules = rules::RuleSet::Paper;
   s.last.names = {"Ann \u00e9", "Bob"};
   std::string why;
@@ -137,7 +137,7 @@ TEST_F(SettingsFiles, ABadFieldKeepsItsDefaultAndTheGoodOnesAreRead) {
   const Settings s = loadSettings(settingsPath());
   Settings want;
   want.muted = true;
-  want.last.opponent = ComputerSeat{ai::Level::Easy};
+  want.last.opponent = ComputerSeat{ai::Level::Casual};
   EXPECT_EQ(s, want);
   std::string warnings;
   settingsFromJson(nlohmann::json::parse(R"({"volume": -1, "frame_cap": 240})"), warnings);

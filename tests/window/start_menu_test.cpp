@@ -11,7 +11,7 @@ namespace {
 TEST(StartMenu, TheCommandLineWinsOverTheRememberedChoice) {
   Settings remembered;
   remembered.last.game = rules::Game::EightBall;
-  remembered.last.opponent = ComputerSeat{ai::Level::Hard};
+  remembered.last.opponent = ComputerSeat{ai::Level::Master};
   // nineball --game nine-ball --opponent human: both are the defaults, and both win.
   app::GameOptions options;
   options.game_given = true;
@@ -26,17 +26,17 @@ TEST(StartMenu, TheCommandLineWinsOverTheRememberedChoice) {
   Settings kept = remembered;
   presetFromCommandLine(kept, app::GameOptions{}, setup);
   EXPECT_EQ(kept.last.game, rules::Game::EightBall);
-  EXPECT_EQ(kept.last.opponent, Seat(ComputerSeat{ai::Level::Hard}));
+  EXPECT_EQ(kept.last.opponent, Seat(ComputerSeat{ai::Level::Master}));
 }
 
 TEST(StartMenu, TheBandBehindTheMenuSaysWhoPlaysAsTheMenuChooses) {
   Settings settings;
-  settings.last.opponent = ComputerSeat{ai::Level::Easy};
+  settings.last.opponent = ComputerSeat{ai::Level::Casual};
   const MenuModel model(settings, std::nullopt);
   render::Frame behind;
   behind.hud.mode = opponentModeLabel(HumanSeat{});  // the session still has two players
   const render::Frame shown = menuBackdrop(behind, model);
-  EXPECT_EQ(shown.hud.mode, opponentModeLabel(ComputerSeat{ai::Level::Easy}));
+  EXPECT_EQ(shown.hud.mode, opponentModeLabel(ComputerSeat{ai::Level::Casual}));
   EXPECT_NE(shown.hud.mode, behind.hud.mode);
 }
 
