@@ -60,6 +60,9 @@ struct LevelSettings {
   std::vector<double> lookahead_speeds;  ///< ... at these speeds (m/s)
   std::vector<Vec2> lookahead_tips;      ///< ... and tips
   int push_out_headings = 0;             ///< directions tried for a push-out (0: never pushes out)
+  /// Eight-ball: plays safe on any ball of its group (else the two nearest the cue ball) and
+  /// weighs how many balls of each group are left open to a pocket (clusters, blockers).
+  bool group_sense = false;
   /// The stroke model: the executed heading's standard deviation is aim_noise_deg on a
   /// straight shot at touching distance and moderate pace, multiplied by (1 + cut_growth
   /// sin^2 cut), (1 + reach_growth * metres from cue ball to first ball) and (1 + pace_growth *

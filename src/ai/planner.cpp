@@ -163,7 +163,8 @@ Plan Planner::plan(const PlanInput& in) {
   ball_radius_ = in.physics.ball_radius;
   const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
   const Evaluator eval(in, table,
-                       std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg));
+                       std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg),
+                       settings_.group_sense);
   const SearchContext ctx{in, table, settings_, in.physics.ball_radius, in.rack.legalFirstBalls()};
   const BallState* cue = findOnTable(in.balls, kCueBall);
   const bool placing = in.cue_in_hand || !cue;

@@ -36,8 +36,11 @@ constexpr int kBlindHeadings = 36;
 const double kSweepSpeeds[] = {1.0, 2.0, 3.5};
 // A push-out only has to leave the cue ball somewhere: soft, so that it is where it stops.
 const double kPushOutSpeeds[] = {0.6, 1.2, 2.0};
-// Safeties and kicks are tried on this many of the targets nearest the cue ball.
+// Safeties and kicks are tried at the level's angles on this many targets (the nearest the cue
+// ball); a level with group sense shares the same number of lines among all of them, never
+// fewer than the minimum each, so that a safety can use any ball of the group.
 constexpr int kSafetyTargets = 2;
+constexpr int kMinSafetyAnglesEach = 3;
 
 /// A direction to strike in, before speeds and tips are chosen.
 struct Line {
@@ -178,9 +181,8 @@ std::vector<Line> bankLines(const SearchContext& ctx, const std::vector<BallStat
 }
 
 std::vector<Line> safetyLines(const SearchContext& ctx, const std::vector<BallState>& balls,
-                              Vec2 cue, const BallState& on) {
+                              Vec2 cue, const BallState& on, int n) {
   std::vector<Line> lines;
-  const int n = ctx.level.safety_angles;
   const Vec2 along = normalized(on.pos - cue);
   for (int i = 0; i < n; ++i) {
     const double spread = n == 1 ? 0.0 : -kSafetySpread + 2.0 * kSafetySpread * i / (n - 1);
@@ -298,21 +300,26 @@ std::vector<Line> everyDirection(const SearchContext& ctx, int count) {
   return lines;
 }
 
-// The targets on the table, and the `count` of them nearest the cue ball (all for count < 0).
+// The targets on the table.
 std::vector<const BallState*> targetBalls(const SearchContext& ctx,
-                                          const std::vector<BallState>& balls, Vec2 cue,
-                                          int count = -1) {
+                                          const std::vector<BallState>& balls) {
   std::vector<const BallState*> out;
   for (int id : ctx.targets) {
     if (const BallState* b = objectBall(balls, id)) out.push_back(b);
   }
-  if (count >= 0 && static_cast<int>(out.size()) > count) {
-    std::stable_sort(out.begin(), out.end(), [&](const BallState* a, const BallState* b) {
-      return length(a->pos - cue) < length(b->pos - cue);
-    });
-    out.resize(static_cast<std::size_t>(count));
-  }
   return out;
+}
+
+// The targets a level plays safe on or kicks at: all of them with group sense, else the
+// kSafetyTargets nearest the cue ball.
+std::vector<const BallState*> safetyTargets(const SearchContext& ctx,
+                                            std::vector<const BallState*> ons, Vec2 cue) {
+  if (ctx.level.group_sense || ons.size() <= static_cast<std::size_t>(kSafetyTargets)) return ons;
+  std::stable_sort(ons.begin(), ons.end(), [&](const BallState* a, const BallState* b) {
+    return length(a->pos - cue) < length(b->pos - cue);
+  });
+  ons.resize(kSafetyTargets);
+  return ons;
 }
 
 // With several balls to choose from (a game of groups) the easiest lines are easier than with
@@ -321,6 +328,13 @@ std::vector<const BallState*> targetBalls(const SearchContext& ctx,
 // 59 of 100, think time median 0.23, 0.21 and 0.20 s.
 int potLineCount(const LevelSettings& level, std::size_t targets) {
   return targets > 1 ? (level.max_pot_lines * 5 + 7) / 8 : level.max_pot_lines;
+}
+
+// Safety angles for each of `targets` balls (odd, so that the straight one is among them).
+int safetyAnglesEach(const LevelSettings& level, std::size_t targets) {
+  if (targets <= static_cast<std::size_t>(kSafetyTargets)) return level.safety_angles;
+  const int each = level.safety_angles * kSafetyTargets / static_cast<int>(targets);
+  return std::max(kMinSafetyAnglesEach, each | 1);
 }
 
 // Lines of one generator for every ball in `ons`, in that order.
@@ -347,9 +361,8 @@ std::vector<Line> linesFor(const std::vector<const BallState*>& ons, int count, 
 std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<BallState>& balls,
                                  Vec2 cue, std::optional<Vec2> placed) {
   std::vector<Candidate> out;
-  const std::vector<const BallState*> ons = targetBalls(ctx, balls, cue);
-  // Safeties and kicks are played on the nearest targets only: they mean to hit, not to pot.
-  const std::vector<const BallState*> near = targetBalls(ctx, balls, cue, kSafetyTargets);
+  const std::vector<const BallState*> ons = targetBalls(ctx, balls);
+  const std::vector<const BallState*> safe_ons = safetyTargets(ctx, ons, cue);
   const LevelSettings& level = ctx.level;
   const std::vector<Vec2> centre{Vec2{}};
   if (!ons.empty()) {
@@ -368,13 +381,14 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
           ons, kMaxBankLines, [&](const BallState& on) { return bankLines(ctx, balls, cue, on); });
       expand(ctx, cue, banks, level.pot_speeds, centre, placed, out);
     }
-    const auto safeties =
-        allLinesFor(near, [&](const BallState& on) { return safetyLines(ctx, balls, cue, on); });
+    const int angles = safetyAnglesEach(level, safe_ons.size());
+    const auto safeties = allLinesFor(
+        safe_ons, [&](const BallState& on) { return safetyLines(ctx, balls, cue, on, angles); });
     expand(ctx, cue, safeties, level.safety_speeds, centre, placed, out);
     if (pots.empty() && safeties.empty()) {
       const std::vector<double> kick_speeds(std::begin(kKickSpeeds), std::end(kKickSpeeds));
-      const auto kicks =
-          allLinesFor(near, [&](const BallState& on) { return kickLines(ctx, balls, cue, on); });
+      const auto kicks = allLinesFor(
+          safe_ons, [&](const BallState& on) { return kickLines(ctx, balls, cue, on); });
       expand(ctx, cue, kicks, kick_speeds, centre, placed, out);
     }
   }
@@ -410,7 +424,7 @@ std::vector<Candidate> plainPots(const SearchContext& ctx, const std::vector<Bal
                                  Vec2 cue, int lines, const std::vector<double>& speeds,
                                  const std::vector<Vec2>& tips) {
   std::vector<Candidate> out;
-  const auto pots = linesFor(targetBalls(ctx, balls, cue), lines, [&](const BallState& on) {
+  const auto pots = linesFor(targetBalls(ctx, balls), lines, [&](const BallState& on) {
     return potLines(ctx, balls, cue, on, std::nullopt);
   });
   expand(ctx, cue, pots, speeds, tips, std::nullopt, out);

@@ -26,6 +26,14 @@ constexpr double kLeaveSpread = 0.4;
 constexpr double kShooterBase = 0.25;
 constexpr double kShooterSpread = 0.5;
 
+// Eight-ball: how much the balls of each group still open to a pocket weigh in a position
+// (one group all open and the other all blocked or clustered is worth this much either way).
+// Small beside a pot's worth: it settles the choice among shots the rest scores alike, which
+// group to take, where to leave blockers, which cluster to open.
+constexpr double kGroupWeight = 0.1;
+// A legal shot that leaves the table stays worth more than any foul.
+constexpr double kLeaveFloor = kFoulValueTop + 0.005;
+
 bool contains(const std::vector<int>& v, int x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
@@ -56,11 +64,13 @@ void keepFreedHeap() {
 
 }  // namespace
 
-Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg)
+Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double judging_aim_deg,
+                     bool group_sense)
     : in_(in),
       table_(table),
       step_(in.step),
       sigma_rad_(degToRad(judging_aim_deg)),
+      group_sense_(group_sense),
       legal_first_(in.rack.legalFirstBalls()) {
   keepFreedHeap();
   step_.max_time = std::min(step_.max_time, kMaxShotTime);
@@ -157,6 +167,22 @@ double Evaluator::chanceFrom(const std::vector<BallState>& after, const rules::R
   return best;
 }
 
+double Evaluator::groupBalance(const Outcome& o) const {
+  if (!group_sense_ || o.rack.game() != rules::Game::EightBall) return 0.0;
+  const rules::Player me = in_.rack.shooter();
+  const std::optional<rules::Group> mine = o.rack.groups().of(me);
+  if (!mine) return 0.0;
+  std::vector<int> my_balls;
+  std::vector<int> their_balls;
+  for (int id = 1; id <= 15; ++id) {
+    const std::optional<rules::Group> g = rules::groupOf(id);
+    if (g) (*g == *mine ? my_balls : their_balls).push_back(id);
+  }
+  const double r = in_.physics.ball_radius;
+  return kGroupWeight *
+         (openShare(table_, r, o.balls, my_balls) - openShare(table_, r, o.balls, their_balls));
+}
+
 double Evaluator::score(const Outcome& o) const {
   const rules::Verdict& verdict = o.verdict;
   const rules::Player me = in_.rack.shooter();
@@ -170,12 +196,14 @@ double Evaluator::score(const Outcome& o) const {
       chance = chanceFrom(o.balls, o.rack, {table_.headStringX(), 0.0});
     }
   }
-  if (verdict.next == me) return kContinueBase + kContinueSpread * chance;
+  if (verdict.next == me) return kContinueBase + kContinueSpread * chance + groupBalance(o);
   if (verdict.legal() && verdict.decision == rules::Decision::PlayOrPass) {
     const double shooter = kShooterBase + kShooterSpread * chance;
     return std::min(shooter, 1.0 - shooter);
   }
-  if (verdict.legal()) return kLeaveBase - kLeaveSpread * chance;
+  if (verdict.legal()) {
+    return std::max(kLeaveFloor, kLeaveBase - kLeaveSpread * chance + groupBalance(o));
+  }
   return kFoulValueTop * (1.0 - chance);
 }
 

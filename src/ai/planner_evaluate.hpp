@@ -51,8 +51,9 @@ struct Outcome {
 class Evaluator {
  public:
   /// `judging_aim_deg`: the aim error of the player whose chances a position is judged by.
+  /// `group_sense`: eight-ball positions are also judged by the groups' open balls.
   Evaluator(const PlanInput& in, const TableGeometry& table,
-            double judging_aim_deg = kReferenceAimDeg);
+            double judging_aim_deg = kReferenceAimDeg, bool group_sense = false);
 
   /// The worth of the outcome of the candidate struck with `shot` (its own, or one with
   /// cueing errors): the cue ball placed first when it says so, its call, a push-out if it is.
@@ -71,6 +72,9 @@ class Evaluator {
   double judgingSigma() const { return sigma_rad_; }
 
  private:
+  // Eight-ball with the groups set: the shooter's balls open to a pocket against the
+  // opponent's (kGroupWeight times the difference of their shares); 0 otherwise.
+  double groupBalance(const Outcome& o) const;
   // The best chance of potting any ball `rack` allows first, from a cue ball at `cue`.
   double chanceFrom(const std::vector<BallState>& after, const rules::Rack& rack, Vec2 cue) const;
 
@@ -80,6 +84,7 @@ class Evaluator {
   std::uint64_t id_ = 0;  // which evaluator a thread's kept engine was made for
   Engine& engineForThisThread() const;
   double sigma_rad_;
+  bool group_sense_;
   std::vector<int> legal_first_;  // what the cue ball may hit first, found once per position
 };
 

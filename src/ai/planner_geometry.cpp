@@ -97,6 +97,26 @@ double bestPotChance(const TableGeometry& table, double radius, const std::vecto
   return best;
 }
 
+double openShare(const TableGeometry& table, double radius, const std::vector<BallState>& balls,
+                 const std::vector<int>& ids) {
+  int left = 0;
+  int open = 0;
+  for (int id : ids) {
+    const BallState* b = objectBall(balls, id);
+    if (!b) continue;
+    ++left;
+    for (const Pocket& pocket : table.pockets) {
+      const Vec2 target = pocketAim(pocket, 0.0, radius);
+      if (entersPocket(pocket, target - b->pos) &&
+          pathClear(b->pos, target, radius, balls, id, kCueBall)) {
+        ++open;
+        break;
+      }
+    }
+  }
+  return left == 0 ? 1.0 : static_cast<double>(open) / left;
+}
+
 RailLine railLine(int rail, const TableDef& table, double radius) {
   const double hx = table.length / 2.0 - radius;
   const double hy = table.width / 2.0 - radius;

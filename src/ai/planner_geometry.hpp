@@ -49,6 +49,12 @@ double potChance(const GhostLine& line, const Pocket& pocket, double radius, dou
 double bestPotChance(const TableGeometry& table, double radius, const std::vector<BallState>& balls,
                      Vec2 cue, int ball_on, double sigma_rad);
 
+/// The share, 0..1, of the balls `ids` still on the table that have a clear straight path into
+/// some pocket (the cue ball, which will move, left out); 1 when none is left. A ball in a
+/// cluster, or behind another ball from every pocket, has none.
+double openShare(const TableGeometry& table, double radius, const std::vector<BallState>& balls,
+                 const std::vector<int>& ids);
+
 /// One of the four lines a ball's centre bounces off, `radius` inside a cushion nose: the
 /// points x with dot(normal, x) = offset; `normal` points off the table.
 struct RailLine {

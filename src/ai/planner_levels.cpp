@@ -134,6 +134,7 @@ void searchLikeAClubPlayer(LevelSettings& s) {
   s.lookahead_speeds = {1.2, 2.5};
   s.lookahead_tips = {{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.3}};
   s.push_out_headings = 24;
+  s.group_sense = true;
 }
 
 void searchLikeAnExpert(LevelSettings& s) {
@@ -157,6 +158,7 @@ void searchLikeAnExpert(LevelSettings& s) {
   s.lookahead_speeds = {1.0, 1.9, 3.2};
   s.lookahead_tips = {{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.3}};
   s.push_out_headings = 36;
+  s.group_sense = true;
 }
 
 // An expert's search without side spin or banks, aiming at two points of each pocket.
@@ -168,6 +170,7 @@ void searchLikeALeaguePlayer(LevelSettings& s) {
   s.banks = false;
   s.placements = 12;
   s.sweep_headings = 150;
+  s.break_speeds = {7.5, 8.5};
   s.robust_top = 10;
   s.robust_steps = 4;
   s.lookahead_top = 5;
@@ -216,11 +219,11 @@ LevelSettings LevelSettings::of(Level level) {
       break;
     case Level::League:
       searchLikeALeaguePlayer(s);
-      cue(s, {0.18, 0.45, 0.3, 0.3, 0.035, 0.0012});
+      cue(s, {0.16, 0.45, 0.3, 0.3, 0.035, 0.0012});
       break;
     case Level::Advanced:
       searchLikeAnExpert(s);
-      cue(s, {0.165, 0.4, 0.25, 0.25, 0.03, 0.001});
+      cue(s, {0.15, 0.4, 0.25, 0.25, 0.03, 0.001});
       break;
     case Level::Pro:
       searchLikeAnExpert(s);

@@ -255,6 +255,8 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     }
     v.a = *a;
     v.b = *b;
+    v.a_name = ai::levelName(*a);  // an older name is reported as the level it stands for
+    v.b_name = ai::levelName(*b);
     v.racks = options.racks;
     versus = v;
   }
@@ -283,7 +285,7 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   if (options.json) {
     nlohmann::ordered_json j;
     j["game"] = options.game;
-    j["level"] = options.level;
+    j["level"] = ai::levelName(*level);
     j["noise"] = options.noise;
     j["positions"] = {
         {"made", positions.potted}, {"fouls", positions.fouls}, {"of", options.positions}};
@@ -303,7 +305,7 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     return out ? kExitOk : kExitInternal;
   }
   out << std::fixed << std::setprecision(2);
-  out << "Computer opponent, " << options.game << ", level " << options.level << ", "
+  out << "Computer opponent, " << options.game << ", level " << ai::levelName(*level) << ", "
       << options.threads << " threads, seeds from " << options.seed
       << (options.noise == "level" ? "" : ", " + options.noise + " noise") << "\n";
   const char* aim = gameDef(*game).made;

@@ -11,7 +11,7 @@ namespace nineball::app {
 
 /// Options of `nineball ai-bench`.
 struct AiBenchOptions {
-  std::string level = "hard";             ///< the level measured
+  std::string level = "master";           ///< the level measured (or an older name)
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
   int positions = 100;                    ///< seeded practice positions to pot the ball on from
   int racks = 100;                        ///< racks broken to try to run out

@@ -24,7 +24,7 @@ TEST(AiBenchJson, OneObjectWithEveryFieldOfTheContract) {
   EXPECT_EQ(keys, (std::vector<std::string>{"game", "level", "noise", "positions", "racks", "shots",
                                             "think_s", "shots_simulated_per_cpu_s"}));
   EXPECT_EQ(j["game"], "eight-ball");
-  EXPECT_EQ(j["level"], "easy");
+  EXPECT_EQ(j["level"], "casual");  // "easy" is its older name
   EXPECT_EQ(j["noise"], "level");
   EXPECT_EQ(j["positions"]["of"], 4);
   EXPECT_LE(j["positions"]["made"].get<int>(), 4);
@@ -50,15 +50,15 @@ TEST(AiBenchJson, TheTournamentNoiseIsNamedAndChangesTheCueing) {
 }
 
 TEST(AiBenchJson, VersusPlaysWholeRacksBetweenTwoLevels) {
-  const nlohmann::ordered_json j = benchJson("--versus easy,hard --racks 4 --positions 0");
+  const nlohmann::ordered_json j = benchJson("--versus beginner,hard --racks 4 --positions 0");
   ASSERT_TRUE(j.contains("versus"));
   const auto& v = j["versus"];
-  EXPECT_EQ(v["A"], "easy");
-  EXPECT_EQ(v["B"], "hard");
+  EXPECT_EQ(v["A"], "beginner");
+  EXPECT_EQ(v["B"], "master");
   EXPECT_EQ(v["racks"], 4);
   const int a = v["wins"]["A"], b = v["wins"]["B"];
   EXPECT_LE(a + b, 4);
-  EXPECT_GT(b, a);                 // the break alternates, and hard wins anyway
+  EXPECT_GT(b, a);                 // the break alternates, and master wins anyway
   EXPECT_EQ(j["racks"]["of"], 0);  // no run-out racks of --level were played
   const CliOutcome bad = runNineball("ai-bench --versus easy --racks 2 --positions 0");
   EXPECT_EQ(bad.status, 2);
