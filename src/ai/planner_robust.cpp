@@ -1,5 +1,6 @@
 #include "ai/planner_robust.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -35,7 +36,13 @@ RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
     const int s = static_cast<int>(j % per) % kSpeedCount;
     Shot shot = c.shot;
     shot.heading_rad += a * step;
-    shot.speed *= 1.0 + kSpeedErrors[s] * speed_error;
+    if (level.speed_noise_ms > 0.0) {
+      // A speed error in m/s (the tournaments' noise) weighs most on the softest strokes.
+      const double sd = std::hypot(speed_error * c.shot.speed, error_scale * level.speed_noise_ms);
+      shot.speed = std::max(0.0, c.shot.speed + kSpeedErrors[s] * sd);
+    } else {
+      shot.speed *= 1.0 + kSpeedErrors[s] * speed_error;
+    }
     grid[j] = eval.value(c, shot);
   });
 
