@@ -109,18 +109,21 @@ TEST(Planner, PrefersALegalPotToAFoul) {
 TEST(Planner, TheSameInputGivesTheSamePlanOnOneOrTwoThreads) {
   Match match(layout(
       {ball(0, {-0.6, 0.2}), ball(3, {0.2, -0.1}), ball(4, {0.7, 0.35}), ball(9, {-0.1, 0.4})}));
-  Planner one(Level::Club, 5, 1);
-  Planner two(Level::Club, 5, 2);
-  const Plan a = one.plan(planInputFrom(match));
-  const Plan b = two.plan(planInputFrom(match));
-  EXPECT_EQ(a.turn.shot.heading_rad, b.turn.shot.heading_rad);
-  EXPECT_EQ(a.turn.shot.speed, b.turn.shot.speed);
-  EXPECT_EQ(a.value, b.value);
-  EXPECT_EQ(a.simulations, b.simulations);
-  const TurnInput ea = one.execute(a);
-  const TurnInput eb = two.execute(b);
-  EXPECT_EQ(ea.shot.heading_rad, eb.shot.heading_rad);
-  EXPECT_EQ(ea.shot.speed, eb.shot.speed);
+  for (Level level : allLevels()) {
+    Planner one(level, 5, 1);
+    Planner two(level, 5, 2);
+    const Plan a = one.plan(planInputFrom(match));
+    const Plan b = two.plan(planInputFrom(match));
+    EXPECT_EQ(a.turn.shot.heading_rad, b.turn.shot.heading_rad) << levelName(level);
+    EXPECT_EQ(a.turn.shot.speed, b.turn.shot.speed) << levelName(level);
+    EXPECT_EQ(a.value, b.value) << levelName(level);
+    EXPECT_EQ(a.simulations, b.simulations) << levelName(level);
+    const TurnInput ea = one.execute(a);
+    const TurnInput eb = two.execute(b);
+    EXPECT_EQ(ea.shot.heading_rad, eb.shot.heading_rad) << levelName(level);
+    EXPECT_EQ(ea.shot.speed, eb.shot.speed) << levelName(level);
+    EXPECT_EQ(ea.shot.tip.x, eb.shot.tip.x) << levelName(level);
+  }
 }
 
 TEST(Planner, ExecutionNoiseGrowsFromHardToEasy) {
