@@ -94,7 +94,8 @@ struct ExecutionNoise {
   /// 0.1 degree of aim, 0.125 degree of elevation, 0.075 m/s of speed, 0.5 mm of each tip
   /// offset, on every shot.
   static ExecutionNoise olympiad();
-  /// "olympiad"; nothing for any other name ("level", the level's own, is the caller's).
+  /// "olympiad", or "none" (every shot struck as planned, to measure a level's choices apart
+  /// from its cueing); nothing for any other name ("level", the level's own, is the caller's).
   static std::optional<ExecutionNoise> named(const std::string& name);
   /// The settings with this noise in place of their own.
   void applyTo(LevelSettings& s) const;

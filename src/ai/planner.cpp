@@ -210,6 +210,7 @@ ExecutionNoise ExecutionNoise::olympiad() {
 
 std::optional<ExecutionNoise> ExecutionNoise::named(const std::string& name) {
   if (name == "olympiad") return olympiad();
+  if (name == "none") return ExecutionNoise{};
   return std::nullopt;
 }
 

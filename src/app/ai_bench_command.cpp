@@ -219,10 +219,11 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   cmd->add_option("--threads", options.threads, "Workers simulating candidates")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
-  cmd->add_option("--noise", options.noise,
-                  "Cueing errors: the level's own, or the computer-pool tournaments' (olympiad: "
-                  "0.1 deg aim, 0.125 deg elevation, 0.075 m/s, 0.5 mm tip)")
-      ->check(CLI::IsMember({"level", "olympiad"}))
+  cmd->add_option(
+         "--noise", options.noise,
+         "Cueing errors: the level's own, none, or the computer-pool tournaments' (olympiad: "
+         "0.1 deg aim, 0.125 deg elevation, 0.075 m/s, 0.5 mm tip)")
+      ->check(CLI::IsMember({"level", "none", "olympiad"}))
       ->capture_default_str();
   cmd->add_flag("--json", options.json, "Print one JSON object instead of the report");
   cmd->add_option("--versus", options.versus,

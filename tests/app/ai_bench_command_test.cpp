@@ -47,6 +47,13 @@ TEST(AiBenchJson, TheTournamentNoiseIsNamedAndChangesTheCueing) {
   EXPECT_EQ(olympiad["noise"], "olympiad");
   // The same seeds and planner, other cueing errors: the racks are played out differently.
   EXPECT_NE(level["shots"], olympiad["shots"]);
+  const nlohmann::ordered_json none =
+      benchJson("--game nine-ball --level beginner --positions 6 --racks 0 --noise none");
+  const nlohmann::ordered_json own =
+      benchJson("--game nine-ball --level beginner --positions 6 --racks 0");
+  EXPECT_EQ(none["noise"], "none");
+  EXPECT_GT(none["positions"]["made"].get<int>(), own["positions"]["made"].get<int>())
+      << "a beginner struck as planned pots more";
 }
 
 TEST(AiBenchJson, VersusPlaysWholeRacksBetweenTwoLevels) {
