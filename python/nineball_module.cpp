@@ -6,8 +6,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "nineball/json.hpp"
@@ -27,16 +30,42 @@ py::object plain(py::handle o) {
       py::str(py::type::of(o)).cast<std::string>());
 }
 
+// The first number in `o` that JSON cannot hold (NaN or an infinity), as "balls[0].x"; empty
+// when there is none. JSON text would only say where in the text the parser stopped.
+std::string nonFiniteAt(py::handle o, const std::string& path) {
+  if (py::isinstance<py::float_>(o)) {
+    return std::isfinite(o.cast<double>()) ? std::string() : path;
+  }
+  if (py::isinstance<py::dict>(o)) {
+    for (auto item : o.cast<py::dict>()) {
+      const std::string key = py::str(item.first).cast<std::string>();
+      const std::string found = nonFiniteAt(item.second, path.empty() ? key : path + "." + key);
+      if (!found.empty()) return found;
+    }
+  } else if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
+    std::size_t i = 0;
+    for (py::handle v : o) {
+      const std::string found = nonFiniteAt(v, path + "[" + std::to_string(i++) + "]");
+      if (!found.empty()) return found;
+    }
+  }
+  return {};
+}
+
 // The scene as the command line would read it: a str is the JSON text itself.
-std::string sceneText(py::handle scene) {
+std::string sceneText(py::handle scene, const std::string& where) {
   if (py::isinstance<py::str>(scene)) return scene.cast<std::string>();
+  const std::string bad = nonFiniteAt(scene, "");
+  if (!bad.empty()) {
+    throw py::value_error(where + bad + ": expected a finite number, found NaN or an infinity");
+  }
   // Looked up on each call: a static Python object would outlive the interpreter.
   const py::object dumps = py::module_::import("json").attr("dumps");
   return dumps(scene, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
 }
 
 Scene parse(py::handle scene, const std::string& where) {
-  auto parsed = readScene(sceneText(scene));
+  auto parsed = readScene(sceneText(scene, where));
   if (const auto* refused = std::get_if<SceneRefusal>(&parsed)) {
     throw py::value_error(where + refused->message);
   }
@@ -130,8 +159,31 @@ py::object simulateOne(py::handle scene) {
   return resultToPython(std::move(r));
 }
 
-py::list simulateMany(const py::iterable& scenes, int threads) {
-  if (threads < 0) throw py::value_error("threads: must be >= 0 (0: one per core)");
+// `threads` as given, checked: an int (not a bool) of 0 (one per core) up to the cores there
+// are; more would only queue behind each other, and thousands could fail to start.
+int threadCount(py::handle threads) {
+  if (!py::isinstance<py::int_>(threads) || py::isinstance<py::bool_>(threads)) {
+    throw py::type_error("threads: expected an int, found " +
+                         py::str(py::type::of(threads).attr("__name__")).cast<std::string>());
+  }
+  const long long n = threads.cast<long long>();
+  const long long cores = std::max(1u, std::thread::hardware_concurrency());
+  if (n < 0) throw py::value_error("threads: must be >= 0 (0: one per core)");
+  return static_cast<int>(std::min(n, cores));
+}
+
+py::list simulateMany(py::handle scenes, py::handle threads_given) {
+  if (py::isinstance<py::dict>(scenes) || py::isinstance<py::str>(scenes) ||
+      py::isinstance<py::bytes>(scenes)) {
+    throw py::type_error(std::string("scenes: expected a list of scenes, found one ") +
+                         (py::isinstance<py::dict>(scenes) ? "dict (use simulate, or [scene])"
+                                                           : "string (use simulate, or [scene])"));
+  }
+  if (!py::isinstance<py::iterable>(scenes)) {
+    throw py::type_error("scenes: expected a list of scenes, found " +
+                         py::str(py::type::of(scenes).attr("__name__")).cast<std::string>());
+  }
+  const int threads = threadCount(threads_given);
   std::vector<Scene> parsed;
   std::size_t i = 0;
   for (py::handle scene : scenes) {
@@ -165,6 +217,6 @@ PYBIND11_MODULE(nineball, m) {
         "Simulates one scene (a dict or JSON text) and returns the result dict.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
         "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "
-        "them on `threads` threads (0: one per core) with the GIL released; the results in "
-        "order.");
+        "them on `threads` threads (0: one per core; more than the cores are capped to them) "
+        "with the GIL released; the results in order.");
 }

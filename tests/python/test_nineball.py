@@ -171,3 +171,36 @@ def test_without_numpy_traces_are_lists():
     assert run.returncode == 0, run.stderr
     _, out, _ = cli(scene)
     assert json.loads(run.stdout) == json.loads(out)["trace"]["0"]
+
+
+def test_a_number_json_cannot_hold_is_named_by_its_field():
+    for bad in (float("nan"), float("inf"), -float("inf")):
+        scene = stun()
+        scene["balls"][1]["x"] = bad
+        with pytest.raises(ValueError, match=r"^balls\[1\]\.x: expected a finite number"):
+            nineball.simulate(scene)
+        with pytest.raises(ValueError, match=r"^scenes\[1\]: balls\[1\]\.x: expected a finite"):
+            nineball.simulate_many([stun(), scene])
+
+
+def test_simulate_many_refuses_one_scene_passed_alone():
+    with pytest.raises(TypeError, match="scenes: expected a list of scenes, found one dict"):
+        nineball.simulate_many(stun())
+    with pytest.raises(TypeError, match="found one string"):
+        nineball.simulate_many(json.dumps(stun()))
+    with pytest.raises(TypeError, match="found int"):
+        nineball.simulate_many(3)
+
+
+def test_threads_are_checked_briefly_and_capped_at_the_cores():
+    for bad in (True, 1.5, "2", [stun()] * 1000):
+        with pytest.raises(TypeError) as refused:
+            nineball.simulate_many([stun()], threads=bad)
+        assert str(refused.value).startswith("threads: expected an int, found ")
+        assert len(str(refused.value)) < 100
+    with pytest.raises(ValueError, match="threads: must be >= 0"):
+        nineball.simulate_many([stun()], threads=-1)
+    # Far more threads than cores: capped, the same results in order, no thread storm.
+    many = nineball.simulate_many([stun(speed=1.0 + i / 10) for i in range(6)], threads=5000)
+    one = nineball.simulate_many([stun(speed=1.0 + i / 10) for i in range(6)], threads=1)
+    assert [without_wall_time(r) for r in many] == [without_wall_time(r) for r in one]
