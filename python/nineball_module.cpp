@@ -7,12 +7,20 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
+#include "common/cancel.hpp"
 #include "nineball/json.hpp"
 #include "nineball/sim.hpp"
 
@@ -148,13 +156,64 @@ void checkResult(const Scene& scene, const SimResult& result, const std::string&
   }
 }
 
+// How often a waiting call looks for Ctrl-C.
+constexpr std::chrono::milliseconds kSignalPoll{25};
+
+// Runs `work` on a thread of its own, the GIL released, and looks for a signal (Ctrl-C, a
+// notebook's "interrupt kernel") every kSignalPoll meanwhile: on one, the flag handed to
+// `work` stops its runs at their next event, and once they have stopped the handler's
+// exception (KeyboardInterrupt) is raised, the unfinished results dropped. Without a thread
+// to be had it runs where it is, uninterruptible as before.
+void runInterruptibly(const std::function<void(const std::atomic<bool>*)>& work) {
+  std::atomic<bool> cancel{false};
+  std::exception_ptr failure;
+  bool done = false;
+  bool interrupted = false;
+  std::mutex m;
+  std::condition_variable finished;
+  {
+    const py::gil_scoped_release unlocked;
+    std::thread worker;
+    try {
+      worker = std::thread([&] {
+        try {
+          work(&cancel);
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        const std::lock_guard<std::mutex> lock(m);
+        done = true;
+        finished.notify_all();
+      });
+    } catch (const std::system_error&) {
+      work(nullptr);
+      return;
+    }
+    for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(m);
+        if (finished.wait_for(lock, kSignalPoll, [&] { return done; })) break;
+      }
+      const py::gil_scoped_acquire locked;
+      if (PyErr_CheckSignals() != 0) {
+        interrupted = true;
+        cancel = true;
+        break;
+      }
+    }
+    worker.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (failure) std::rethrow_exception(failure);
+}
+
 py::object simulateOne(py::handle scene) {
   const Scene s = parse(scene, "");
   SimResult r;
-  {
-    const py::gil_scoped_release unlocked;
+  runInterruptibly([&](const std::atomic<bool>* cancel) {
+    const CancelScope scope(cancel);
     r = simulate(s);
-  }
+  });
   checkResult(s, r, "");
   return resultToPython(std::move(r));
 }
@@ -191,10 +250,8 @@ py::list simulateMany(py::handle scenes, py::handle threads_given) {
     ++i;
   }
   std::vector<SimResult> results;
-  {
-    const py::gil_scoped_release unlocked;
-    results = simulateMany(parsed, threads);
-  }
+  runInterruptibly(
+      [&](const std::atomic<bool>* cancel) { results = simulateMany(parsed, threads, cancel); });
   py::list out;
   for (std::size_t k = 0; k < results.size(); ++k) {
     checkResult(parsed[k], results[k], "scenes[" + std::to_string(k) + "]: ");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,7 +58,10 @@ SimResult simulate(const Scene& scene);
 
 /// Runs checked scenes on up to `threads` threads (the caller's included; 0 for one per core),
 /// each as simulate() runs it alone: the results, in order, do not depend on the threads.
-std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads);
+/// With `cancel`, every run stops at its next event once it is raised, and no scene is started
+/// after: the results are then unfinished and the caller's to throw away.
+std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads,
+                                    const std::atomic<bool>* cancel = nullptr);
 
 /// Empty when the result keeps its promises: every number finite, every ball on the table
 /// (its centre inside the cushions) or pocketed. Else what is broken: a defect of the engine,

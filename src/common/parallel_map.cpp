@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -28,7 +29,13 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
       static_cast<std::size_t>(std::max(threads, 1)) - 1, count > 0 ? count - 1 : 0);
   std::vector<std::thread> pool;
   pool.reserve(helpers);
-  for (std::size_t t = 0; t < helpers; ++t) pool.emplace_back(drain);
+  for (std::size_t t = 0; t < helpers; ++t) {
+    try {
+      pool.emplace_back(drain);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had (address space, a process limit): fewer do the work
+    }
+  }
   drain();
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);

@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/parallel_map.hpp"
 #include "nineball/engine.hpp"
@@ -204,11 +205,14 @@ SimResult simulate(const Scene& scene) {
   return result;
 }
 
-std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads) {
+std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads,
+                                    const std::atomic<bool>* cancel) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<SimResult> results(scenes.size());
-  parallelFor(scenes.size(), threads > 0 ? threads : cores,
-              [&](std::size_t k) { results[k] = simulate(scenes[k]); });
+  parallelFor(scenes.size(), threads > 0 ? threads : cores, [&](std::size_t k) {
+    const CancelScope scope(cancel);
+    if (!cancelRequested()) results[k] = simulate(scenes[k]);
+  });
   return results;
 }
 

@@ -204,3 +204,74 @@ def test_threads_are_checked_briefly_and_capped_at_the_cores():
     many = nineball.simulate_many([stun(speed=1.0 + i / 10) for i in range(6)], threads=5000)
     one = nineball.simulate_many([stun(speed=1.0 + i / 10) for i in range(6)], threads=1)
     assert [without_wall_time(r) for r in many] == [without_wall_time(r) for r in one]
+
+
+def long_run():
+    """A row of 29 balls bouncing end to end without friction for an hour of simulated time:
+    about 700,000 events, some seconds of work."""
+    return {
+        "physics": {"preset": "paper", "rolling_friction": 0.0, "cushion_restitution": 1.0,
+                    "ball_restitution": 1.0},
+        "step": {"max_time": 3600},
+        "balls": [{"id": 0, "x": -1.1, "y": 0.0}]
+        + [{"id": i, "x": -1.0 + 0.07 * i, "y": 0.0} for i in range(1, 29)],
+        "shot": {"heading_deg": 0, "speed": 6},
+    }
+
+
+def interrupted_after(seconds, call):
+    """Runs `call` with Ctrl-C sent to this process after `seconds`; the seconds until it gave
+    up with KeyboardInterrupt."""
+    import signal
+    import threading
+    import time
+
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    started = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+    finally:
+        timer.cancel()
+    return time.monotonic() - started
+
+
+def test_ctrl_c_stops_a_long_run_at_its_next_event():
+    assert interrupted_after(0.3, lambda: nineball.simulate(long_run())) < 2.0
+    # The module is none the worse: the next call runs as ever.
+    assert nineball.simulate(stun())["end"] == "rest"
+
+
+def test_ctrl_c_stops_a_batch_and_drops_its_results():
+    assert interrupted_after(0.3, lambda: nineball.simulate_many([long_run()] * 4)) < 2.0
+    assert len(nineball.simulate_many([stun()] * 3)) == 3
+
+
+def test_thousands_of_threads_asked_for_cannot_abort_the_interpreter():
+    # Under a 3 GB address-space limit 3,000 threads could not all start: the interpreter died
+    # with SIGABRT. Now the threads are capped at the cores, and a thread that cannot start
+    # leaves its work to the others.
+    code = (
+        "import resource, sys\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))\n"
+        "import nineball\n"
+        "scene = {'balls': [{'id': 0, 'x': -0.6, 'y': 0}, {'id': 1, 'x': 0, 'y': 0.03}],\n"
+        "         'shot': {'heading_deg': 0, 'speed': 2}}\n"
+        "print(len(nineball.simulate_many([scene] * 3000, threads=3000)))\n")
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(nineball.__file__))
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=env, check=False, timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "3000"
+
+
+def test_the_module_lends_no_clock_to_other_libraries():
+    # The executable mutes gettimeofday for Box2D's unused timers; the module must not export
+    # that, or a library loaded after it with RTLD_GLOBAL would read a clock that stands still.
+    nm = subprocess.run(["nm", "-D", "--defined-only", nineball.__file__], capture_output=True,
+                        text=True, check=False)
+    if nm.returncode != 0:
+        pytest.skip("nm is not installed")
+    exported = {line.split()[-1] for line in nm.stdout.splitlines() if line.strip()}
+    assert "gettimeofday" not in exported

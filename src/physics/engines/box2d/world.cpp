@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/log.hpp"
 #include "physics/engines/box2d/box2d_clock.hpp"
@@ -464,7 +465,10 @@ struct World::Impl final : physics::EngineBalls {
       } else if (e.t <= time) {
         ++count;  // a piece of no length and no event is no progress: it counts all the same
       }
-      if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
+      if (cancelRequested()) {
+        exhausted = true;
+        budget_spent = kCancelledBudget;
+      } else if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
         exhausted = true;
         budget_spent =
             resolved >= limits::kMaxEvents ? std::to_string(limits::kMaxEvents) + " contacts"

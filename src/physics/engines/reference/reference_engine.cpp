@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/log.hpp"
 #include "physics/model/arc_log.hpp"
@@ -180,6 +181,11 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
       }
       t_ = e.t;
       resolver_.resolve(e, *this);
+      if (cancelRequested()) {
+        exhausted_ = true;
+        budget_spent_ = kCancelledBudget;
+        break;
+      }
       if (++resolved_ >= limits::kMaxEvents) {
         exhausted_ = true;
         budget_spent_ = std::to_string(limits::kMaxEvents) + " contacts";
