@@ -4,7 +4,7 @@ Each point is one solver setting (contact model, world scale, step rate, iterati
 the wall time of the break at that setting (median); up, its worst error over the canonical
 cases as a fraction of each case's target (1 = at the target). The Pareto front is joined.
 
-    python3 examples/bench_plot.py --nineball build/nineball --out bench.png [--full]
+    /usr/bin/python3 examples/bench_plot.py --nineball build/nineball --out bench.png [--full]
 """
 import argparse
 import csv

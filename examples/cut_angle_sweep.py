@@ -7,7 +7,7 @@ the seed paper's frictionless oblique collision (paper-formulas.md, section 5):
     cue ball:    normal part (1 - e) / 2 * u cos(theta), tangential part u sin(theta) kept
 u is the cue ball's speed just before the contact, read from the same trace.
 
-    PYTHONPATH=build/python python3 examples/cut_angle_sweep.py --out cut_angle_sweep.png
+    PYTHONPATH=build/python /usr/bin/python3 examples/cut_angle_sweep.py --out cut_angle_sweep.png
 """
 import argparse
 import math

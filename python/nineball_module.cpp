@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "common/cancel.hpp"
+#include "common/limits.hpp"
 #include "nineball/json.hpp"
 #include "nineball/sim.hpp"
 
@@ -73,7 +74,14 @@ std::string sceneText(py::handle scene, const std::string& where) {
 }
 
 Scene parse(py::handle scene, const std::string& where) {
-  auto parsed = readScene(sceneText(scene, where));
+  const std::string text = sceneText(scene, where);
+  // The command line's bound on what it reads, so that both take the same scenes.
+  if (text.size() > limits::kMaxInputBytes) {
+    throw py::value_error(where + "scene: larger than " +
+                          std::to_string(limits::kMaxInputBytes >> 20) +
+                          " MiB as JSON, more than any scene needs");
+  }
+  auto parsed = readScene(text);
   if (const auto* refused = std::get_if<SceneRefusal>(&parsed)) {
     throw py::value_error(where + refused->message);
   }
@@ -144,6 +152,15 @@ py::object resultToPython(SimResult result) {
   if (trace) {
     doc["trace"] = traceToPython(*trace);
     doc["trace_truncated"] = trace->truncated;
+    if (trace->truncated) {
+      // The command line says so on stderr; a notebook shows a warning.
+      if (PyErr_WarnEx(PyExc_RuntimeWarning,
+                       "the trace stopped at its sample limit before the run ended "
+                       "(trace_truncated); ask for a lower hz or a shorter run",
+                       1) != 0) {
+        throw py::error_already_set();  // warnings turned into errors
+      }
+    }
   }
   return doc;
 }

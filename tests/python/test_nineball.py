@@ -3,6 +3,7 @@ import json
 import os
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -275,3 +276,23 @@ def test_the_module_lends_no_clock_to_other_libraries():
         pytest.skip("nm is not installed")
     exported = {line.split()[-1] for line in nm.stdout.splitlines() if line.strip()}
     assert "gettimeofday" not in exported
+
+
+def test_a_scene_larger_than_the_command_line_reads_is_refused():
+    scene = stun()
+    scene["note"] = "x" * (5 << 20)
+    with pytest.raises(ValueError, match=r"^scene: larger than 4 MiB"):
+        nineball.simulate(scene)
+    with pytest.raises(ValueError, match=r"^scenes\[0\]: scene: larger than 4 MiB"):
+        nineball.simulate_many([scene])
+
+
+def test_a_truncated_trace_warns():
+    scene = stun(trace={"hz": 10000})
+    scene["until"] = 120  # two balls at 10 kHz for 2 minutes: past the million samples
+    with pytest.warns(RuntimeWarning, match="trace_truncated"):
+        result = nineball.simulate(scene)
+    assert result["trace_truncated"] is True
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert nineball.simulate(stun(trace={"hz": 100}))["trace_truncated"] is False
