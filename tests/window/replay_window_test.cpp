@@ -83,13 +83,16 @@ class XvfbGame {
     start(dir, args);
   }
   // Now and then, with other Xvfb tests starting beside it, the game has found no display on a
-  // server xdpyinfo had just reached (about once in four runs of the whole suite): the server
-  // and the game are then started again, up to twice. True when it did so.
+  // server xdpyinfo had just reached (about once in four runs of the whole suite; once more
+  // after two quick restarts in a row): the server and the game are then started again, up to
+  // five times, a second apart so that whatever the other tests' servers were doing is over.
+  // True when it did so.
   bool restartAfterNoDisplay() {
-    if (running() || restarts_ >= 2) return false;
+    if (running() || restarts_ >= kMaxRestarts) return false;
     if (slurp(dir_ + "/err.log").find("no display found") == std::string::npos) return false;
     ++restarts_;
     stop();
+    pause(1.0);
     start(dir_, args_);
     return true;
   }
@@ -158,6 +161,7 @@ class XvfbGame {
   }
 
   std::string dir_, args_;
+  static constexpr int kMaxRestarts = 5;
   int restarts_ = 0;
   int display_ = -1;
   pid_t xvfb_ = -1;
