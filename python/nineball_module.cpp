@@ -39,6 +39,12 @@ py::object plain(py::handle o) {
       py::str(py::type::of(o)).cast<std::string>());
 }
 
+// A numpy value as the plain Python value it holds; anything else as it is.
+py::object plainValue(py::handle o) {
+  if (py::hasattr(o, "tolist")) return o.attr("tolist")();
+  return py::reinterpret_borrow<py::object>(o);
+}
+
 // The first number in `o` that JSON cannot hold (NaN or an infinity), as "balls[0].x"; empty
 // when there is none. JSON text would only say where in the text the parser stopped.
 std::string nonFiniteAt(py::handle o, const std::string& path) {
@@ -277,6 +283,54 @@ py::list simulateMany(py::handle scenes, py::handle threads_given) {
   return out;
 }
 
+// The scene that goes on from where `result` (of `scene`) stopped: the scene's table, physics
+// and step, every ball still on the table where and as it moves in the result (with its
+// mass from the scene), and the given shot and until (none: roll on to rest).
+py::dict continueFrom(py::handle scene_given, py::handle result, py::object shot,
+                      py::object until) {
+  if (!py::isinstance<py::dict>(result) || !result.cast<py::dict>().contains("balls")) {
+    throw py::type_error("result: expected the dict simulate returned");
+  }
+  const py::object loads = py::module_::import("json").attr("loads");
+  const py::dict scene = loads(sceneText(scene_given, "scene: ")).cast<py::dict>();
+  py::dict masses;
+  if (scene.contains("balls")) {
+    for (py::handle b : scene["balls"]) {
+      const py::dict ball = b.cast<py::dict>();
+      if (ball.contains("mass") && ball.contains("id")) masses[ball["id"]] = ball["mass"];
+    }
+  }
+  py::list balls;
+  for (py::handle b : result.cast<py::dict>()["balls"]) {
+    const py::dict ball = b.cast<py::dict>();
+    if (ball.contains("pocket") && !ball["pocket"].is_none()) continue;
+    py::dict next;
+    for (const char* key : {"id", "x", "y", "vx", "vy", "w"}) {
+      if (ball.contains(key)) next[key] = plainValue(ball[key]);
+    }
+    if (masses.contains(ball["id"])) next["mass"] = masses[ball["id"]];
+    balls.append(next);
+  }
+  py::dict out;
+  for (auto item : scene) {
+    const std::string key = py::str(item.first).cast<std::string>();
+    if (key != "balls" && key != "shot" && key != "until" && key != "trace") {
+      out[item.first] = item.second;
+    }
+  }
+  out["balls"] = balls;
+  if (!shot.is_none()) out["shot"] = shot;
+  if (!until.is_none()) out["until"] = until;
+  return out;
+}
+
+// A result (or a scene) as JSON text: numpy arrays and numbers as the lists and numbers they
+// hold, so that a result with a trace serialises.
+std::string toJson(py::handle doc) {
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  return dumps(doc, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
+}
+
 }  // namespace
 }  // namespace nineball::python
 
@@ -289,6 +343,14 @@ PYBIND11_MODULE(nineball, m) {
   m.attr("__version__") = NINEBALL_VERSION;
   m.def("simulate", &nineball::python::simulateOne, py::arg("scene"),
         "Simulates one scene (a dict or JSON text) and returns the result dict.");
+  m.def("continue_from", &nineball::python::continueFrom, py::arg("scene"), py::arg("result"),
+        py::arg("shot") = py::none(), py::arg("until") = py::none(),
+        "The scene that goes on from where `result` (of `scene`) stopped: the scene's table, "
+        "physics and step, every ball still on the table as the result left it (its mass from "
+        "the scene), and `shot` and `until` if given (else the balls roll on to rest). Feed it "
+        "to simulate.");
+  m.def("to_json", &nineball::python::toJson, py::arg("doc"),
+        "A result or scene as JSON text, numpy arrays (a trace's) written as lists.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
         "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "
         "them on `threads` threads (0: one per core; more than the cores are capped to them) "

@@ -296,3 +296,35 @@ def test_a_truncated_trace_warns():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert nineball.simulate(stun(trace={"hz": 100}))["trace_truncated"] is False
+
+
+def test_a_run_goes_on_from_its_result():
+    scene = stun(speed=3.0)
+    whole = nineball.simulate(scene)
+    first = nineball.simulate(dict(scene, until=0.25))
+    assert first["end"] == "until"
+    with pytest.raises(ValueError, match="unknown field"):
+        nineball.simulate(dict(scene, balls=first["balls"]))  # "pocket" is the result's own
+    rest = nineball.simulate(nineball.continue_from(scene, first))
+    assert rest["end"] == "rest"
+    # Split at 0.25 s or not, the balls stop at the same places (1 mm, the suite's tolerance for
+    # the same physics run two ways; the split restarts each ball's arc from printed numbers).
+    for a, b in zip(whole["balls"], rest["balls"]):
+        assert a["id"] == b["id"]
+        assert abs(a["x"] - b["x"]) < 1e-3 and abs(a["y"] - b["y"]) < 1e-3
+    # A new shot from there, and a pocketed ball left out.
+    again = nineball.continue_from(scene, rest, shot={"heading_deg": 90, "speed": 1.0})
+    assert again["shot"]["speed"] == 1.0
+    pocketed = dict(rest, balls=[dict(rest["balls"][0]), dict(rest["balls"][1], pocket="top-right")])
+    assert [b["id"] for b in nineball.continue_from(scene, pocketed)["balls"]] == [0]
+    with pytest.raises(TypeError, match="result: expected the dict simulate returned"):
+        nineball.continue_from(scene, [])
+
+
+def test_a_result_with_a_trace_serialises():
+    result = nineball.simulate(stun(trace={"hz": 100}))
+    with pytest.raises(TypeError):
+        json.dumps(result)  # numpy arrays: the standard encoder refuses them
+    back = json.loads(nineball.to_json(result))
+    assert back["trace"]["0"]["x"] == result["trace"]["0"]["x"].tolist()
+    assert back["balls"] == result["balls"]
