@@ -1,7 +1,7 @@
-// The Python module `nineball`: a thin skin over the same scene parser, checks, engines and
-// result format as `nineball sim`. A scene goes dict -> JSON text -> the parser, so that a bad
-// one is refused with the command line's very message; the result comes back as the same
-// structure, with traces as numpy arrays when numpy is there.
+// The Python package's compiled core `nineball._core` (python/nineball/ wraps it): a thin skin over
+// the same scene parser, checks, engines and result format as `nineball sim`. A scene goes dict ->
+// JSON text -> the parser, so that a bad one is refused with the command line's very message; the
+// result comes back as the same structure, with traces as numpy arrays when numpy is there.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -334,12 +334,8 @@ std::string toJson(py::handle doc) {
 }  // namespace
 }  // namespace nineball::python
 
-PYBIND11_MODULE(nineball, m) {
-  m.doc() =
-      "nineball: the pool table's physics, headless. simulate(scene) takes the scene of "
-      "`nineball sim` (a dict, or its JSON text) and returns the result as the command prints "
-      "it; traces come as numpy arrays when numpy is installed. A bad scene raises ValueError "
-      "with the command line's message.";
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "The compiled core of the nineball package: see help(nineball).";
   m.attr("__version__") = NINEBALL_VERSION;
   m.def("simulate", &nineball::python::simulateOne, py::arg("scene"),
         "Simulates one scene (a dict or JSON text) and returns the result dict.");

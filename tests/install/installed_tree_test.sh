@@ -32,12 +32,15 @@ top=$(cd "$prefix" && echo *)
 if [[ -n $python ]]; then
   [[ $top == "bin lib share" ]] || fail "the prefix holds: $top (expected bin, lib and share)"
   modules=$(cd "$prefix/lib" && find . -type f | sort)
-  [[ $modules == ./${site#lib/}/nineball.*.so ]] ||
-    fail "lib holds: $modules (expected the Python module alone, in $site)"
+  expected=$(printf '%s\n' "./${site#lib/}/nineball/__init__.py" "./${site#lib/}/nineball/_core.pyi" \
+    "./${site#lib/}/nineball/py.typed" | sort)
+  so=$(echo "$modules" | grep '/nineball/_core\..*\.so$')
+  [[ -n $so && $(echo "$modules" | grep -v '/nineball/_core\..*\.so$') == "$expected" ]] ||
+    fail "lib holds: $modules (expected the package nineball alone, in $site)"
   out=$(PYTHONPATH="$prefix/$site" "$python" -c 'import nineball
 r = nineball.simulate({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0, "speed": 1}})
 print(nineball.__file__, r["end"])') || fail "the installed Python module did not run"
-  [[ $out == "$prefix/$site/nineball."*".so rest" ]] || fail "the Python module said: $out"
+  [[ $out == "$prefix/$site/nineball/__init__.py rest" ]] || fail "the Python module said: $out"
 else
   [[ $top == "bin share" ]] || fail "the prefix holds: $top (expected bin and share only)"
 fi

@@ -11,7 +11,9 @@ import pytest
 import nineball
 
 SOURCE = os.environ.get("NINEBALL_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-BINARY = os.path.join(os.path.dirname(nineball.__file__), "..", "nineball")
+# build/python/nineball/__init__.py -> build/nineball
+BUILD_PYTHON = os.path.dirname(os.path.dirname(nineball.__file__))
+BINARY = os.path.join(BUILD_PYTHON, "..", "nineball")
 
 
 def stun(speed=2.0, engine="box2d", trace=None):
@@ -260,7 +262,7 @@ def test_thousands_of_threads_asked_for_cannot_abort_the_interpreter():
         "scene = {'balls': [{'id': 0, 'x': -0.6, 'y': 0}, {'id': 1, 'x': 0, 'y': 0.03}],\n"
         "         'shot': {'heading_deg': 0, 'speed': 2}}\n"
         "print(len(nineball.simulate_many([scene] * 3000, threads=3000)))\n")
-    env = dict(os.environ, PYTHONPATH=os.path.dirname(nineball.__file__))
+    env = dict(os.environ, PYTHONPATH=BUILD_PYTHON)
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=env, check=False, timeout=300)
     assert run.returncode == 0, run.stderr
@@ -270,8 +272,8 @@ def test_thousands_of_threads_asked_for_cannot_abort_the_interpreter():
 def test_the_module_lends_no_clock_to_other_libraries():
     # The executable mutes gettimeofday for Box2D's unused timers; the module must not export
     # that, or a library loaded after it with RTLD_GLOBAL would read a clock that stands still.
-    nm = subprocess.run(["nm", "-D", "--defined-only", nineball.__file__], capture_output=True,
-                        text=True, check=False)
+    nm = subprocess.run(["nm", "-D", "--defined-only", nineball._core.__file__],
+                        capture_output=True, text=True, check=False)
     if nm.returncode != 0:
         pytest.skip("nm is not installed")
     exported = {line.split()[-1] for line in nm.stdout.splitlines() if line.strip()}
@@ -328,3 +330,18 @@ def test_a_result_with_a_trace_serialises():
     back = json.loads(nineball.to_json(result))
     assert back["trace"]["0"]["x"] == result["trace"]["0"]["x"].tolist()
     assert back["balls"] == result["balls"]
+
+
+def test_every_call_has_a_signature_and_a_docstring():
+    import inspect
+    import pydoc
+
+    for name in ("simulate", "simulate_many", "continue_from", "to_json"):
+        call = getattr(nineball, name)
+        assert inspect.signature(call).parameters, name
+        assert call.__doc__ and len(call.__doc__) > 40, name
+        assert name in pydoc.render_doc(nineball), name
+    assert inspect.signature(nineball.simulate_many).parameters["threads"].default == 0
+    package = os.path.dirname(nineball.__file__)
+    assert os.path.exists(os.path.join(package, "py.typed"))
+    assert os.path.exists(os.path.join(package, "_core.pyi"))
