@@ -20,8 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "common/cancel.hpp"
-#include "common/limits.hpp"
+#include "nineball/cancel.hpp"
 #include "nineball/json.hpp"
 #include "nineball/sim.hpp"
 
@@ -82,9 +81,8 @@ std::string sceneText(py::handle scene, const std::string& where) {
 Scene parse(py::handle scene, const std::string& where) {
   const std::string text = sceneText(scene, where);
   // The command line's bound on what it reads, so that both take the same scenes.
-  if (text.size() > limits::kMaxInputBytes) {
-    throw py::value_error(where + "scene: larger than " +
-                          std::to_string(limits::kMaxInputBytes >> 20) +
+  if (text.size() > maxSceneBytes()) {
+    throw py::value_error(where + "scene: larger than " + std::to_string(maxSceneBytes() >> 20) +
                           " MiB as JSON, more than any scene needs");
   }
   auto parsed = readScene(text);

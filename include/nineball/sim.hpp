@@ -1,6 +1,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct SimResult {
   /// True when the run stopped before its end (max_time or the work budget).
   bool partial() const { return end == SimEnd::MaxTime || end == SimEnd::Budget; }
 };
+
+/// The most scene text a reader takes, in bytes: the command line's bound on its input.
+std::size_t maxSceneBytes();
 
 /// Runs a scene that has already been checked (see validateScene).
 SimResult simulate(const Scene& scene);

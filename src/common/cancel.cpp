@@ -1,4 +1,4 @@
-#include "common/cancel.hpp"
+#include "nineball/cancel.hpp"
 
 namespace nineball {
 namespace {

@@ -7,9 +7,9 @@
 #include <string>
 #include <thread>
 
-#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/parallel_map.hpp"
+#include "nineball/cancel.hpp"
 #include "nineball/engine.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
@@ -167,6 +167,10 @@ std::optional<std::string> resultFault(const Scene& scene, const SimResult& resu
            ", " + std::to_string(b.pos.y) + ") m";
   }
   return std::nullopt;
+}
+
+std::size_t maxSceneBytes() {
+  return limits::kMaxInputBytes;
 }
 
 SimResult simulate(const Scene& scene) {

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/log.hpp"
+#include "nineball/cancel.hpp"
 #include "physics/engines/box2d/box2d_clock.hpp"
 #include "physics/engines/box2d/contact_recorder.hpp"
 #include "physics/engines/registry.hpp"

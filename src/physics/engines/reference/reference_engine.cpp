@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "common/cancel.hpp"
 #include "common/limits.hpp"
 #include "common/log.hpp"
+#include "nineball/cancel.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/model/event_queue.hpp"
 #include "physics/model/motion.hpp"
