@@ -252,7 +252,7 @@ int threadCount(py::handle threads) {
   return static_cast<int>(std::min(n, cores));
 }
 
-py::list simulateMany(py::handle scenes, py::handle threads_given) {
+py::list simulateMany(py::handle scenes, py::handle threads_given, std::size_t first_index) {
   if (py::isinstance<py::dict>(scenes) || py::isinstance<py::str>(scenes) ||
       py::isinstance<py::bytes>(scenes)) {
     throw py::type_error(std::string("scenes: expected a list of scenes, found one ") +
@@ -267,7 +267,7 @@ py::list simulateMany(py::handle scenes, py::handle threads_given) {
   std::vector<Scene> parsed;
   std::size_t i = 0;
   for (py::handle scene : scenes) {
-    parsed.push_back(parse(scene, "scenes[" + std::to_string(i) + "]: "));
+    parsed.push_back(parse(scene, "scenes[" + std::to_string(first_index + i) + "]: "));
     ++i;
   }
   std::vector<SimResult> results;
@@ -275,7 +275,7 @@ py::list simulateMany(py::handle scenes, py::handle threads_given) {
       [&](const std::atomic<bool>* cancel) { results = simulateMany(parsed, threads, cancel); });
   py::list out;
   for (std::size_t k = 0; k < results.size(); ++k) {
-    checkResult(parsed[k], results[k], "scenes[" + std::to_string(k) + "]: ");
+    checkResult(parsed[k], results[k], "scenes[" + std::to_string(first_index + k) + "]: ");
     out.append(resultToPython(std::move(results[k])));
   }
   return out;
@@ -346,7 +346,9 @@ PYBIND11_MODULE(_core, m) {
   m.def("to_json", &nineball::python::toJson, py::arg("doc"),
         "A result or scene as JSON text, numpy arrays (a trace's) written as lists.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
+        py::arg("first_index") = 0,
         "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "
         "them on `threads` threads (0: one per core; more than the cores are capped to them) "
-        "with the GIL released; the results in order.");
+        "with the GIL released; the results in order. `first_index`: the index of the first "
+        "scene in messages (a chunk of a longer batch).");
 }

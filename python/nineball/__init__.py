@@ -8,12 +8,16 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - simulate_many(scenes, threads=0): many, in order, on every core.
 - continue_from(scene, result, shot=None, until=None): the scene that goes on from a result.
 - to_json(doc): a result or scene as JSON text, numpy arrays as lists.
+- iter_simulate(scenes, threads=0, chunk=256, progress=None): results streamed in order,
+  at most a chunk held at a time; a progress bar (tqdm) for long batches.
+- simulate_batch(scenes, threads=0): final states and event counts as numpy arrays.
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
 formats: docs/cli.md; this package: docs/python.md.
 """
 
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Union
+import itertools
+from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Union
 
 from . import _core
 
@@ -24,8 +28,11 @@ Scene = Union[Mapping[str, Any], str]
 #: A result of ``nineball sim`` as Python objects.
 Result = Dict[str, Any]
 
-__all__ = ["simulate", "simulate_many", "continue_from", "to_json", "Scene", "Result",
-           "__version__"]
+__all__ = ["simulate", "simulate_many", "continue_from", "to_json", "iter_simulate",
+           "simulate_batch", "Scene", "Result", "__version__"]
+
+#: A batch at least this long shows a progress bar when tqdm is installed (progress=None).
+PROGRESS_FROM = 1000
 
 
 def simulate(scene: Scene) -> Result:
@@ -66,3 +73,100 @@ def continue_from(scene: Scene, result: Result, shot: Optional[Mapping[str, Any]
 def to_json(doc: Union[Result, Mapping[str, Any]]) -> str:
     """A result (or a scene) as JSON text, a trace's numpy arrays written as lists."""
     return _core.to_json(doc)
+
+
+def _progress_bar(total: Optional[int], progress: Optional[bool]):
+    """A tqdm bar (the notebook's in a notebook), or None."""
+    wanted = progress if progress is not None else (total is not None and total >= PROGRESS_FROM)
+    if not wanted:
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        if progress:
+            raise ImportError("progress=True needs tqdm (Debian: python3-tqdm)") from None
+        return None
+    return tqdm(total=total, unit="scene")
+
+
+def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
+                  progress: Optional[bool] = None) -> Iterator[Result]:
+    """Simulates ``scenes`` and yields the results one by one, in order.
+
+    The scenes are read ``chunk`` at a time and each chunk is simulated as simulate_many does
+    (on ``threads`` threads): memory holds one chunk of scenes and results, whatever the
+    length of the batch, so a generator of a million scenes streams. A bad scene raises
+    ValueError naming its index in the whole batch, when its chunk comes. ``progress``: True
+    for a tqdm bar, False for none, None for one when tqdm is installed and the batch (with a
+    len()) has at least PROGRESS_FROM scenes.
+    """
+    if isinstance(scenes, (dict, str, bytes)):
+        raise TypeError("scenes: expected an iterable of scenes, found one "
+                        + ("dict" if isinstance(scenes, dict) else "string")
+                        + " (use simulate, or [scene])")
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise ValueError("chunk: expected an int >= 1, found " + repr(chunk))
+    total = len(scenes) if hasattr(scenes, "__len__") else None
+    bar = _progress_bar(total, progress)
+    source = iter(scenes)
+    done = 0
+    try:
+        while True:
+            block = list(itertools.islice(source, chunk))
+            if not block:
+                return
+            results = _core.simulate_many(block, threads, done)
+            done += len(block)
+            if bar is not None:
+                bar.update(len(block))
+            yield from results
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
+                   progress: Optional[bool] = None) -> Dict[str, Any]:
+    """Simulates ``scenes`` and returns their final states as numpy arrays.
+
+    Streams as iter_simulate does and keeps only the numbers: ``ids`` (every ball id met,
+    sorted), ``x``, ``y``, ``vx``, ``vy`` (scenes x balls, m and m/s; NaN where a scene has no
+    such ball), ``pocketed`` (scenes x balls, bool), ``time`` (simulated seconds), ``partial``
+    (bool), and ``events`` (scenes x event types, the counts, with ``event_types`` naming the
+    columns). Needs numpy.
+    """
+    import numpy as np
+
+    rows = []
+    ids = set()
+    types = set()
+    for r in iter_simulate(scenes, threads, chunk, progress):
+        balls = {b["id"]: (b["x"], b["y"], b["vx"], b["vy"], b["pocket"] is not None)
+                 for b in r["balls"]}
+        counts: Dict[str, int] = {}
+        for e in r["events"]:
+            counts[e["type"]] = counts.get(e["type"], 0) + 1
+        ids.update(balls)
+        types.update(counts)
+        rows.append((balls, counts, r["time"], r["partial"]))
+    ids_sorted = sorted(ids)
+    types_sorted = sorted(types)
+    column = {b: i for i, b in enumerate(ids_sorted)}
+    n, m = len(rows), len(ids_sorted)
+    out = {name: np.full((n, m), np.nan) for name in ("x", "y", "vx", "vy")}
+    pocketed = np.zeros((n, m), dtype=bool)
+    events = np.zeros((n, len(types_sorted)), dtype=np.int64)
+    time = np.zeros(n)
+    partial = np.zeros(n, dtype=bool)
+    for k, (balls, counts, t, part) in enumerate(rows):
+        for b, (x, y, vx, vy, down) in balls.items():
+            j = column[b]
+            out["x"][k, j], out["y"][k, j], out["vx"][k, j], out["vy"][k, j] = x, y, vx, vy
+            pocketed[k, j] = down
+        for j, name in enumerate(types_sorted):
+            events[k, j] = counts.get(name, 0)
+        time[k] = t
+        partial[k] = part
+    out.update(ids=np.array(ids_sorted, dtype=np.int64), pocketed=pocketed, time=time,
+               partial=partial, events=events, event_types=types_sorted)
+    return out

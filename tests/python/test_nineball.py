@@ -345,3 +345,51 @@ def test_every_call_has_a_signature_and_a_docstring():
     package = os.path.dirname(nineball.__file__)
     assert os.path.exists(os.path.join(package, "py.typed"))
     assert os.path.exists(os.path.join(package, "_core.pyi"))
+
+
+def test_iter_simulate_streams_in_order_a_chunk_at_a_time():
+    speeds = [1.0 + i / 20 for i in range(11)]
+    whole = nineball.simulate_many([stun(speed=s) for s in speeds])
+    produced = []
+
+    def scenes():  # a generator: no len(), read lazily
+        for s in speeds:
+            produced.append(s)
+            yield stun(speed=s)
+
+    stream = nineball.iter_simulate(scenes(), chunk=4, progress=False)
+    first = next(stream)
+    assert len(produced) == 4, "one chunk read, not the whole batch"
+    rest = list(stream)
+    assert [without_wall_time(r) for r in [first] + rest] == [without_wall_time(r) for r in whole]
+    bad = [stun() for _ in range(6)]
+    bad[5]["balls"][0]["x"] = "left"
+    with pytest.raises(ValueError, match=r"^scenes\[5\]: balls\[0\]\.x"):
+        list(nineball.iter_simulate(bad, chunk=4, progress=False))
+    with pytest.raises(ValueError, match="chunk"):
+        list(nineball.iter_simulate([stun()], chunk=0))
+    with pytest.raises(TypeError, match="found one dict"):
+        list(nineball.iter_simulate(stun()))
+
+
+def test_simulate_batch_gives_final_states_as_arrays():
+    speeds = [1.0, 2.0, 3.0]
+    batch = nineball.simulate_batch([stun(speed=s) for s in speeds], progress=False)
+    results = nineball.simulate_many([stun(speed=s) for s in speeds])
+    assert batch["ids"].tolist() == [0, 1]
+    assert batch["x"].shape == (3, 2)
+    for k, r in enumerate(results):
+        for j, b in enumerate(r["balls"]):
+            assert batch["x"][k, j] == b["x"] and batch["y"][k, j] == b["y"]
+            assert batch["pocketed"][k, j] == (b["pocket"] is not None)
+        assert batch["time"][k] == r["time"]
+        for j, name in enumerate(batch["event_types"]):
+            assert batch["events"][k, j] == sum(e["type"] == name for e in r["events"])
+
+
+def test_a_long_batch_shows_its_progress(capsys):
+    pytest.importorskip("tqdm")
+    results = list(nineball.iter_simulate([stun()] * 5, chunk=2, progress=True))
+    assert len(results) == 5
+    err = capsys.readouterr().err
+    assert "5/5" in err, err
