@@ -22,7 +22,10 @@
 
 #include "nineball/cancel.hpp"
 #include "nineball/json.hpp"
+#include "nineball/rules.hpp"
+#include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/table.hpp"
 
 namespace py = pybind11;
 
@@ -322,6 +325,76 @@ py::dict continueFrom(py::handle scene_given, py::handle result, py::object shot
   return out;
 }
 
+py::list point(Vec2 p) {
+  py::list xy;
+  xy.append(p.x);
+  xy.append(p.y);
+  return xy;
+}
+
+// The table of a scene (its "table" and "physics"; no balls needed) as the physics builds it.
+py::dict tableGeometry(py::handle scene) {
+  const Scene s = parse(scene, "");
+  const TableGeometry t = buildTable(s.table, s.physics.ball_radius);
+  py::dict out;
+  out["length"] = t.def.length;
+  out["width"] = t.def.width;
+  out["ball_radius"] = s.physics.ball_radius;
+  out["pockets_on"] = t.def.pockets;
+  out["corner_pocket"] = t.def.corner_pocket;
+  out["side_pocket"] = t.def.side_pocket;
+  py::list pockets;
+  for (const Pocket& p : t.pockets) {
+    py::dict one;
+    one["id"] = pocketName(p.id);
+    one["jaw_a"] = point(p.jaw_a);
+    one["jaw_b"] = point(p.jaw_b);
+    one["outward"] = point(p.outward);
+    one["drop_centre"] = point(p.drop_centre);
+    one["drop_radius"] = p.drop_radius;
+    pockets.append(one);
+  }
+  out["pockets"] = pockets;
+  py::list loop;
+  for (Vec2 v : t.cushion_loop) loop.append(point(v));
+  out["cushion_loop"] = loop;
+  out["head_string_x"] = t.headStringX();
+  out["foot_spot"] = point(t.footSpot());
+  out["head_spot"] = point({t.headStringX(), 0.0});
+  out["centre_spot"] = point({0.0, 0.0});
+  return out;
+}
+
+// The standard rack of `game` on the scene's table, seeded as the game seeds it.
+py::list rackOf(const std::string& game_name, std::uint64_t seed, py::handle scene) {
+  const std::optional<rules::Game> game = rules::gameFromName(game_name);
+  if (!game) throw py::value_error("game: unknown game \"" + game_name + "\"");
+  const Scene s = parse(scene, "");
+  py::list balls;
+  for (const BallState& b : rackFor(*game, s.table, s.physics.ball_radius, seed)) {
+    py::dict one;
+    one["id"] = b.id;
+    one["x"] = b.pos.x;
+    one["y"] = b.pos.y;
+    balls.append(one);
+  }
+  return balls;
+}
+
+// What `nineball plan` prints for the scene (with "game", "rules", "ball_in_hand", "level").
+py::object planOf(py::handle scene) {
+  const std::string text = sceneText(scene, "");
+  std::variant<std::string, SceneRefusal> planned;
+  runInterruptibly([&](const std::atomic<bool>* cancel) {
+    const CancelScope scope(cancel);
+    planned = planJsonText(text);
+  });
+  if (const auto* refused = std::get_if<SceneRefusal>(&planned)) {
+    throw py::value_error(refused->message);
+  }
+  return py::module_::import("json").attr("loads")(std::get<std::string>(planned));
+}
+
 // A result (or a scene) as JSON text: numpy arrays and numbers as the lists and numbers they
 // hold, so that a result with a trace serialises.
 std::string toJson(py::handle doc) {
@@ -343,6 +416,13 @@ PYBIND11_MODULE(_core, m) {
         "physics and step, every ball still on the table as the result left it (its mass from "
         "the scene), and `shot` and `until` if given (else the balls roll on to rest). Feed it "
         "to simulate.");
+  m.def("table_geometry", &nineball::python::tableGeometry, py::arg("scene"),
+        "The table of a scene (its table and physics) as the physics builds it: size, pockets, "
+        "cushion loop, spots.");
+  m.def("rack", &nineball::python::rackOf, py::arg("game"), py::arg("seed"), py::arg("scene"),
+        "The standard rack of a game on the scene's table, seeded as the game seeds it.");
+  m.def("plan", &nineball::python::planOf, py::arg("scene"),
+        "What `nineball plan` prints for the scene: the shot the computer would play.");
   m.def("to_json", &nineball::python::toJson, py::arg("doc"),
         "A result or scene as JSON text, numpy arrays (a trace's) written as lists.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,

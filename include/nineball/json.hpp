@@ -23,4 +23,9 @@ std::variant<Scene, SceneRefusal> readScene(std::string_view text);
 /// result has one).
 std::string resultJsonText(const SimResult& result);
 
+/// What `nineball plan` prints for `text` (the scene plus "game", "rules", "ball_in_hand",
+/// "level"; docs/cli.md), as compact JSON text: the shot the computer would play, as
+/// intended. Or why the scene is refused.
+std::variant<std::string, SceneRefusal> planJsonText(std::string_view text);
+
 }  // namespace nineball

@@ -11,6 +11,9 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - iter_simulate(scenes, threads=0, chunk=256, progress=None): results streamed in order,
   at most a chunk held at a time; a progress bar (tqdm) for long batches.
 - simulate_batch(scenes, threads=0): final states and event counts as numpy arrays.
+- Table(table="9ft", physics=None): the table as the physics builds it.
+- rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
+- plan(scene, level=None, game=None, ...): the shot the computer would play.
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
 formats: docs/cli.md; this package: docs/python.md.
@@ -29,7 +32,8 @@ Scene = Union[Mapping[str, Any], str]
 Result = Dict[str, Any]
 
 __all__ = ["simulate", "simulate_many", "continue_from", "to_json", "iter_simulate",
-           "simulate_batch", "Scene", "Result", "__version__"]
+           "simulate_batch", "Table", "Pocket", "rack", "plan", "Scene", "Result",
+           "__version__"]
 
 #: A batch at least this long shows a progress bar when tqdm is installed (progress=None).
 PROGRESS_FROM = 1000
@@ -170,3 +174,86 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
     out.update(ids=np.array(ids_sorted, dtype=np.int64), pocketed=pocketed, time=time,
                partial=partial, events=events, event_types=types_sorted)
     return out
+
+
+class Pocket:
+    """One pocket as built: its mouth between two jaw points, and the drop circle (a ball whose
+    centre enters it is pocketed). Points are (x, y) in metres, the table's centre at 0."""
+
+    def __init__(self, d: Mapping[str, Any]):
+        self.id: str = d["id"]
+        self.jaw_a = tuple(d["jaw_a"])
+        self.jaw_b = tuple(d["jaw_b"])
+        self.outward = tuple(d["outward"])
+        self.drop_centre = tuple(d["drop_centre"])
+        self.drop_radius: float = d["drop_radius"]
+
+    def __repr__(self) -> str:
+        return f"Pocket({self.id!r}, drop_centre={self.drop_centre})"
+
+
+class Table:
+    """The table as the physics builds it, for a scene's ``table`` and ``physics``.
+
+    ``table``: "9ft", "8ft" or "7ft", or the scene format's table object; ``physics``: the
+    scene's physics object (its ball radius sets how deep the pocket cups are). Attributes, SI
+    units, the origin at the table's centre, x along its length: ``length``, ``width``,
+    ``ball_radius``, ``corner_pocket`` and ``side_pocket`` (mouth widths), ``pockets`` (Pocket,
+    the six in order), ``cushion_loop`` (the cushions' outline, clockwise, a list of points or
+    an n x 2 numpy array), ``head_string_x``, ``foot_spot``, ``head_spot``, ``centre_spot``.
+    """
+
+    def __init__(self, table: Union[str, Mapping[str, Any]] = "9ft",
+                 physics: Optional[Mapping[str, Any]] = None):
+        scene: Dict[str, Any] = {"balls": [], "table": table}
+        if physics is not None:
+            scene["physics"] = physics
+        g = _core.table_geometry(scene)
+        self.length: float = g["length"]
+        self.width: float = g["width"]
+        self.ball_radius: float = g["ball_radius"]
+        self.has_pockets: bool = g["pockets_on"]
+        self.corner_pocket: float = g["corner_pocket"]
+        self.side_pocket: float = g["side_pocket"]
+        self.pockets: List[Pocket] = [Pocket(p) for p in g["pockets"]]
+        try:
+            import numpy as np
+            self.cushion_loop: Any = np.array(g["cushion_loop"])
+        except ImportError:
+            self.cushion_loop = g["cushion_loop"]
+        self.head_string_x: float = g["head_string_x"]
+        self.foot_spot = tuple(g["foot_spot"])
+        self.head_spot = tuple(g["head_spot"])
+        self.centre_spot = tuple(g["centre_spot"])
+
+    def __repr__(self) -> str:
+        return f"Table({self.length} m x {self.width} m, {len(self.pockets)} pockets)"
+
+
+def rack(game: str = "nine-ball", seed: int = 1,
+         table: Union[str, Mapping[str, Any]] = "9ft") -> List[Dict[str, Any]]:
+    """The object balls of ``game``'s standard rack, as a scene's ``balls`` (no cue ball).
+
+    ``seed`` orders the balls as the game orders them (the same seed, the same rack as the
+    game window and ``nineball match``). Add the cue ball, e.g.
+    ``[{"id": 0, "x": Table().head_string_x, "y": 0.0}] + rack()``.
+    """
+    return _core.rack(game, seed, {"balls": [], "table": table})
+
+
+def plan(scene: Scene, level: Optional[str] = None, game: Optional[str] = None,
+         rules: Optional[str] = None, ball_in_hand: Optional[bool] = None) -> Dict[str, Any]:
+    """The shot the computer would play from ``scene``, as ``nineball plan`` prints it.
+
+    ``level``: one of beginner, casual, club, league, advanced, pro, master (default master);
+    ``game``: nine-ball, eight-ball or ten-ball; ``rules``: wpa or paper; ``ball_in_hand``: the
+    cue ball placed first. Given here or in the scene. The answer (``heading_deg``, ``speed``,
+    ``tip``, and ``cue`` or ``call`` when it places the ball or calls) can go into the scene's
+    ``shot`` and be simulated. Ctrl-C stops it.
+    """
+    doc = dict(scene) if not isinstance(scene, str) else __import__("json").loads(scene)
+    for key, value in (("level", level), ("game", game), ("rules", rules),
+                       ("ball_in_hand", ball_in_hand)):
+        if value is not None:
+            doc[key] = value
+    return _core.plan(doc)

@@ -1,3 +1,4 @@
+#include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
 #include "nineball/json.hpp"
@@ -14,6 +15,16 @@ std::variant<Scene, SceneRefusal> readScene(std::string_view text) {
 
 std::string resultJsonText(const SimResult& result) {
   return io::resultToJson(result).dump();
+}
+
+std::variant<std::string, SceneRefusal> planJsonText(std::string_view text) {
+  io::PlanSceneResult parsed = io::parsePlanScene(text);
+  if (auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    return SceneRefusal{std::move(refused->message)};
+  }
+  const io::PlanScene& scene = std::get<io::PlanScene>(parsed);
+  ai::Planner planner(scene.level);
+  return io::planToJson(planner.plan(scene.input)).dump();
 }
 
 }  // namespace nineball

@@ -393,3 +393,39 @@ def test_a_long_batch_shows_its_progress(capsys):
     assert len(results) == 5
     err = capsys.readouterr().err
     assert "5/5" in err, err
+
+
+def test_the_table_as_the_physics_builds_it():
+    t = nineball.Table()
+    assert (t.length, t.width) == (2.54, 1.27)
+    assert [p.id for p in t.pockets] == ["top-left", "top-side", "top-right", "bottom-right",
+                                         "bottom-side", "bottom-left"]
+    assert t.foot_spot == (t.length / 4, 0.0) and t.head_string_x == -t.length / 4
+    assert t.cushion_loop.shape[1] == 2 and len(t.cushion_loop) > 20
+    assert nineball.Table("7ft").length < t.length
+    with pytest.raises(ValueError, match="table"):
+        nineball.Table("12ft")
+
+
+def test_a_standard_rack_fits_the_table_and_repeats_by_seed():
+    t = nineball.Table()
+    for game, n in (("nine-ball", 9), ("eight-ball", 15), ("ten-ball", 10)):
+        balls = nineball.rack(game, seed=3)
+        assert sorted(b["id"] for b in balls) == list(range(1, n + 1)), game
+        assert nineball.rack(game, seed=3) == balls
+        scene = {"balls": [{"id": 0, "x": t.head_string_x, "y": 0.0}] + balls}
+        assert nineball.simulate(scene)["end"] == "rest", game  # a valid scene, at rest
+    assert nineball.rack("nine-ball", 1)[0] == {"id": 1, "x": t.foot_spot[0], "y": 0.0}
+    with pytest.raises(ValueError, match="unknown game"):
+        nineball.rack("snooker")
+
+
+def test_plan_is_what_the_command_line_plans():
+    scene = {"balls": [{"id": 0, "x": -0.6, "y": 0.0}, {"id": 1, "x": 0.0, "y": 0.03},
+                       {"id": 2, "x": 0.5, "y": -0.3}]}
+    shot = nineball.plan(scene, level="club")
+    run = subprocess.run([BINARY, "plan", "-"], input=json.dumps(dict(scene, level="club")),
+                         capture_output=True, text=True, check=True)
+    assert shot == json.loads(run.stdout)
+    with pytest.raises(ValueError, match="unknown level"):
+        nineball.plan(scene, level="grandmaster")
