@@ -33,7 +33,7 @@ if [[ -n $python ]]; then
   [[ $top == "bin lib share" ]] || fail "the prefix holds: $top (expected bin, lib and share)"
   modules=$(cd "$prefix/lib" && find . -type f | sort)
   expected=$(printf '%s\n' "./${site#lib/}/nineball/__init__.py" "./${site#lib/}/nineball/_core.pyi" \
-    "./${site#lib/}/nineball/py.typed" | sort)
+    "./${site#lib/}/nineball/dask.py" "./${site#lib/}/nineball/py.typed" | sort)
   so=$(echo "$modules" | grep '/nineball/_core\..*\.so$')
   [[ -n $so && $(echo "$modules" | grep -v '/nineball/_core\..*\.so$') == "$expected" ]] ||
     fail "lib holds: $modules (expected the package nineball alone, in $site)"

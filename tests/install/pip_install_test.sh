@@ -36,7 +36,7 @@ import inspect, os, pydoc, sys
 import nineball
 assert nineball.__file__.startswith(sys.prefix), nineball.__file__
 files = sorted(f for f in os.listdir(os.path.dirname(nineball.__file__)) if f != "__pycache__")
-assert [f for f in files if not f.startswith("_core.cpython")] == ["__init__.py", "_core.pyi", "py.typed"], files
+assert [f for f in files if not f.startswith("_core.cpython")] == ["__init__.py", "_core.pyi", "dask.py", "py.typed"], files
 r = nineball.simulate({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0, "speed": 1}})
 for name in ("simulate", "simulate_many", "continue_from", "to_json"):
     assert inspect.signature(getattr(nineball, name)).parameters, name

@@ -429,3 +429,29 @@ def test_plan_is_what_the_command_line_plans():
     assert shot == json.loads(run.stdout)
     with pytest.raises(ValueError, match="unknown level"):
         nineball.plan(scene, level="grandmaster")
+
+
+def test_a_sweep_runs_on_a_dask_cluster_in_order():
+    distributed = pytest.importorskip("distributed")
+    import nineball.dask
+
+    scenes = [stun(speed=1.0 + i / 10) for i in range(9)]
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        on_cluster = nineball.dask.simulate(client, scenes, chunk=2)
+        bad = list(scenes)
+        bad[7] = dict(stun(), balls=[{"id": 0, "x": "left", "y": 0}])
+        with pytest.raises(ValueError, match=r"scenes\[7\]: balls\[0\]\.x"):
+            nineball.dask.simulate(client, bad, chunk=2)
+    here = nineball.simulate_many(scenes)
+    assert [without_wall_time(r) for r in on_cluster] == [without_wall_time(r) for r in here]
+
+
+def test_the_package_works_without_dask():
+    code = ("import sys; sys.modules['dask'] = None; sys.modules['distributed'] = None\n"
+            "import nineball\n"
+            "print(nineball.simulate({'balls': [{'id': 0, 'x': 0, 'y': 0}]})['end'])\n")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ, PYTHONPATH=BUILD_PYTHON), check=False)
+    assert run.returncode == 0 and run.stdout.strip() == "rest", run.stderr
