@@ -381,6 +381,15 @@ py::list rackOf(const std::string& game_name, std::uint64_t seed, py::handle sce
   return balls;
 }
 
+// The physics preset `name` as a scene's physics object.
+py::object presetOf(const std::string& name) {
+  const std::optional<std::string> text = presetJsonText(name);
+  if (!text)
+    throw py::value_error("preset: unknown preset \"" + name +
+                          "\" (expected \"real\" or \"paper\")");
+  return py::module_::import("json").attr("loads")(*text);
+}
+
 // What `nineball plan` prints for the scene (with "game", "rules", "ball_in_hand", "level").
 py::object planOf(py::handle scene) {
   const std::string text = sceneText(scene, "");
@@ -421,6 +430,9 @@ PYBIND11_MODULE(_core, m) {
         "cushion loop, spots.");
   m.def("rack", &nineball::python::rackOf, py::arg("game"), py::arg("seed"), py::arg("scene"),
         "The standard rack of a game on the scene's table, seeded as the game seeds it.");
+  m.def("preset", &nineball::python::presetOf, py::arg("name"),
+        "A physics preset (\"real\", \"paper\") as a scene's physics object, every parameter "
+        "its models read.");
   m.def("plan", &nineball::python::planOf, py::arg("scene"),
         "What `nineball plan` prints for the scene: the shot the computer would play.");
   m.def("to_json", &nineball::python::toJson, py::arg("doc"),

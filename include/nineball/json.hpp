@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -22,6 +23,11 @@ std::variant<Scene, SceneRefusal> readScene(std::string_view text);
 /// The result document `nineball sim` prints, as compact JSON text (with the trace when the
 /// result has one).
 std::string resultJsonText(const SimResult& result);
+
+/// The physics preset `name` ("real", "paper") as the scene's "physics" object with every
+/// parameter its models read (feeding it back gives the same physics); nothing for another
+/// name.
+std::optional<std::string> presetJsonText(const std::string& name);
 
 /// What `nineball plan` prints for `text` (the scene plus "game", "rules", "ball_in_hand",
 /// "level"; docs/cli.md), as compact JSON text: the shot the computer would play, as

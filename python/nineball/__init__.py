@@ -14,6 +14,7 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - Table(table="9ft", physics=None): the table as the physics builds it.
 - rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
+- preset(name) / PRESETS: the physics presets ("real", "paper") with every parameter.
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
 formats: docs/cli.md; this package: docs/python.md.
@@ -32,7 +33,8 @@ Scene = Union[Mapping[str, Any], str]
 Result = Dict[str, Any]
 
 __all__ = ["simulate", "simulate_many", "continue_from", "to_json", "iter_simulate",
-           "simulate_batch", "Table", "Pocket", "rack", "plan", "Scene", "Result",
+           "simulate_batch", "Table", "Pocket", "rack", "plan", "preset", "PRESETS", "Scene",
+           "Result",
            "__version__"]
 
 #: A batch at least this long shows a progress bar when tqdm is installed (progress=None).
@@ -257,3 +259,19 @@ def plan(scene: Scene, level: Optional[str] = None, game: Optional[str] = None,
         if value is not None:
             doc[key] = value
     return _core.plan(doc)
+
+
+#: The physics presets' names: "real" (the default: throw, squirt, Mathavan's cushion) and
+#: "paper" (the seed paper's models).
+PRESETS = ("real", "paper")
+
+
+def preset(name: str = "real") -> Dict[str, Any]:
+    """The physics preset ``name`` as a scene's ``physics`` object: its models by name and
+    every parameter they read, SI units. Change what you study and pass it back::
+
+        physics = nineball.preset("real")
+        physics["cushion_restitution"] = 0.8
+        nineball.simulate(dict(scene, physics=physics))
+    """
+    return _core.preset(name)

@@ -1,6 +1,7 @@
 #include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_json.hpp"
+#include "io/scene_parts.hpp"
 #include "nineball/json.hpp"
 
 namespace nineball {
@@ -15,6 +16,12 @@ std::variant<Scene, SceneRefusal> readScene(std::string_view text) {
 
 std::string resultJsonText(const SimResult& result) {
   return io::resultToJson(result).dump();
+}
+
+std::optional<std::string> presetJsonText(const std::string& name) {
+  const std::optional<PhysicsParams> p = PhysicsParams::preset(name);
+  if (!p) return std::nullopt;
+  return io::physicsToJson(*p).dump();
 }
 
 std::variant<std::string, SceneRefusal> planJsonText(std::string_view text) {

@@ -164,6 +164,23 @@ BallFriction parseBallFriction(const json& v, const std::string& path) {
   return f;
 }
 
+nlohmann::ordered_json physicsToJson(const PhysicsParams& p) {
+  nlohmann::ordered_json out;
+  out["cloth"] = clothModelName(p.cloth);
+  out["ball_ball"] = p.ball_ball.name();
+  if (p.ball_ball.reads("ball_friction")) {
+    out["ball_friction"] = {
+        {"a", p.ball_friction.a}, {"b", p.ball_friction.b}, {"c", p.ball_friction.c}};
+  }
+  out["cushion"] = p.cushion.name();
+  if (p.cushion.reads("cushion_height")) out["cushion_height"] = p.cushion_height;
+  const unsigned cloth = 1u << static_cast<unsigned>(p.cloth);
+  for (const ParamField& f : kParamFields) {
+    if (f.used_by & cloth) out[f.name] = p.*(f.field);
+  }
+  return out;
+}
+
 PhysicsParams parsePhysics(const json& v) {
   const std::string path = "physics";
   expectObject(v, path);

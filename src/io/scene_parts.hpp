@@ -17,6 +17,9 @@ namespace nineball::io {
 TableDef parseTable(const nlohmann::json& v);
 /// {"preset", overrides...} at "physics".
 PhysicsParams parsePhysics(const nlohmann::json& v);
+/// The physics object that parsePhysics reads back as `p`: the models by name and every
+/// parameter they read.
+nlohmann::ordered_json physicsToJson(const PhysicsParams& p);
 /// [{"id", "x", "y", "vx", "vy", "mass"}, ...] at "balls".
 /// Balls of the given radius (it bounds their spin).
 std::vector<BallState> parseBalls(const nlohmann::json& v, double radius);

@@ -455,3 +455,18 @@ def test_the_package_works_without_dask():
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=dict(os.environ, PYTHONPATH=BUILD_PYTHON), check=False)
     assert run.returncode == 0 and run.stdout.strip() == "rest", run.stderr
+
+
+def test_a_preset_with_every_parameter_reads_back_as_itself():
+    for name in nineball.PRESETS:
+        physics = nineball.preset(name)
+        assert physics["ball_radius"] == 0.028575 and "cloth" in physics, name
+        by_name = nineball.simulate(dict(stun(), physics={"preset": name}))
+        spelled_out = nineball.simulate(dict(stun(), physics=physics))
+        assert without_wall_time(spelled_out) == without_wall_time(by_name), name
+    real = nineball.preset("real")
+    real["cushion_restitution"] = 0.5
+    assert nineball.simulate(dict(stun(speed=3.0), physics=real))["balls"] != \
+        nineball.simulate(dict(stun(speed=3.0), physics={"preset": "real"}))["balls"]
+    with pytest.raises(ValueError, match="unknown preset"):
+        nineball.preset("fast")
