@@ -381,6 +381,20 @@ py::list rackOf(const std::string& game_name, std::uint64_t seed, py::handle sce
   return balls;
 }
 
+// What `nineball match` prints for the script.
+py::object matchOf(py::handle script) {
+  const std::string text = sceneText(script, "");
+  std::variant<std::string, SceneRefusal> played;
+  runInterruptibly([&](const std::atomic<bool>* cancel) {
+    const CancelScope scope(cancel);
+    played = matchJsonText(text);
+  });
+  if (const auto* refused = std::get_if<SceneRefusal>(&played)) {
+    throw py::value_error(refused->message);
+  }
+  return py::module_::import("json").attr("loads")(std::get<std::string>(played));
+}
+
 // The physics preset `name` as a scene's physics object.
 py::object presetOf(const std::string& name) {
   const std::optional<std::string> text = presetJsonText(name);
@@ -430,6 +444,8 @@ PYBIND11_MODULE(_core, m) {
         "cushion loop, spots.");
   m.def("rack", &nineball::python::rackOf, py::arg("game"), py::arg("seed"), py::arg("scene"),
         "The standard rack of a game on the scene's table, seeded as the game seeds it.");
+  m.def("match", &nineball::python::matchOf, py::arg("script"),
+        "What `nineball match` prints for the script: a rack played to its end.");
   m.def("preset", &nineball::python::presetOf, py::arg("name"),
         "A physics preset (\"real\", \"paper\") as a scene's physics object, every parameter "
         "its models read.");

@@ -29,6 +29,12 @@ std::string resultJsonText(const SimResult& result);
 /// name.
 std::optional<std::string> presetJsonText(const std::string& name);
 
+/// What `nineball match` prints for the script `text` (docs/cli.md): the rack played, the
+/// computer's turns planned, as compact JSON text ("partial": true when a shot stopped with
+/// balls still moving). Or why the script, or one of its turns, is refused. A computer's turn
+/// the rules refuse is a defect: std::runtime_error.
+std::variant<std::string, SceneRefusal> matchJsonText(std::string_view text);
+
 /// What `nineball plan` prints for `text` (the scene plus "game", "rules", "ball_in_hand",
 /// "level"; docs/cli.md), as compact JSON text: the shot the computer would play, as
 /// intended. Or why the scene is refused.

@@ -14,6 +14,7 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - Table(table="9ft", physics=None): the table as the physics builds it.
 - rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
+- match(script): a rack played from a match script, computer players included.
 - preset(name) / PRESETS: the physics presets ("real", "paper") with every parameter.
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
@@ -33,7 +34,7 @@ Scene = Union[Mapping[str, Any], str]
 Result = Dict[str, Any]
 
 __all__ = ["simulate", "simulate_many", "continue_from", "to_json", "iter_simulate",
-           "simulate_batch", "Table", "Pocket", "rack", "plan", "preset", "PRESETS", "Scene",
+           "simulate_batch", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
            "Result",
            "__version__"]
 
@@ -275,3 +276,14 @@ def preset(name: str = "real") -> Dict[str, Any]:
         nineball.simulate(dict(scene, physics=physics))
     """
     return _core.preset(name)
+
+
+def match(script: Scene) -> Result:
+    """A rack played from a match script, as ``nineball match`` prints it.
+
+    The script (docs/cli.md, "nineball match"): ``game``, ``rules``, ``seed``, the table and
+    physics, ``players`` ("human" or "ai:<level>"), and the human players' ``turns``; the
+    computer's turns are planned. The result holds every turn, the winner, the balls, and
+    ``partial``. A bad script or turn raises ValueError naming it; Ctrl-C stops it.
+    """
+    return _core.match(script)

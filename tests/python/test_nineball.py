@@ -470,3 +470,16 @@ def test_a_preset_with_every_parameter_reads_back_as_itself():
         nineball.simulate(dict(stun(speed=3.0), physics={"preset": "real"}))["balls"]
     with pytest.raises(ValueError, match="unknown preset"):
         nineball.preset("fast")
+
+
+def test_match_is_what_the_command_line_plays():
+    script = {"game": "nine-ball", "seed": 3, "players": {"A": "ai:club", "B": "ai:casual"}}
+    played = nineball.match(script)
+    run = subprocess.run([BINARY, "match", "-"], input=json.dumps(script), capture_output=True,
+                         text=True, check=True)
+    assert played == json.loads(run.stdout)
+    assert played["winner"] in ("A", "B") and played["partial"] is False
+    with pytest.raises(ValueError, match=r"^turns\[0\]"):
+        nineball.match({"seed": 1, "turns": [{"heading_deg": 0, "speed": 1, "cue": [5, 5]}]})
+    with pytest.raises(ValueError, match="players.A: unknown player"):
+        nineball.match({"players": {"A": "ai:grandmaster"}})
