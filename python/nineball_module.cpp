@@ -69,9 +69,44 @@ std::string nonFiniteAt(py::handle o, const std::string& path) {
   return {};
 }
 
+// A ball id written as a float with no fraction (from a numpy float array: 3.0) as the int it
+// is; the command line, reading JSON text, takes integers only.
+py::object withIntegerIds(py::handle scene) {
+  if (!py::isinstance<py::dict>(scene) || !scene.cast<py::dict>().contains("balls")) {
+    return py::reinterpret_borrow<py::object>(scene);
+  }
+  const py::object balls = scene.cast<py::dict>()["balls"];
+  if (!py::isinstance<py::list>(balls) && !py::isinstance<py::tuple>(balls)) {
+    return py::reinterpret_borrow<py::object>(scene);
+  }
+  py::list fixed;
+  bool changed = false;
+  for (py::handle b : balls) {
+    py::object ball = py::reinterpret_borrow<py::object>(b);
+    if (py::isinstance<py::dict>(b) && b.cast<py::dict>().contains("id")) {
+      py::object id = plainValue(b.cast<py::dict>()["id"]);
+      if (py::isinstance<py::float_>(id)) {
+        const double d = id.cast<double>();
+        if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 1e15) {
+          py::dict copy(b.cast<py::dict>());
+          copy["id"] = py::int_(static_cast<long long>(d));
+          ball = copy;
+          changed = true;
+        }
+      }
+    }
+    fixed.append(ball);
+  }
+  if (!changed) return py::reinterpret_borrow<py::object>(scene);
+  py::dict copy(scene.cast<py::dict>());
+  copy["balls"] = fixed;
+  return copy;
+}
+
 // The scene as the command line would read it: a str is the JSON text itself.
-std::string sceneText(py::handle scene, const std::string& where) {
-  if (py::isinstance<py::str>(scene)) return scene.cast<std::string>();
+std::string sceneText(py::handle given, const std::string& where) {
+  if (py::isinstance<py::str>(given)) return given.cast<std::string>();
+  const py::object scene = withIntegerIds(given);
   const std::string bad = nonFiniteAt(scene, "");
   if (!bad.empty()) {
     throw py::value_error(where + bad + ": expected a finite number, found NaN or an infinity");

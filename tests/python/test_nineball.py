@@ -483,3 +483,13 @@ def test_match_is_what_the_command_line_plays():
         nineball.match({"seed": 1, "turns": [{"heading_deg": 0, "speed": 1, "cue": [5, 5]}]})
     with pytest.raises(ValueError, match="players.A: unknown player"):
         nineball.match({"players": {"A": "ai:grandmaster"}})
+
+
+def test_ball_ids_from_a_numpy_float_array_are_taken():
+    table = np.array([[0.0, -0.6, 0.0], [1.0, 0.0, 0.03]])  # id, x, y as one float array
+    scene = {"balls": [{"id": row[0], "x": row[1], "y": row[2]} for row in table],
+             "shot": {"heading_deg": 0, "speed": 2.0}}
+    assert without_wall_time(nineball.simulate(scene)) == without_wall_time(nineball.simulate(stun()))
+    scene["balls"][1]["id"] = 1.5
+    with pytest.raises(ValueError, match=r"balls\[1\]\.id: expected an integer"):
+        nineball.simulate(scene)
