@@ -493,3 +493,16 @@ def test_ball_ids_from_a_numpy_float_array_are_taken():
     scene["balls"][1]["id"] = 1.5
     with pytest.raises(ValueError, match=r"balls\[1\]\.id: expected an integer"):
         nineball.simulate(scene)
+
+
+def test_the_documented_commands_name_the_python_the_module_is_built_for():
+    # `PYTHONPATH=build/python python3 ...` fails where the first python3 on the PATH is not
+    # Debian's (no numpy, no matplotlib, another ABI): the docs name /usr/bin/python3.
+    import re
+
+    for doc in ("README.md", "docs/python.md", "examples/cut_angle_sweep.py",
+                "examples/dask_pot_map.py", "examples/bench_plot.py"):
+        with open(os.path.join(SOURCE, doc), encoding="utf-8") as f:
+            text = f.read()
+        assert not re.search(r"PYTHONPATH=\S+ python3 ", text), doc
+        assert not re.search(r"^\s*python3 examples/", text, re.M), doc
