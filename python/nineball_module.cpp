@@ -416,18 +416,25 @@ py::list rackOf(const std::string& game_name, std::uint64_t seed, py::handle sce
   return balls;
 }
 
-// What `nineball match` prints for the script.
-py::object matchOf(py::handle script) {
-  const std::string text = sceneText(script, "");
-  std::variant<std::string, SceneRefusal> played;
+// A JSON contract of a headless command run on `doc` (its text in, its JSON text out),
+// interruptible, its refusal a ValueError, its answer as Python objects.
+py::object runContract(py::handle doc,
+                       std::variant<std::string, SceneRefusal> (*contract)(std::string_view)) {
+  const std::string text = sceneText(doc, "");
+  std::variant<std::string, SceneRefusal> answer;
   runInterruptibly([&](const std::atomic<bool>* cancel) {
     const CancelScope scope(cancel);
-    played = matchJsonText(text);
+    answer = contract(text);
   });
-  if (const auto* refused = std::get_if<SceneRefusal>(&played)) {
+  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
     throw py::value_error(refused->message);
   }
-  return py::module_::import("json").attr("loads")(std::get<std::string>(played));
+  return py::module_::import("json").attr("loads")(std::get<std::string>(answer));
+}
+
+// What `nineball match` prints for the script.
+py::object matchOf(py::handle script) {
+  return runContract(script, &matchJsonText);
 }
 
 // The physics preset `name` as a scene's physics object.
@@ -441,16 +448,7 @@ py::object presetOf(const std::string& name) {
 
 // What `nineball plan` prints for the scene (with "game", "rules", "ball_in_hand", "level").
 py::object planOf(py::handle scene) {
-  const std::string text = sceneText(scene, "");
-  std::variant<std::string, SceneRefusal> planned;
-  runInterruptibly([&](const std::atomic<bool>* cancel) {
-    const CancelScope scope(cancel);
-    planned = planJsonText(text);
-  });
-  if (const auto* refused = std::get_if<SceneRefusal>(&planned)) {
-    throw py::value_error(refused->message);
-  }
-  return py::module_::import("json").attr("loads")(std::get<std::string>(planned));
+  return runContract(scene, &planJsonText);
 }
 
 // A result (or a scene) as JSON text: numpy arrays and numbers as the lists and numbers they
