@@ -133,10 +133,10 @@ Shot strike(Shot shot, const LevelSettings& s, double scale, double growth, doub
 constexpr int kNoisySamples = 24;
 constexpr std::uint64_t kNoisySeed = 0x6e6f697379627265;  // fixed: plans stay repeatable
 
-RobustChoice chooseUnderNoise(const std::vector<Candidate>& cands,
-                              const std::vector<std::size_t>& ranked, const Evaluator& eval,
-                              const LevelSettings& s, double ball_radius, int threads,
-                              const std::vector<double>& position_gain) {
+// `ranked`: every break candidate, best first (ties go to the better ranked).
+RobustChoice chooseBreakUnderNoise(const std::vector<Candidate>& cands,
+                                   const std::vector<std::size_t>& ranked, const Evaluator& eval,
+                                   const LevelSettings& s, double ball_radius, int threads) {
   const std::size_t n = ranked.size() * kNoisySamples;
   std::vector<double> worth(n, 0.0);
   parallelFor(n, threads, [&](std::size_t j) {
@@ -149,15 +149,10 @@ RobustChoice chooseUnderNoise(const std::vector<Candidate>& cands,
   best.value = -1.0;
   for (std::size_t r = 0; r < ranked.size(); ++r) {
     double sum = 0.0;
-    int kept = 0;
     for (int k = 0; k < kNoisySamples; ++k) {
-      const double v = worth[r * kNoisySamples + static_cast<std::size_t>(k)];
-      sum += v;
-      if (v >= kContinueBase && v < 1.0) ++kept;
+      sum += worth[r * kNoisySamples + static_cast<std::size_t>(k)];
     }
-    // The look ahead's gain counts as often as the table is kept, as in chooseRobustly.
-    const double gain = position_gain.empty() ? 0.0 : position_gain[ranked[r]];
-    const double expected = (sum + gain * kept) / kNoisySamples;
+    const double expected = sum / kNoisySamples;
     if (expected > best.value) {
       best.value = expected;
       best.index = ranked[r];
@@ -225,7 +220,7 @@ void ExecutionNoise::applyTo(LevelSettings& s) const {
   s.tip_noise_m = tip_m;
   s.noise_on_break = true;
   // Struck with the whole noise, a controlled break may pocket more than a power break: the
-  // planner gets the choice (and judges it by the noise, chooseNoisyBreak).
+  // planner gets the choice (and judges it by the noise, chooseBreakUnderNoise).
   if (std::find(s.break_speeds.begin(), s.break_speeds.end(), kControlledBreakSpeed) ==
       s.break_speeds.end()) {
     s.break_speeds.insert(s.break_speeds.begin(), kControlledBreakSpeed);
@@ -270,7 +265,7 @@ Plan Planner::plan(const PlanInput& in) {
     choice.value = values[choice.index];
     if (breaking && settings_.noise_on_break) {
       choice =
-          chooseUnderNoise(cands, order, eval, settings_, in.physics.ball_radius, threads_, gains);
+          chooseBreakUnderNoise(cands, order, eval, settings_, in.physics.ball_radius, threads_);
       sims += choice.simulations;
       return choice;
     }
@@ -278,8 +273,7 @@ Plan Planner::plan(const PlanInput& in) {
     if (settings_.robust_steps > 0 && top > 0) {
       const std::vector<std::size_t> ranked(order.begin(), order.begin() + top);
       choice = chooseRobustly(cands, ranked, eval, settings_, threads_,
-                              breaking && !settings_.noise_on_break ? kBreakNoiseScale : 1.0,
-                              !breaking, gains);
+                              breaking ? kBreakNoiseScale : 1.0, !breaking, gains);
       sims += choice.simulations;
     }
     return choice;
