@@ -49,7 +49,8 @@ py::object plainValue(py::handle o) {
 
 // The first number in `o` that JSON cannot hold (NaN or an infinity), as "balls[0].x"; empty
 // when there is none. JSON text would only say where in the text the parser stopped.
-std::string nonFiniteAt(py::handle o, const std::string& path) {
+std::string nonFiniteAt(py::handle given, const std::string& path) {
+  const py::object o = plainValue(given);  // a numpy array is looked into as its list
   if (py::isinstance<py::float_>(o)) {
     return std::isfinite(o.cast<double>()) ? std::string() : path;
   }

@@ -184,6 +184,10 @@ def test_a_number_json_cannot_hold_is_named_by_its_field():
             nineball.simulate(scene)
         with pytest.raises(ValueError, match=r"^scenes\[1\]: balls\[1\]\.x: expected a finite"):
             nineball.simulate_many([stun(), scene])
+    scene = stun()
+    scene["balls"][0]["w"] = np.array([0.0, np.nan, 0.0])  # inside a numpy array too
+    with pytest.raises(ValueError, match=r"^balls\[0\]\.w\[1\]: expected a finite number"):
+        nineball.simulate(scene)
 
 
 def test_simulate_many_refuses_one_scene_passed_alone():
