@@ -152,7 +152,6 @@ constexpr int kMaxRackTurns = 300;
 
 struct Versus {
   ai::Level a = ai::Level::Master, b = ai::Level::Master;
-  std::string a_name, b_name;
   int racks = 0;
   int wins_a = 0, wins_b = 0;
 };
@@ -246,9 +245,9 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
   if (!options.versus.empty()) {
     const auto comma = options.versus.find(',');
     Versus v;
-    v.a_name = options.versus.substr(0, comma);
-    v.b_name = comma == std::string::npos ? "" : options.versus.substr(comma + 1);
-    const auto a = ai::levelFromName(v.a_name), b = ai::levelFromName(v.b_name);
+    const auto a = ai::levelFromName(options.versus.substr(0, comma));
+    const auto b = ai::levelFromName(comma == std::string::npos ? std::string()
+                                                                : options.versus.substr(comma + 1));
     if (!a || !b) {
       err << "nineball ai-bench: --versus: two levels as A,B (" << ai::levelNamesText()
           << "), not \"" << options.versus << "\"\n";
@@ -256,8 +255,6 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     }
     v.a = *a;
     v.b = *b;
-    v.a_name = ai::levelName(*a);  // an older name is reported as the level it stands for
-    v.b_name = ai::levelName(*b);
     v.racks = options.racks;
     versus = v;
   }
@@ -297,8 +294,9 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     j["think_s"] = {{"median", median(think)}, {"max", max_think}};
     j["shots_simulated_per_cpu_s"] = cpu > 0.0 ? static_cast<double>(sims) / cpu : 0.0;
     if (versus) {
-      j["versus"] = {{"A", versus->a_name},
-                     {"B", versus->b_name},
+      // An older name is reported as the level it stands for.
+      j["versus"] = {{"A", ai::levelName(versus->a)},
+                     {"B", ai::levelName(versus->b)},
                      {"racks", versus->racks},
                      {"wins", {{"A", versus->wins_a}, {"B", versus->wins_b}}}};
     }
@@ -315,9 +313,9 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
       << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";
   if (versus) {
     const auto [lo, hi] = wilson(versus->wins_a, versus->wins_a + versus->wins_b);
-    out << "versus: " << versus->a_name << " won " << versus->wins_a << ", " << versus->b_name
-        << " won " << versus->wins_b << " of " << versus->racks
-        << " racks (the break alternating); " << versus->a_name << "'s share of the wins "
+    out << "versus: " << ai::levelName(versus->a) << " won " << versus->wins_a << ", "
+        << ai::levelName(versus->b) << " won " << versus->wins_b << " of " << versus->racks
+        << " racks (the break alternating); " << ai::levelName(versus->a) << "'s share of the wins "
         << std::setprecision(3) << lo << "-" << hi << " (95 % Wilson interval)\n"
         << std::setprecision(2);
   } else {
