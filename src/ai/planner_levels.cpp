@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "common/named.hpp"
 #include "nineball/planner.hpp"
 
 namespace nineball::ai {
@@ -61,13 +62,7 @@ std::vector<std::string> levelNames() {
 }
 
 std::string levelNamesText() {
-  const std::vector<std::string> names = levelNames();
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    text += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
-    text += names[i];
-  }
-  return text;
+  return listed(levelNames());
 }
 
 const char* shotKindName(ShotKind kind) {

@@ -26,6 +26,17 @@ std::vector<std::string> namesOf(const std::vector<Def>& registry) {
   return out;
 }
 
+/// The names as a message lists them: "a", "a or b", "a, b or c" (`last` "and" for "a, b and
+/// c").
+inline std::string listed(const std::vector<std::string>& names, const char* last = "or") {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? std::string(" ") + last + " " : std::string(", ");
+    out += names[i];
+  }
+  return out;
+}
+
 /// True when `list` holds `name`.
 inline bool holds(const std::vector<std::string>& list, const std::string& name) {
   for (const std::string& s : list) {

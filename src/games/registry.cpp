@@ -40,12 +40,7 @@ std::string gamesPlayedBy(rules::RuleSet rules) {
   for (const GameDef& g : allGames()) {
     if (g.playedBy(rules)) names.emplace_back(g.name);
   }
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) out += i + 1 == names.size() ? " and " : ", ";
-    out += names[i];
-  }
-  return out;
+  return listed(names, "and");
 }
 
 std::string rulesOnlyFor(rules::RuleSet rules) {

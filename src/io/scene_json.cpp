@@ -8,6 +8,8 @@
 #include <string>
 
 #include "common/limits.hpp"
+#include "common/named.hpp"
+#include "common/named.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_parts.hpp"
@@ -113,12 +115,9 @@ std::string clothsUsing(unsigned used_by) {
 
 // "a", "a" or "b", "a", "b" or "c": the names a field may take.
 std::string oneOf(const std::vector<std::string>& names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
-    out += quote(names[i]);
-  }
-  return out;
+  std::vector<std::string> quoted;
+  for (const std::string& n : names) quoted.push_back(quote(n));
+  return listed(quoted);
 }
 
 // The names of the models of one kind (CushionModel, BallBallModel) that read `parameter`.
