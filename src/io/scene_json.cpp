@@ -9,7 +9,6 @@
 
 #include "common/limits.hpp"
 #include "common/named.hpp"
-#include "common/named.hpp"
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_parts.hpp"
