@@ -13,6 +13,7 @@
 #include <condition_variable>
 #include <exception>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,7 @@
 
 #include "nineball/cancel.hpp"
 #include "nineball/json.hpp"
+#include "nineball/motion.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
@@ -185,9 +187,10 @@ py::dict traceToPython(const Trace& trace) {
   return out;
 }
 
-// The result document of `nineball sim`, as Python objects; the trace (which can be large)
-// goes straight from the samples, not through JSON text.
-py::object resultToPython(SimResult result) {
+// The result document of `nineball sim`, as Python objects (a nineball.Result, which keeps the
+// physics the run used for state_at); the trace (which can be large) goes straight from the
+// samples, not through JSON text.
+py::object resultToPython(SimResult result, const PhysicsParams& physics) {
   const py::object loads = py::module_::import("json").attr("loads");
   std::optional<Trace> trace = std::move(result.trace);
   result.trace.reset();
@@ -205,7 +208,7 @@ py::object resultToPython(SimResult result) {
       }
     }
   }
-  return doc;
+  return py::module_::import("nineball").attr("Result")(doc, physicsJsonText(physics));
 }
 
 // A result that breaks its promises (a ball off the table, a number not finite) is a defect
@@ -275,7 +278,7 @@ py::object simulateOne(py::handle scene) {
     r = simulate(s);
   });
   checkResult(s, r, "");
-  return resultToPython(std::move(r));
+  return resultToPython(std::move(r), s.physics);
 }
 
 // `threads` as given, checked: an int (not a bool) of 0 (one per core) up to the cores there
@@ -315,7 +318,7 @@ py::list simulateMany(py::handle scenes, py::handle threads_given, std::size_t f
   py::list out;
   for (std::size_t k = 0; k < results.size(); ++k) {
     checkResult(parsed[k], results[k], "scenes[" + std::to_string(first_index + k) + "]: ");
-    out.append(resultToPython(std::move(results[k])));
+    out.append(resultToPython(std::move(results[k]), parsed[k].physics));
   }
   return out;
 }
@@ -358,6 +361,123 @@ py::dict continueFrom(py::handle scene_given, py::handle result, py::object shot
   out["balls"] = balls;
   if (!shot.is_none()) out["shot"] = shot;
   if (!until.is_none()) out["until"] = until;
+  return out;
+}
+
+// The ball's `name` column of a trace (a numpy array or a list), checked to hold `n` rows.
+py::sequence traceColumn(const py::dict& ball, const char* name, const std::string& key,
+                         std::size_t n) {
+  if (!ball.contains(name)) {
+    throw py::value_error("result: trace[\"" + key + "\"] has no \"" + name + "\" column");
+  }
+  const py::object column = ball[name];
+  if (!py::isinstance<py::sequence>(column) || py::len(column) != n) {
+    throw py::value_error("result: trace[\"" + key + "\"][\"" + name + "\"] is not a column of " +
+                          std::to_string(n) + " samples");
+  }
+  return column.cast<py::sequence>();
+}
+
+double cell(const py::sequence& column, std::size_t i) {
+  return py::float_(column[i]).cast<double>();
+}
+
+// The index of the last sample at or before t (the samples are in time order).
+std::size_t lastSampleAtOrBefore(const py::sequence& times, std::size_t n, double t) {
+  std::size_t lo = 0;
+  std::size_t hi = n;  // cell(times, lo) <= t < cell(times, hi), hi = n standing for +inf
+  while (hi - lo > 1) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (cell(times, mid) <= t) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+// The pocket each ball of a result dropped into, by id (as the trace's keys spell it).
+std::map<std::string, py::object> pocketsOf(const py::dict& result) {
+  std::map<std::string, py::object> pockets;
+  if (!result.contains("balls")) return pockets;
+  for (py::handle b : result["balls"]) {
+    if (!py::isinstance<py::dict>(b)) continue;
+    const py::dict ball = b.cast<py::dict>();
+    if (ball.contains("id") && ball.contains("pocket")) {
+      pockets[py::str(ball["id"]).cast<std::string>()] = ball["pocket"];
+    }
+  }
+  return pockets;
+}
+
+// Every ball of a traced result at time t: its last sample at or before t carried on by the
+// closed form of its free motion under the scene's physics. No event lies between the two
+// (every event's instant is sampled), so this is the run's own motion, not an interpolation.
+py::list stateAt(py::handle result_given, double t, py::handle scene) {
+  if (!py::isinstance<py::dict>(result_given)) {
+    throw py::type_error("result: expected the dict simulate returned");
+  }
+  const py::dict result = result_given.cast<py::dict>();
+  if (!result.contains("trace") || !py::isinstance<py::dict>(result["trace"])) {
+    throw py::value_error(
+        "result: has no trace; simulate the scene with \"trace\": {\"events_only\": true} "
+        "(exact at any instant) or {\"hz\": ...}");
+  }
+  if (!std::isfinite(t)) throw py::value_error("t: expected a finite number of seconds");
+  const PhysicsParams physics = parse(scene, "scene: ").physics;
+  const bool truncated =
+      result.contains("trace_truncated") && result["trace_truncated"].cast<bool>();
+  const std::map<std::string, py::object> pockets = pocketsOf(result);
+  py::list out;
+  for (auto item : result["trace"].cast<py::dict>()) {
+    const std::string key = py::str(item.first).cast<std::string>();
+    const py::dict ball = item.second.cast<py::dict>();
+    const std::size_t n = ball.contains("t") ? py::len(ball["t"]) : 0;
+    if (n == 0) throw py::value_error("result: trace[\"" + key + "\"] has no samples");
+    const py::sequence times = traceColumn(ball, "t", key, n);
+    const double first = cell(times, 0);
+    const double last = cell(times, n - 1);
+    if (t < first && first > 0.0) {
+      throw py::value_error("t: " + py::str(py::float_(t)).cast<std::string>() +
+                            " s is before the trace's first sample (" +
+                            py::str(py::float_(first)).cast<std::string>() +
+                            " s; an events-only trace starts at the first event): trace with "
+                            "{\"hz\": 1} or more to cover the run from 0");
+    }
+    if (t < first || t > last) {
+      throw py::value_error("t: " + py::str(py::float_(t)).cast<std::string>() +
+                            " s is outside the " + (truncated ? "truncated trace" : "run") + " (" +
+                            py::str(py::float_(first)).cast<std::string>() + " to " +
+                            py::str(py::float_(last)).cast<std::string>() + " s)");
+    }
+    const std::size_t k = lastSampleAtOrBefore(times, n, t);
+    const std::string phase = py::str(traceColumn(ball, "phase", key, n)[k]).cast<std::string>();
+    const py::sequence spins = traceColumn(ball, "w", key, n);
+    BallState b;
+    b.id = std::stoi(key);
+    b.pos = {cell(traceColumn(ball, "x", key, n), k), cell(traceColumn(ball, "y", key, n), k)};
+    b.vel = {cell(traceColumn(ball, "vx", key, n), k), cell(traceColumn(ball, "vy", key, n), k)};
+    const py::sequence w = py::reinterpret_borrow<py::object>(spins[k]).cast<py::sequence>();
+    b.w = {cell(w, 0), cell(w, 1), cell(w, 2)};
+    const bool pocketed = phase == tracePhaseName(TracePhase::Pocketed);
+    if (!pocketed) b = freeMotion(b, t - cell(times, k), physics);
+    py::dict one;
+    one["id"] = b.id;
+    one["x"] = b.pos.x;
+    one["y"] = b.pos.y;
+    one["vx"] = b.vel.x;
+    one["vy"] = b.vel.y;
+    py::list spin;
+    spin.append(b.w.x);
+    spin.append(b.w.y);
+    spin.append(b.w.z);
+    one["w"] = spin;
+    one["phase"] = pocketed ? phase : tracePhaseName(freePhase(b, physics));
+    const auto dropped = pockets.find(key);
+    one["pocket"] = pocketed && dropped != pockets.end() ? dropped->second : py::none();
+    out.append(one);
+  }
   return out;
 }
 
@@ -473,6 +593,9 @@ PYBIND11_MODULE(_core, m) {
         "physics and step, every ball still on the table as the result left it (its mass from "
         "the scene), and `shot` and `until` if given (else the balls roll on to rest). Feed it "
         "to simulate.");
+  m.def("state_at", &nineball::python::stateAt, py::arg("result"), py::arg("t"), py::arg("scene"),
+        "Every ball of a traced result at time t (s): its last sample at or before t carried on "
+        "by the closed form of its free motion under the scene's physics.");
   m.def("table_geometry", &nineball::python::tableGeometry, py::arg("scene"),
         "The table of a scene (its table and physics) as the physics builds it: size, pockets, "
         "cushion loop, spots.");

@@ -29,6 +29,10 @@ std::string resultJsonText(const SimResult& result);
 /// name.
 std::optional<std::string> presetJsonText(const std::string& name);
 
+/// The physics `p` as a scene's "physics" object with every parameter its models read, as
+/// compact JSON text (feeding it back gives the same physics).
+std::string physicsJsonText(const PhysicsParams& p);
+
 /// What `nineball match` prints for the script `text` (docs/cli.md): the rack played, the
 /// computer's turns planned, as compact JSON text ("partial": true when a shot stopped with
 /// balls still moving). Or why the script, or one of its turns, is refused. A computer's turn

@@ -8,6 +8,7 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - simulate_many(scenes, threads=0): many, in order, on every core.
 - continue_from(scene, result, shot=None, until=None): the scene that goes on from a result.
 - to_json(doc): a result or scene as JSON text, numpy arrays as lists.
+- state_at(result, t, scene=None): every ball at any instant of a traced run, exactly.
 - iter_simulate(scenes, threads=0, chunk=256, progress=None): results streamed in order,
   at most a chunk held at a time; a progress bar (tqdm) for long batches.
 - simulate_batch(scenes, threads=0): final states and event counts as numpy arrays.
@@ -16,12 +17,15 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
 - match(script): a rack played from a match script, computer players included.
 - preset(name) / PRESETS: the physics presets ("real", "paper") with every parameter.
+- Result: what the simulations return, a dict that keeps its run's physics (.physics).
+- nineball.dask.simulate(client, scenes): a sweep on a Dask cluster (optional).
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
 formats: docs/cli.md; this package: docs/python.md.
 """
 
 import itertools
+import json
 from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Union
 
 from . import _core
@@ -30,10 +34,27 @@ __version__: str = _core.__version__
 
 #: A scene of ``nineball sim``: a dict (numpy numbers and arrays allowed) or its JSON text.
 Scene = Union[Mapping[str, Any], str]
-#: A result of ``nineball sim`` as Python objects.
-Result = Dict[str, Any]
 
-__all__ = ["simulate", "simulate_many", "continue_from", "to_json", "iter_simulate",
+
+class Result(dict):
+    """A result of ``nineball sim`` as Python objects: the dict the command prints.
+
+    It also remembers the physics its run used (``physics``), which state_at reads; it
+    pickles (to Dask workers and back) and ``json.dumps`` as the plain dict it is.
+    """
+
+    def __init__(self, doc: Mapping[str, Any] = (), physics_json: Optional[str] = None):
+        super().__init__(doc)
+        self._physics_json = physics_json
+
+    @property
+    def physics(self) -> Optional[Dict[str, Any]]:
+        """The physics the run used, every parameter, as a scene's "physics" object (a copy);
+        None for a result built from a plain dict."""
+        return None if self._physics_json is None else json.loads(self._physics_json)
+
+
+__all__ = ["simulate", "simulate_many", "continue_from", "to_json", "state_at", "iter_simulate",
            "simulate_batch", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
            "Result",
            "__version__"]
@@ -80,6 +101,38 @@ def continue_from(scene: Scene, result: Result, shot: Optional[Mapping[str, Any]
 def to_json(doc: Union[Result, Mapping[str, Any]]) -> str:
     """A result (or a scene) as JSON text, a trace's numpy arrays written as lists."""
     return _core.to_json(doc)
+
+
+def state_at(result: Mapping[str, Any], t: float,
+             scene: Optional[Scene] = None) -> List[Dict[str, Any]]:
+    """Every ball of a traced run at time ``t`` (s), exactly: one dict per ball, in the
+    trace's order, with ``id``, ``x``, ``y`` (m), ``vx``, ``vy`` (m/s), ``w`` ([wx, wy, wz],
+    rad/s), ``phase`` ("sliding", "rolling", "spinning", "rest", "pocketed") and ``pocket``
+    (the pocket's name once it has dropped, else None).
+
+    The state is the ball's last sample at or before ``t`` carried on by the closed form of
+    its free motion (the cloth's sliding, rolling and spinning), under the physics the run
+    used: no event lies between (every event's instant is sampled), so it is the run's own
+    motion at any instant, never an interpolation. The smallest trace that covers the whole
+    run is ``"trace": {"hz": 1}`` (an events-only trace starts at the first event).
+
+    ``result`` must carry a trace; ``scene`` (the scene it came from) is needed only when
+    ``result`` is a plain dict (read back from JSON, say), for its physics. ``t`` outside the
+    run (or past a truncated trace's end) raises ValueError.
+    """
+    if scene is None:
+        physics = getattr(result, "_physics_json", None)
+        if physics is None:
+            raise ValueError("scene: needed for a result that does not carry its physics "
+                             "(a plain dict): pass the scene it came from")
+        scene = {"physics": json.loads(physics), "balls": []}
+    elif isinstance(scene, Mapping):
+        scene = {"physics": scene.get("physics", {}), "balls": []}
+    else:
+        scene = {"physics": json.loads(scene).get("physics", {}), "balls": []}
+    if isinstance(t, bool) or not isinstance(t, (int, float)) and not hasattr(t, "__float__"):
+        raise TypeError("t: expected a number of seconds, found " + type(t).__name__)
+    return _core.state_at(result, float(t), scene)
 
 
 def _progress_bar(total: Optional[int], progress: Optional[bool]):
@@ -278,7 +331,7 @@ def preset(name: str = "real") -> Dict[str, Any]:
     return _core.preset(name)
 
 
-def match(script: Scene) -> Result:
+def match(script: Scene) -> Dict[str, Any]:
     """A rack played from a match script, as ``nineball match`` prints it.
 
     The script (docs/cli.md, "nineball match"): ``game``, ``rules``, ``seed``, the table and

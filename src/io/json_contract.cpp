@@ -42,7 +42,11 @@ std::variant<std::string, SceneRefusal> matchJsonText(std::string_view text) {
 std::optional<std::string> presetJsonText(const std::string& name) {
   const std::optional<PhysicsParams> p = PhysicsParams::preset(name);
   if (!p) return std::nullopt;
-  return io::physicsToJson(*p).dump();
+  return physicsJsonText(*p);
+}
+
+std::string physicsJsonText(const PhysicsParams& p) {
+  return io::physicsToJson(p).dump();
 }
 
 std::variant<std::string, SceneRefusal> planJsonText(std::string_view text) {

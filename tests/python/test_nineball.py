@@ -340,15 +340,97 @@ def test_every_call_has_a_signature_and_a_docstring():
     import inspect
     import pydoc
 
-    for name in ("simulate", "simulate_many", "continue_from", "to_json"):
+    page = pydoc.render_doc(nineball)
+    calls = [name for name in nineball.__all__ if callable(getattr(nineball, name))
+             and not name.startswith("_") and name not in ("Scene",)]
+    assert len(calls) >= 14, calls
+    for name in calls:
         call = getattr(nineball, name)
-        assert inspect.signature(call).parameters, name
+        if not isinstance(call, type):
+            assert inspect.signature(call).parameters, name
         assert call.__doc__ and len(call.__doc__) > 40, name
-        assert name in pydoc.render_doc(nineball), name
+        assert name in page, name
     assert inspect.signature(nineball.simulate_many).parameters["threads"].default == 0
     package = os.path.dirname(nineball.__file__)
     assert os.path.exists(os.path.join(package, "py.typed"))
     assert os.path.exists(os.path.join(package, "_core.pyi"))
+
+
+def break_scene(trace):
+    with open(os.path.join(SOURCE, "docs", "break.json")) as f:
+        scene = json.load(f)
+    scene["trace"] = trace
+    return scene
+
+
+def test_state_at_is_the_run_itself_at_any_instant():
+    # A break traced once a second (plus its events and phase changes) gives, at every instant
+    # of a 400 Hz trace of the same run, that trace's own sample: both are the engine's closed
+    # forms, read from different starting points, so they agree to rounding (1e-11 m, m/s,
+    # rad/s: some 300 times the 2.8e-14 measured), where a straight line between samples misses
+    # by centimetres.
+    coarse = nineball.simulate(break_scene({"hz": 1}))
+    fine = nineball.simulate(break_scene({"hz": 400}))
+    assert coarse["balls"] == fine["balls"]
+    ids = list(fine["trace"])
+    times = fine["trace"][ids[0]]["t"]
+    assert len(times) > len(coarse["trace"][ids[0]]["t"]) * 20
+    worst = 0.0
+    for k in range(0, len(times), 3):
+        states = nineball.state_at(coarse, times[k])
+        assert [str(s["id"]) for s in states] == ids
+        for s in states:
+            sample = fine["trace"][str(s["id"])]
+            assert s["phase"] == sample["phase"][k], (s["id"], times[k])
+            for key in ("x", "y", "vx", "vy"):
+                worst = max(worst, abs(s[key] - sample[key][k]))
+            worst = max(worst, float(np.max(np.abs(np.array(s["w"]) - sample["w"][k]))))
+    assert worst < 1e-11, worst
+    # A pocketed ball says where it dropped.
+    end = nineball.state_at(coarse, coarse["time"])
+    dropped = {b["id"]: b["pocket"] for b in coarse["balls"] if b["pocket"] is not None}
+    assert dropped
+    assert {s["id"]: s["pocket"] for s in end if s["pocket"] is not None} == dropped
+    assert all(s["phase"] == "pocketed" for s in end if s["pocket"] is not None)
+
+
+def test_state_at_needs_a_trace_an_instant_of_the_run_and_the_physics():
+    scene = stun(trace={"hz": 1}, engine="reference")
+    result = nineball.simulate(scene)
+    with pytest.raises(ValueError, match="has no trace"):
+        nineball.state_at(nineball.simulate(stun()), 0.1)
+    with pytest.raises(ValueError, match="outside the run"):
+        nineball.state_at(result, result["time"] + 0.1)
+    with pytest.raises(ValueError, match="outside the run"):
+        nineball.state_at(result, -0.1)
+    events_only = nineball.simulate(stun(trace={"events_only": True}, engine="reference"))
+    with pytest.raises(ValueError, match="before the trace's first sample"):
+        nineball.state_at(events_only, 0.01)
+    with pytest.raises(TypeError, match="t: expected a number"):
+        nineball.state_at(result, "0.1")
+    # Read back from JSON, a result is a plain dict: the scene gives its physics.
+    plain = json.loads(nineball.to_json(result))
+    with pytest.raises(ValueError, match="scene: needed"):
+        nineball.state_at(plain, 0.2)
+    assert nineball.state_at(plain, 0.2, scene) == nineball.state_at(result, 0.2)
+    # The physics the run used, not the scene's later changes nor the default.
+    slow_cloth = dict(scene, physics={"rolling_friction": 0.03})
+    slow = nineball.simulate(slow_cloth)
+    assert slow.physics["rolling_friction"] == 0.03
+    assert nineball.state_at(slow, 0.8) == nineball.state_at(json.loads(nineball.to_json(slow)),
+                                                             0.8, slow_cloth)
+    assert nineball.state_at(slow, 0.8)[0]["x"] != nineball.state_at(result, 0.8)[0]["x"]
+
+
+def test_a_result_keeps_its_physics_through_pickle_and_json():
+    import pickle
+
+    result = nineball.simulate(stun(trace={"hz": 1}))
+    assert isinstance(result, dict) and isinstance(result, nineball.Result)
+    back = pickle.loads(pickle.dumps(result))
+    assert back.physics == result.physics == nineball.preset("real")
+    assert nineball.state_at(back, 0.3) == nineball.state_at(result, 0.3)
+    assert json.loads(nineball.to_json(result))["balls"] == result["balls"]
 
 
 def test_iter_simulate_streams_in_order_a_chunk_at_a_time():
@@ -510,3 +592,20 @@ def test_the_documented_commands_name_the_python_the_module_is_built_for():
             text = f.read()
         assert not re.search(r"PYTHONPATH=\S+ python3 ", text), doc
         assert not re.search(r"^\s*python3 examples/", text, re.M), doc
+
+
+def test_the_worked_example_in_the_docs_is_the_script_ctest_runs():
+    # docs/python.md shows examples/worked_example.py cell by cell; Examples.WorkedExample runs
+    # the script and checks what the text says, so the two must not drift apart.
+    import re
+
+    with open(os.path.join(SOURCE, "docs", "python.md")) as f:
+        docs = f.read()
+    section = docs[docs.index("## A worked example"):docs.index("## API reference")]
+    shown = re.findall(r"\*\*(\d\. [^*]+)\*\*.*?```python\n(.*?)```", section, re.S)
+    with open(os.path.join(SOURCE, "examples", "worked_example.py")) as f:
+        cells = re.split(r"(?m)^# %% ", f.read())[1:]
+    script = {c.splitlines()[0]: "\n".join(c.splitlines()[1:]).strip() for c in cells}
+    assert len(shown) == 5
+    for title, code in shown:
+        assert script.get(title) == code.strip(), title

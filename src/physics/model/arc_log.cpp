@@ -25,7 +25,6 @@ const char* tracePhaseName(TracePhase p) {
 }
 
 namespace physics {
-namespace {
 
 TracePhase tracePhase(Phase p) {
   switch (p) {
@@ -40,6 +39,8 @@ TracePhase tracePhase(Phase p) {
   }
   return TracePhase::Rest;
 }
+
+namespace {
 
 // The instants every ball is sampled at, sorted and distinct, at most `most` of them (the
 // earliest); `truncated` says whether any were left out.

@@ -44,6 +44,9 @@ class ArcLog {
   double cut_ = kNever;
 };
 
+/// The name a trace gives a phase of the motion.
+TracePhase tracePhase(Phase p);
+
 /// The trace of a run that ended at `end`, sampled as `request` asks from the arcs in `log`;
 /// `events` are the run's events (their instants are sampled).
 Trace sampleTrace(const ArcLog& log, const std::vector<Event>& events, double end,

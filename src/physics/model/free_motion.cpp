@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "nineball/motion.hpp"
+#include "physics/model/arc_log.hpp"
 #include "physics/model/contact_times.hpp"
 #include "physics/model/motion.hpp"
 
@@ -30,6 +31,10 @@ BallState freeMotion(const BallState& ball, double t, const PhysicsParams& p) {
   out.vel = k.v;
   out.w = k.w;
   return out;
+}
+
+TracePhase freePhase(const BallState& ball, const PhysicsParams& p) {
+  return physics::tracePhase(physics::beginArc(0.0, kinematicsOf(ball), p).phase);
 }
 
 std::optional<double> timeToTouch(const BallState& a, const BallState& b, const PhysicsParams& p,

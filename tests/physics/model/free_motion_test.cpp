@@ -35,6 +35,22 @@ TEST(FreeMotion, AStunBallSlidesThenRollsThenStopsAsTheClosedFormsSay) {
   EXPECT_THROW(freeMotion(ball, -1.0, p), std::invalid_argument);
 }
 
+// The phase a trace names, for a ball in each: struck without spin it slides, after the
+// sliding time it rolls, once stopped it rests; side spin alone spins it in place.
+TEST(FreeMotion, ThePhaseIsTheOneTheBallIsIn) {
+  const PhysicsParams p;
+  const double v0 = 2.0;
+  const BallState ball = BallState::at(0, {}, {v0, 0.0});
+  const double t_roll = 2.0 * v0 / (7.0 * p.sliding_friction * p.gravity);
+  EXPECT_EQ(freePhase(ball, p), TracePhase::Sliding);
+  EXPECT_EQ(freePhase(freeMotion(ball, 0.5 * t_roll, p), p), TracePhase::Sliding);
+  EXPECT_EQ(freePhase(freeMotion(ball, 1.5 * t_roll, p), p), TracePhase::Rolling);
+  EXPECT_EQ(freePhase(freeMotion(ball, 100.0, p), p), TracePhase::Rest);
+  BallState spinning = BallState::at(0, {});
+  spinning.w = {0.0, 0.0, 20.0};
+  EXPECT_EQ(freePhase(spinning, p), TracePhase::Spinning);
+}
+
 TEST(FreeMotion, TheContactTimeIsTheReferenceEnginesFirstContact) {
   PhysicsParams p;
   StepParams step;
