@@ -561,9 +561,14 @@ py::object matchOf(py::handle script) {
 // The physics preset `name` as a scene's physics object.
 py::object presetOf(const std::string& name) {
   const std::optional<std::string> text = presetJsonText(name);
-  if (!text)
-    throw py::value_error("preset: unknown preset \"" + name +
-                          "\" (expected \"real\" or \"paper\")");
+  if (!text) {
+    std::string expected;
+    const std::vector<std::string> names = PhysicsParams::presetNames();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
+    }
+    throw py::value_error("preset: unknown preset \"" + name + "\" (expected " + expected + ")");
+  }
   return py::module_::import("json").attr("loads")(*text);
 }
 
@@ -585,6 +590,8 @@ std::string toJson(py::handle doc) {
 PYBIND11_MODULE(_core, m) {
   m.doc() = "The compiled core of the nineball package: see help(nineball).";
   m.attr("__version__") = NINEBALL_VERSION;
+  m.attr("PRESETS") = py::tuple(py::cast(nineball::PhysicsParams::presetNames()));
+  m.attr("TABLES") = py::tuple(py::cast(nineball::TableDef::names()));
   m.def("simulate", &nineball::python::simulateOne, py::arg("scene"),
         "Simulates one scene (a dict or JSON text) and returns the result dict.");
   m.def("continue_from", &nineball::python::continueFrom, py::arg("scene"), py::arg("result"),

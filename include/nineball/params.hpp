@@ -148,8 +148,12 @@ struct PhysicsParams {
   /// The seed paper's values: m 0.16 kg, ball e 0.9, rail keeps 70 % of the normal speed,
   /// mu m g on the cloth and nothing else (no spin).
   static PhysicsParams paper();
-  /// "real" or "paper".
+  /// Carom equipment (UMB balls, a heated carom cloth), the real models.
+  static PhysicsParams carom();
+  /// A preset by the name scenes give it (presetNames()); nothing for another.
   static std::optional<PhysicsParams> preset(const std::string& name);
+  /// Every preset's name: "real", "paper", "carom".
+  static std::vector<std::string> presetNames();
 };
 
 /// Solver settings. Box2D units are metres x scale.

@@ -27,8 +27,14 @@ struct TableDef {
   static TableDef nineFoot() { return {}; }
   static TableDef eightFoot() { return {2.34, 1.17}; }
   static TableDef sevenFoot() { return {1.98, 0.99}; }
-  /// "9ft", "8ft" or "7ft"; nothing for any other name.
+  /// A carom match table (UMB: 2.84 x 1.42 m between the cushion noses), no pockets.
+  static TableDef carom();
+  /// A small carom table (2.10 x 1.05 m), no pockets.
+  static TableDef caromSmall();
+  /// A table by the name scenes, scripts and --table give it (names()); nothing for another.
   static std::optional<TableDef> named(const std::string& name);
+  /// Every named table, pool's first: "9ft", "8ft", "7ft", "carom", "carom-small".
+  static std::vector<std::string> names();
 };
 
 /// "top-left", "top-side", ... (top = +y, right = +x).

@@ -16,7 +16,7 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
 - match(script): a rack played from a match script, computer players included.
-- preset(name) / PRESETS: the physics presets ("real", "paper") with every parameter.
+- preset(name) / PRESETS: the physics presets ("real", "paper", "carom") with every parameter.
 - Result: what the simulations return, a dict that keeps its run's physics (.physics).
 - nineball.dask.simulate(client, scenes): a sweep on a Dask cluster (optional).
 
@@ -54,7 +54,10 @@ class Result(dict):
         return None if self._physics_json is None else json.loads(self._physics_json)
 
 
-__all__ = ["simulate", "simulate_many", "continue_from", "to_json", "state_at", "iter_simulate",
+#: The named tables, as a scene's "table" takes them.
+TABLES = _core.TABLES
+
+__all__ = ["TABLES", "simulate", "simulate_many", "continue_from", "to_json", "state_at", "iter_simulate",
            "simulate_batch", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
            "Result",
            "__version__"]
@@ -251,7 +254,8 @@ class Pocket:
 class Table:
     """The table as the physics builds it, for a scene's ``table`` and ``physics``.
 
-    ``table``: "9ft", "8ft" or "7ft", or the scene format's table object; ``physics``: the
+    ``table``: a name of TABLES ("9ft", "8ft", "7ft", "carom", "carom-small"; the carom ones
+    have no pockets) or the scene format's table object; ``physics``: the
     scene's physics object (its ball radius sets how deep the pocket cups are). Attributes, SI
     units, the origin at the table's centre, x along its length: ``length``, ``width``,
     ``ball_radius``, ``corner_pocket`` and ``side_pocket`` (mouth widths), ``pockets`` (Pocket,
@@ -317,7 +321,7 @@ def plan(scene: Scene, level: Optional[str] = None, game: Optional[str] = None,
 
 #: The physics presets' names: "real" (the default: throw, squirt, Mathavan's cushion) and
 #: "paper" (the seed paper's models).
-PRESETS = ("real", "paper")
+PRESETS = _core.PRESETS
 
 
 def preset(name: str = "real") -> Dict[str, Any]:

@@ -2,6 +2,8 @@
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Union
 
 __version__: str
+PRESETS: tuple
+TABLES: tuple
 
 def simulate(scene: Union[Mapping[str, Any], str]) -> Dict[str, Any]: ...
 def simulate_many(scenes: Iterable[Union[Mapping[str, Any], str]],

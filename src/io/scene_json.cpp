@@ -26,23 +26,17 @@ constexpr double kMaxUntil = limits::kMaxSimTime;
 
 }  // namespace
 
-TableDef parseTable(const json& v) {
-  const std::string path = "table";
-  if (v.is_string()) {
-    const std::string name = v.get<std::string>();
-    if (auto named = TableDef::named(name)) return *named;
-    refuse(path,
-           "unknown table " + quote(name) + " (expected \"9ft\", \"8ft\", \"7ft\" or an object)");
-  }
-  if (!v.is_object()) {
-    refuse(path, "expected a table name or an object, found " + describe(v));
-  }
-  allowOnly(v, path,
-            {"length", "width", "corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"});
-  TableDef t;
-  t.length = number(required(v, path, "length"), "table.length", Bounds::positive(kMaxTableSize));
-  t.width = number(required(v, path, "width"), "table.width", Bounds::positive(kMaxTableSize));
-  if (t.width > t.length) refuse("table.width", "must be <= table.length");
+namespace {
+
+// Names as a message quotes them: "9ft", "8ft" or "7ft".
+std::string quotedList(const std::vector<std::string>& names) {
+  std::vector<std::string> quoted;
+  for (const std::string& name : names) quoted.push_back(quote(name));
+  return listed(quoted);
+}
+
+// The pocket mouths and jaws of a custom table with pockets.
+void parsePocketFields(const json& v, const std::string& path, TableDef& t) {
   for (auto [key, field] : {std::pair{"corner_pocket", &TableDef::corner_pocket},
                             std::pair{"side_pocket", &TableDef::side_pocket}}) {
     if (const json* p = optional(v, key)) {
@@ -59,6 +53,42 @@ TableDef parseTable(const json& v) {
   if (const json* p = optional(v, "side_jaw_deg")) {
     t.side_jaw_deg = number(*p, "table.side_jaw_deg", jaw);
   }
+}
+
+}  // namespace
+
+TableDef parseTable(const json& v) {
+  const std::string path = "table";
+  if (v.is_string()) {
+    const std::string name = v.get<std::string>();
+    if (auto named = TableDef::named(name)) return *named;
+    std::vector<std::string> names = TableDef::names();
+    for (std::string& n : names) n = quote(n);
+    names.emplace_back("an object");
+    refuse(path, "unknown table " + quote(name) + " (expected " + listed(names) + ")");
+  }
+  if (!v.is_object()) {
+    refuse(path, "expected a table name or an object, found " + describe(v));
+  }
+  allowOnly(v, path,
+            {"length", "width", "pockets", "corner_pocket", "side_pocket", "corner_jaw_deg",
+             "side_jaw_deg"});
+  TableDef t;
+  t.length = number(required(v, path, "length"), "table.length", Bounds::positive(kMaxTableSize));
+  t.width = number(required(v, path, "width"), "table.width", Bounds::positive(kMaxTableSize));
+  if (t.width > t.length) refuse("table.width", "must be <= table.length");
+  if (const json* p = optional(v, "pockets")) {
+    if (!p->is_boolean()) refuse("table.pockets", "expected true or false, found " + describe(*p));
+    t.pockets = p->get<bool>();
+  }
+  if (!t.pockets) {
+    for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"}) {
+      if (optional(v, key))
+        refuse(member(path, key), "a table without pockets has no pocket mouths or jaws");
+    }
+    return t;
+  }
+  parsePocketFields(v, path, t);
   return t;
 }
 
@@ -188,8 +218,8 @@ PhysicsParams parsePhysics(const json& v) {
     const std::string name = text(*preset, "physics.preset");
     auto found = PhysicsParams::preset(name);
     if (!found) {
-      refuse("physics.preset",
-             "unknown preset " + quote(name) + " (expected \"real\" or \"paper\")");
+      refuse("physics.preset", "unknown preset " + quote(name) + " (expected " +
+                                   quotedList(PhysicsParams::presetNames()) + ")");
     }
     p = *found;
   }

@@ -391,6 +391,52 @@ TEST(SceneJson, ReadsACustomTable) {
   EXPECT_EQ(s.table.side_jaw_deg, TableDef().side_jaw_deg);
 }
 
+TEST(SceneJson, ReadsTheCaromTablesWithoutPockets) {
+  Scene s = accepted(R"({"table": "carom", "balls": [{"id": 0, "x": -0.4, "y": 0}]})");
+  EXPECT_EQ(s.table.length, 2.84);
+  EXPECT_EQ(s.table.width, 1.42);
+  EXPECT_FALSE(s.table.pockets);
+  s = accepted(R"({"table": "carom-small", "balls": [{"id": 0, "x": -0.4, "y": 0}]})");
+  EXPECT_EQ(s.table.length, 2.10);
+  EXPECT_EQ(s.table.width, 1.05);
+  EXPECT_FALSE(s.table.pockets);
+  s = accepted(scene(R"("table": {"length": 2.0, "width": 1.0, "pockets": false})"));
+  EXPECT_FALSE(s.table.pockets);
+  EXPECT_TRUE(
+      accepted(scene(R"("table": {"length": 2.0, "width": 1.0, "pockets": true})")).table.pockets);
+  // A ball in what would be a pool table's corner pocket is on the cloth of a carom table.
+  EXPECT_EQ(
+      accepted(R"({"table": "carom", "balls": [{"id": 0, "x": 1.38, "y": 0.67}]})").balls.size(),
+      1u);
+}
+
+TEST(SceneJson, RefusesPocketFieldsOnATableWithoutPockets) {
+  for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"}) {
+    const std::string table =
+        std::string(R"("table": {"length": 2.0, "width": 1.0, "pockets": false, ")") + key +
+        R"(": 0.1})";
+    EXPECT_TRUE(refusedAt(scene(table), std::string("table.") + key,
+                          "a table without pockets has no pocket mouths or jaws"))
+        << key;
+  }
+  EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 2.0, "width": 1.0, "pockets": 0})"),
+                        "table.pockets", "expected true or false"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": "snooker")"), "table",
+                        R"(expected "9ft", "8ft", "7ft", "carom", "carom-small" or an object)"));
+}
+
+TEST(SceneJson, ReadsTheCaromPreset) {
+  const Scene s = accepted(scene(R"("physics": {"preset": "carom"})"));
+  EXPECT_EQ(s.physics.ball_radius, 0.03075);
+  EXPECT_EQ(s.physics.ball_mass, 0.210);
+  EXPECT_EQ(s.physics.cushion_height, 0.037);
+  EXPECT_EQ(s.physics.rolling_friction, 0.005);
+  EXPECT_EQ(s.physics.cushion, PhysicsParams::real().cushion);
+  EXPECT_EQ(s.physics.ball_ball, PhysicsParams::real().ball_ball);
+  EXPECT_TRUE(refusedAt(scene(R"("physics": {"preset": "moon"})"), "physics.preset",
+                        R"(expected "real", "paper" or "carom")"));
+}
+
 TEST(SceneJson, ReadsASpeedShotWithTip) {
   const Scene s =
       accepted(scene(R"("shot": {"heading_deg": 90, "speed": 3, "tip": [0.25, -0.5]})"));

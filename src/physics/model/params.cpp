@@ -1,5 +1,8 @@
 #include "nineball/params.hpp"
 
+#include <string>
+#include <vector>
+
 namespace nineball {
 
 PhysicsParams PhysicsParams::paper() {
@@ -16,10 +19,56 @@ PhysicsParams PhysicsParams::paper() {
   return p;
 }
 
+PhysicsParams PhysicsParams::carom() {
+  PhysicsParams p;  // the real models: throw, squirt, swerve, Mathavan's cushion
+  // UMB equipment rules: balls of 61 to 61.5 mm and 205 to 220 g.
+  p.ball_radius = 0.0615 / 2.0;
+  p.ball_mass = 0.210;
+  // UMB: the cushion's nose 37 mm (+-1) above the slate, 60 % of the ball's diameter.
+  p.cushion_height = 0.037;
+  // The heated carom cloth is fast: tracked carom shots roll out at about 0.05 m/s^2, a
+  // rolling resistance of 0.005, half a pool cloth's (shared/physics-models.md).
+  p.rolling_friction = 0.005;
+  // No published measurement of a sliding carom ball was found; the worsted cloth's 0.2
+  // (Alciatore TP 4.1, pooltool's u_s) stands in, as for pool.
+  p.sliding_friction = 0.2;
+  // Carom cushions are fitted to the taller ball and played hard and long: Mathavan's
+  // measured ball-cushion values (e 0.98 for the model's own restitution, mu 0.14; Mathavan,
+  // Jackson and Parkin 2010) rather than pool's livelier-rubber defaults.
+  p.cushion_restitution = 0.98;
+  p.cushion_friction = 0.14;
+  // The cue: the same shaft end (its mass in kg) against a heavier ball squirts less.
+  return p;
+}
+
+namespace {
+
+struct NamedPreset {
+  const char* name;
+  PhysicsParams (*make)();
+};
+
+// The one list of presets: a name here is known everywhere a scene's physics is read.
+const std::vector<NamedPreset>& presets() {
+  static const std::vector<NamedPreset> list{{"real", &PhysicsParams::real},
+                                             {"paper", &PhysicsParams::paper},
+                                             {"carom", &PhysicsParams::carom}};
+  return list;
+}
+
+}  // namespace
+
 std::optional<PhysicsParams> PhysicsParams::preset(const std::string& name) {
-  if (name == "real") return real();
-  if (name == "paper") return paper();
+  for (const NamedPreset& p : presets()) {
+    if (name == p.name) return p.make();
+  }
   return std::nullopt;
+}
+
+std::vector<std::string> PhysicsParams::presetNames() {
+  std::vector<std::string> out;
+  for (const NamedPreset& p : presets()) out.emplace_back(p.name);
+  return out;
 }
 
 const char* clothModelName(ClothModel m) {

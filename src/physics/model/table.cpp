@@ -58,11 +58,51 @@ double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
 
 }  // namespace
 
+TableDef TableDef::carom() {
+  TableDef t;
+  t.length = 2.84;
+  t.width = 1.42;
+  t.pockets = false;
+  return t;
+}
+
+TableDef TableDef::caromSmall() {
+  TableDef t = carom();
+  t.length = 2.10;
+  t.width = 1.05;
+  return t;
+}
+
+namespace {
+
+struct NamedTable {
+  const char* name;
+  TableDef (*make)();
+};
+
+// The one list of named tables: a name here is known everywhere a table is read.
+const std::vector<NamedTable>& namedTables() {
+  static const std::vector<NamedTable> tables{{"9ft", &TableDef::nineFoot},
+                                              {"8ft", &TableDef::eightFoot},
+                                              {"7ft", &TableDef::sevenFoot},
+                                              {"carom", &TableDef::carom},
+                                              {"carom-small", &TableDef::caromSmall}};
+  return tables;
+}
+
+}  // namespace
+
 std::optional<TableDef> TableDef::named(const std::string& name) {
-  if (name == "9ft") return nineFoot();
-  if (name == "8ft") return eightFoot();
-  if (name == "7ft") return sevenFoot();
+  for (const NamedTable& t : namedTables()) {
+    if (name == t.name) return t.make();
+  }
   return std::nullopt;
+}
+
+std::vector<std::string> TableDef::names() {
+  std::vector<std::string> out;
+  for (const NamedTable& t : namedTables()) out.emplace_back(t.name);
+  return out;
 }
 
 const char* pocketName(PocketId id) {
