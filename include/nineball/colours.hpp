@@ -59,6 +59,15 @@ inline BallLook poolBallLook(int id) {
   return {ballColour(id), isStripe(id), id != 0};
 }
 
+/// Carom balls: 0 white, 1 yellow, 2 red, plain (no numbers, no stripes).
+inline BallLook caromBallLook(int id) {
+  constexpr Rgb kYellow{246, 200, 40};
+  constexpr Rgb kRed{206, 26, 32};
+  if (id == 1) return {kYellow, false, false};
+  if (id == 2) return {kRed, false, false};
+  return {kCueBallColour, false, false};
+}
+
 /// The stripe's half height as a fraction of the radius.
 constexpr double kStripeHalfHeight = 0.55;
 /// The white disc that carries the number, as a fraction of the radius.

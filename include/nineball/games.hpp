@@ -12,7 +12,8 @@
 namespace nineball {
 
 /// The standard rack of a game on `table` for balls of `ball_radius`: the object balls on
-/// their spots (the order the seed gives where the rules leave it free), `gap` apart.
+/// their spots (the order the seed gives where the rules leave it free), `gap` apart. A game
+/// whose opening places the cue ball too (carom) includes it (id 0).
 using RackMaker = std::vector<BallState> (*)(const TableDef& table, double ball_radius,
                                              std::uint64_t seed, double gap);
 
@@ -61,6 +62,14 @@ struct GameDef {
   bool break_from_every_spot = false;
   /// What `ai-bench` counts as a position made.
   const char* made = "potted the ball on";
+  /// The physics preset its equipment is (PhysicsParams::preset).
+  const char* physics = "real";
+  /// The cue ball is ever placed by hand (the break, ball in hand); carom never.
+  bool cue_in_hand = true;
+  /// Played to a number of points (three-cushion): the default distance and the menu's
+  /// choices; 0 and none for a game won on a ball.
+  int default_points = 0;
+  std::vector<int> points_choices;
 
   /// True when it is played by `rules`.
   bool playedBy(rules::RuleSet rules) const;

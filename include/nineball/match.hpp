@@ -35,9 +35,15 @@ struct MatchSetup {
   StepParams step;
   /// A custom layout instead of the rack; the first turn is then an ordinary shot.
   std::optional<std::vector<BallState>> balls;
+  /// The distance of a game played to points (GameDef::default_points; 0 for pool's games).
+  int points = 0;
 
-  /// Plays `g`, on the first of the tables it is played on (GameDef::tables).
+  /// Plays `g` by its default rules, with its equipment (GameDef::physics), on the first of the
+  /// tables it is played on (GameDef::tables), to its default distance.
   void setGame(rules::Game g);
+  /// The balls a rack starts with: the game's rack, and the cue ball on the head spot unless
+  /// the rack places it (carom's opening position).
+  std::vector<BallState> openingBalls() const;
 };
 
 /// One turn of a player: a shot (perhaps a push-out, perhaps placing the cue ball first), or
@@ -54,6 +60,22 @@ struct TurnInput {
   bool shoot = true;
 };
 
+/// One player's standing in a game played to points.
+struct PlayerScore {
+  int points = 0;
+  int innings = 0;   ///< the one being played included
+  int run = 0;       ///< points of the current inning (0 once it is over)
+  int high_run = 0;  ///< the best inning
+};
+
+/// Both players' standing after a turn.
+struct Score {
+  PlayerScore a, b;
+};
+
+/// The standing in `rack` (all zeros for pool's games).
+Score scoreOf(const rules::Rack& rack);
+
 /// What a turn gave.
 struct TurnRecord {
   rules::Player shooter = rules::Player::A;
@@ -63,6 +85,7 @@ struct TurnRecord {
   std::optional<rules::Call> call;  ///< the shot's call, when it had one
   rules::Decision answered = rules::Decision::None;  ///< for a decision: the choice it made
   bool shoot = true;  ///< for a decision: shoot / play on (true), or pass / rerack (false)
+  Score score;        ///< after the turn, for games played to points
 };
 
 /// A rack of any game of the registry (nineball/games.hpp) played through the real physics: the
@@ -105,6 +128,7 @@ class Match {
   void rerack();
   void spot(int ball);
   void returnCueToHeadSpot();
+  void setUpFrozenBalls();
   Vec2 freeSpotOnLine(Vec2 from, Vec2 step_dir) const;
 
   MatchSetup setup_;
@@ -114,6 +138,7 @@ class Match {
   bool push_out_ = false;
   bool cue_pocketed_ = false;  // the cue ball is off the table, waiting to be placed
   int ball_on_at_start_ = 0;
+  int cue_ = kCueBall;               // the ball the shot rolling was struck on
   double shot_deadline_ = 0.0;       // the world's time at which the shot rolling is cut off
   std::optional<rules::Call> call_;  // of the shot rolling
 };

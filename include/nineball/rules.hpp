@@ -9,9 +9,9 @@
 namespace nineball::rules {
 
 /// Which game is played.
-enum class Game { NineBall, EightBall, TenBall };
+enum class Game { NineBall, EightBall, TenBall, ThreeCushion };
 
-/// "nine-ball", "eight-ball", "ten-ball".
+/// "nine-ball", "eight-ball", "ten-ball", "three-cushion".
 const char* gameName(Game g);
 std::optional<Game> gameFromName(const std::string& name);
 
@@ -19,6 +19,7 @@ std::optional<Game> gameFromName(const std::string& name);
 enum class RuleSet {
   Wpa,    ///< World Pool-Billiard Association rules (every game)
   Paper,  ///< the seed paper's finite state machine ("The UseFSM method"); nine-ball only
+  Umb,    ///< Union Mondiale de Billard's world rules of carom billiard (three-cushion)
 };
 
 const char* ruleSetName(RuleSet r);
@@ -82,6 +83,12 @@ struct ShotSummary {
   bool rail_after_contact = false;  ///< some ball (cue included) met a cushion after contact
   int object_balls_to_rail = 0;     ///< distinct object balls that met a cushion
   std::optional<Call> call;         ///< the shooter's call, when one was made
+  /// Every touch of an object ball by the cue ball, in order (a ball touched twice is there
+  /// twice), and the cushions the cue ball had met before each: carom's scoring reads them.
+  std::vector<int> cue_touches;
+  std::vector<int> cue_cushions_before;
+  int cue_cushions = 0;  ///< cushions the cue ball met in the whole shot
+  bool miscue = false;   ///< the tip slipped off the cue ball
 
   /// Where `ball` dropped; nothing when it did not drop or the pocket is unknown.
   std::optional<PocketId> pocketOf(int ball) const;
@@ -115,6 +122,10 @@ struct Verdict {
   /// racks are won on a ball, not on points: zero there).
   int points[2] = {0, 0};
   std::optional<Player> winner;
+  bool draw = false;  ///< the game ended level (three-cushion: both reached the distance)
+  /// Three-cushion: the cushions the cue ball met before its second object ball (or in the
+  /// whole shot when it did not reach one), the count a point needs three of.
+  int cushions = 0;
 };
 
 /// Everything a rack remembers between shots. The rule books read and update it.
@@ -130,6 +141,14 @@ struct RackState {
   int fouls[2] = {0, 0};  ///< consecutive fouls of A and B
   int score[2] = {0, 0};  ///< points of A and B, for games that keep a score
   Groups groups;
+  // Games played to a number of points (three-cushion):
+  int target = 0;            ///< the points that win; 0 for a game won on a ball
+  int innings[2] = {0, 0};   ///< innings of A and B so far, the one being played included
+  bool inning_open = false;  ///< the shooter's current inning is counted
+  int run = 0;               ///< points of the inning being played
+  int high_run[2] = {0, 0};  ///< the best inning of A and B
+  bool equalising = false;   ///< the opener reached the distance: the other's last inning
+  bool draw = false;
 
   bool has(int ball) const;
   void remove(const std::vector<int>& balls);
@@ -149,6 +168,9 @@ class RuleBook {
   /// The ball on, for the HUD and the planner's position play: by default the lowest of
   /// legalFirstBalls() (0 when none is left); a game whose next ball is not the lowest says so.
   virtual int ballOn(const RackState& s) const;
+  /// The ball the shooter strikes: pool's cue ball for both players; in carom each player's
+  /// own (white for the opener, yellow for the other).
+  virtual int cueBall(const RackState& s) const;
   /// Whether the coming shot must carry a call (push-outs never need one).
   virtual bool callRequired(const RackState& s) const = 0;
   /// Judges one shot; `push_out` only when s.push_out_available.
@@ -180,6 +202,17 @@ class Rack {
   int ballOn() const { return book_->ballOn(s_); }
   /// Points of `p` so far, for games that keep a score.
   int score(Player p) const { return s_.score[p == Player::A ? 0 : 1]; }
+  /// The ball the shooter strikes (RuleBook::cueBall).
+  int cueBall() const { return book_->cueBall(s_); }
+  /// Games played to a number of points: the distance, each player's innings (the current
+  /// one included), the points of the inning being played and each player's best inning.
+  int targetPoints() const { return s_.target; }
+  void setTargetPoints(int points) { s_.target = points; }
+  int innings(Player p) const { return s_.innings[p == Player::A ? 0 : 1]; }
+  int currentRun() const { return s_.run; }
+  int highRun(Player p) const { return s_.high_run[p == Player::A ? 0 : 1]; }
+  /// The game ended level (no winner).
+  bool drawn() const { return s_.draw; }
   const std::vector<int>& ballsOnTable() const { return s_.on_table; }
   bool isBreak() const { return s_.break_next; }
   bool ballInHand() const { return s_.ball_in_hand; }
@@ -190,7 +223,7 @@ class Rack {
   /// The next shot must carry a call (ten-ball after the break, eight-ball on the 8).
   bool callRequired() const { return !over() && book_->callRequired(s_); }
   Groups groups() const { return s_.groups; }
-  bool over() const { return s_.winner.has_value(); }
+  bool over() const { return s_.winner.has_value() || s_.draw; }
   std::optional<Player> winner() const { return s_.winner; }
   int consecutiveFouls(Player p) const { return s_.fouls[p == Player::A ? 0 : 1]; }
 
@@ -207,6 +240,9 @@ class Rack {
 
   /// Puts a spotted ball back on the table (the caller found the spot).
   void respot(int ball);
+  /// The balls were set up in the opening position again (carom's frozen balls): the next
+  /// shot is played as the opening one.
+  void replayOpening() { s_.break_next = true; }
 
  private:
   const RuleBook* book_;

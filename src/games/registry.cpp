@@ -2,6 +2,7 @@
 #include "games/eight_ball/eight_ball.hpp"
 #include "games/nine_ball/nine_ball.hpp"
 #include "games/ten_ball/ten_ball.hpp"
+#include "games/three_cushion/three_cushion.hpp"
 #include "nineball/games.hpp"
 
 namespace nineball {
@@ -11,6 +12,7 @@ const std::vector<GameDef>& allGames() {
       games::nineBall(),
       games::eightBall(),
       games::tenBall(),
+      games::threeCushion(),
   };
   return all;
 }
@@ -44,8 +46,10 @@ std::string gamesPlayedBy(rules::RuleSet rules) {
 }
 
 std::string rulesOnlyFor(rules::RuleSet rules) {
-  return std::string(rules == rules::RuleSet::Paper ? "the paper's" : "the WPA") + " rules are " +
-         gamesPlayedBy(rules) + "'s only";
+  const char* whose = rules == rules::RuleSet::Paper ? "the paper's"
+                      : rules == rules::RuleSet::Umb ? "the UMB"
+                                                     : "the WPA";
+  return std::string(whose) + " rules are " + gamesPlayedBy(rules) + "'s only";
 }
 
 bool GameDef::playedBy(rules::RuleSet r) const {

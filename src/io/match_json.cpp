@@ -21,6 +21,8 @@ using nlohmann::ordered_json;
 
 // The highest ball number of any game of the registry.
 constexpr int kHighestBall = 15;
+// The longest game played to points a script may ask for (UMB distances reach 50).
+constexpr int kMostPoints = 100;
 
 rules::Call parseCall(const json& v, const std::string& path) {
   expectObject(v, path);
@@ -97,11 +99,19 @@ void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
 
 MatchScript parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
-  allowOnly(doc, "",
-            {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"});
+  allowOnly(
+      doc, "",
+      {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
   MatchScript script;
   MatchSetup& setup = script.setup;
   setup.setGame(gameField(doc));
+  if (const json* p = optional(doc, "points")) {
+    if (gameDef(setup.game).default_points == 0) {
+      refuse("points", std::string(rules::gameName(setup.game)) +
+                           " is won on a ball, not played to a number of points");
+    }
+    setup.points = integer(*p, "points", 1, kMostPoints);
+  }
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = isComputer(script.players[0]) || isComputer(script.players[1]);
   setup.rules = rulesField(doc, setup.game);
@@ -126,12 +136,7 @@ MatchScript parseDocument(const json& doc) {
     checkGameBalls(setup.game, *setup.balls);
   } else {
     // The rack the match would set up must fit the table like any given balls.
-    check.balls = {BallState::at(
-        kCueBall, {buildTable(setup.table, setup.physics.ball_radius).headStringX(), 0.0})};
-    for (const BallState& b :
-         rackFor(setup.game, setup.table, setup.physics.ball_radius, setup.seed)) {
-      check.balls.push_back(b);
-    }
+    check.balls = setup.openingBalls();
     if (auto problem = validateScene(check)) {
       refuse("table", std::string("too small for the ") + rules::gameName(setup.game) +
                           " rack and the cue ball (" + *problem + ")");
@@ -153,6 +158,18 @@ ordered_json winnerJson(const std::optional<rules::Player>& w) {
 
 ordered_json groupJson(const std::optional<rules::Group>& g) {
   return g ? ordered_json(rules::groupName(*g)) : ordered_json(nullptr);
+}
+
+ordered_json playerScoreJson(const PlayerScore& p) {
+  return {{"points", p.points},
+          {"innings", p.innings},
+          {"run", p.run},
+          {"average", p.innings > 0 ? static_cast<double>(p.points) / p.innings : 0.0},
+          {"high_run", p.high_run}};
+}
+
+ordered_json scoreJson(const Score& s) {
+  return {{"A", playerScoreJson(s.a)}, {"B", playerScoreJson(s.b)}};
 }
 
 const char* decisionWord(const TurnRecord& t) {
@@ -203,6 +220,11 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
                                 ? ordered_json(nullptr)
                                 : ordered_json(rules::foulName(v.call_breach));
     }
+    if (gameDef(rack.game()).default_points > 0 && t.kind != TurnInput::Kind::Decision) {
+      turn["point"] = v.points[0] + v.points[1] > 0;
+      turn["cushions"] = v.cushions;
+      turn["score"] = scoreJson(t.score);
+    }
     if (gameDef(rack.game()).groups) {
       // A decision changes no group: it shows those of the shot before.
       if (t.kind != TurnInput::Kind::Decision) groups = v.groups;
@@ -212,6 +234,11 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
   }
   doc["turns"] = list;
   doc["winner"] = winnerJson(rack.winner());
+  if (gameDef(rack.game()).default_points > 0) {
+    doc["points"] = rack.targetPoints();
+    doc["draw"] = rack.drawn();
+    doc["score"] = scoreJson(scoreOf(rack));
+  }
   ordered_json ball_list = ordered_json::array();
   for (const BallState& b : balls) ball_list.push_back(ballToJson(b));
   doc["balls"] = ball_list;

@@ -12,8 +12,12 @@
 namespace nineball {
 
 void MatchSetup::setGame(rules::Game g) {
+  const GameDef& def = gameDef(g);
   game = g;
-  table = TableDef::named(gameDef(g).tables.front()).value();
+  rules = def.rule_sets.front();
+  table = TableDef::named(def.tables.front()).value();
+  physics = PhysicsParams::preset(def.physics).value();
+  points = def.default_points;
 }
 
 namespace {
@@ -31,7 +35,47 @@ std::vector<int> objectBalls(const std::vector<BallState>& balls) {
   return ids;
 }
 
+bool holdsCueBall(const std::vector<BallState>& balls) {
+  return std::any_of(balls.begin(), balls.end(),
+                     [](const BallState& b) { return b.id == kCueBall; });
+}
+
+// A carom ball rests touching the shooter's (UMB art. 27: the balls are set up again).
+bool frozenTo(const Engine& world, int cue) {
+  const double touching = 2.0 * world.physics().ball_radius + 1e-6;
+  const std::vector<BallState> balls = world.balls();
+  for (const BallState& b : balls) {
+    if (b.id != cue) continue;
+    for (const BallState& o : balls) {
+      if (o.id != cue && !o.pocket && length(o.pos - b.pos) <= touching) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+Score scoreOf(const rules::Rack& rack) {
+  Score s;
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    PlayerScore& one = p == rules::Player::A ? s.a : s.b;
+    one.points = rack.score(p);
+    one.innings = rack.innings(p);
+    one.high_run = rack.highRun(p);
+    one.run = !rack.over() && rack.shooter() == p ? rack.currentRun() : 0;
+  }
+  return s;
+}
+
+std::vector<BallState> MatchSetup::openingBalls() const {
+  std::vector<BallState> opening = rackFor(game, table, physics.ball_radius, seed);
+  if (!holdsCueBall(opening)) {
+    opening.insert(
+        opening.begin(),
+        BallState::at(kCueBall, {buildTable(table, physics.ball_radius).headStringX(), 0.0}));
+  }
+  return opening;
+}
 
 Match::Match(const MatchSetup& setup)
     : setup_(setup),
@@ -41,14 +85,7 @@ Match::Match(const MatchSetup& setup)
   if (setup.balls) {
     balls = *setup.balls;
   } else {
-    BallState cue;
-    cue.id = kCueBall;
-    cue.pos = {world_->table().headStringX(), 0.0};
-    balls.push_back(cue);
-    for (const BallState& b :
-         rackFor(setup.game, setup.table, setup.physics.ball_radius, setup.seed)) {
-      balls.push_back(b);
-    }
+    balls = setup.openingBalls();
   }
   cue_pocketed_ = true;
   for (const BallState& b : balls) {
@@ -64,11 +101,13 @@ Match::Match(const MatchSetup& setup)
     world_->addBall(cue);
   }
   rack_ = rules::Rack(setup.game, setup.rules, objectBalls(balls), !setup.balls);
+  rack_.setTargetPoints(setup.points);
 }
 
 Match::~Match() = default;
 
 bool Match::cueInHand() const {
+  if (!gameDef(rack_.game()).cue_in_hand) return false;
   return rack_.isBreak() || rack_.ballInHand() || cue_pocketed_;
 }
 
@@ -174,7 +213,8 @@ void Match::beginShot(const TurnInput& turn) {
   push_out_ = push_out;
   call_ = turn.call;
   world_->clearEvents();
-  world_->strike(kCueBall, turn.shot);
+  cue_ = rack_.cueBall();
+  world_->strike(cue_, turn.shot);
   shot_deadline_ = world_->time() + setup_.step.max_time;
   in_progress_ = true;
 }
@@ -189,7 +229,7 @@ TurnRecord Match::finishShot() {
   while (!stepShot()) {
   }
   in_progress_ = false;
-  rules::ShotSummary summary = play::summarize(world_->events());
+  rules::ShotSummary summary = play::summarize(world_->events(), cue_);
   summary.call = call_;
   TurnRecord rec;
   rec.call = call_;
@@ -204,8 +244,27 @@ TurnRecord Match::finishShot() {
       cue_pocketed_ = true;
     }
   }
+  if (!rack_.over() && !gameDef(rack_.game()).cue_in_hand && frozenTo(*world_, rack_.cueBall())) {
+    setUpFrozenBalls();
+  }
   rec.ball_on = rack_.ballOn();
+  rec.score = scoreOf(rack_);
   return rec;
+}
+
+void Match::setUpFrozenBalls() {
+  // UMB art. 27: the balls go back to the opening position, the shooter's ball on the
+  // starting spot and the other's on the bottom spot, and the shot is played as the opening
+  // one (straight onto the red).
+  const std::vector<BallState> opening =
+      rackFor(setup_.game, setup_.table, setup_.physics.ball_radius, setup_.seed);
+  const int shooter = rack_.cueBall();
+  for (const BallState& b : opening) {
+    // The opener's spot takes the shooter's ball, and the shooter's spot the opener's.
+    const int id = b.id == kCueBall ? shooter : b.id == shooter ? kCueBall : b.id;
+    world_->placeBall(id, b.pos);
+  }
+  rack_.replayOpening();
 }
 
 TurnRecord Match::play(const TurnInput& turn) {

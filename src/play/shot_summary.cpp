@@ -2,34 +2,41 @@
 
 #include <set>
 
-#include "nineball/ball.hpp"
-
 namespace nineball::play {
 
-rules::ShotSummary summarize(const std::vector<Event>& events) {
+rules::ShotSummary summarize(const std::vector<Event>& events, int cue) {
   rules::ShotSummary s;
   std::set<int> to_rail;
   for (const Event& e : events) {
     switch (e.type) {
       case EventType::BallBall:
-        if (!s.first_contact && (e.a == kCueBall || e.b == kCueBall)) {
-          s.first_contact = e.a == kCueBall ? e.b : e.a;
+        if (e.a == cue || e.b == cue) {
+          const int other = e.a == cue ? e.b : e.a;
+          if (!s.first_contact) s.first_contact = other;
+          s.cue_touches.push_back(other);
+          s.cue_cushions_before.push_back(s.cue_cushions);
         }
         break;
       case EventType::Cushion:
         if (s.first_contact) s.rail_after_contact = true;
-        if (e.a != kCueBall) to_rail.insert(e.a);
+        if (e.a == cue) {
+          ++s.cue_cushions;
+        } else {
+          to_rail.insert(e.a);
+        }
         break;
       case EventType::Pocket:
-        if (e.a == kCueBall) {
+        if (e.a == cue) {
           s.cue_pocketed = true;
         } else {
           s.pocketed.push_back(e.a);
           s.pockets.push_back(e.pocket);
         }
         break;
-      case EventType::AllAtRest:
       case EventType::Miscue:  // the cue ball never moved: no contact follows
+        s.miscue = true;
+        break;
+      case EventType::AllAtRest:
         break;
     }
   }

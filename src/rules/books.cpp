@@ -8,6 +8,7 @@
 #include "rules/eight_ball.hpp"
 #include "rules/nine_ball.hpp"
 #include "rules/ten_ball.hpp"
+#include "rules/three_cushion.hpp"
 
 namespace nineball::rules {
 namespace {
@@ -15,8 +16,7 @@ namespace {
 struct GameBooks {
   Game game;
   const char* name;
-  const RuleBook* wpa;
-  const RuleBook* paper;  // null: not played by the paper's rules
+  std::vector<const RuleBook*> books;  // the rule sets it is played by, the default first
 };
 
 const std::vector<GameBooks>& books() {
@@ -24,10 +24,12 @@ const std::vector<GameBooks>& books() {
   static const NineBallRules nine_paper(RuleSet::Paper);
   static const EightBallRules eight;
   static const TenBallRules ten;
+  static const ThreeCushionRules three_cushion;
   static const std::vector<GameBooks> all{
-      {Game::NineBall, "nine-ball", &nine_wpa, &nine_paper},
-      {Game::EightBall, "eight-ball", &eight, nullptr},
-      {Game::TenBall, "ten-ball", &ten, nullptr},
+      {Game::NineBall, "nine-ball", {&nine_wpa, &nine_paper}},
+      {Game::EightBall, "eight-ball", {&eight}},
+      {Game::TenBall, "ten-ball", {&ten}},
+      {Game::ThreeCushion, "three-cushion", {&three_cushion}},
   };
   return all;
 }
@@ -56,11 +58,11 @@ std::optional<Game> gameFromName(const std::string& name) {
 const RuleBook& ruleBook(Game game, RuleSet rules) {
   const GameBooks* b = booksOf(game);
   if (!b) throw std::invalid_argument("no rule book for this game");
-  const RuleBook* book = rules == RuleSet::Wpa ? b->wpa : b->paper;
-  if (!book) {
-    throw std::invalid_argument(std::string("the paper's rules are for nine-ball, not ") + b->name);
+  for (const RuleBook* book : b->books) {
+    if (book->ruleSet() == rules) return *book;
   }
-  return *book;
+  throw std::invalid_argument(std::string("the ") + ruleSetName(rules) + " rules are not " +
+                              b->name + "'s");
 }
 
 }  // namespace nineball::rules

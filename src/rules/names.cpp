@@ -3,12 +3,21 @@
 namespace nineball::rules {
 
 const char* ruleSetName(RuleSet r) {
-  return r == RuleSet::Wpa ? "wpa" : "paper";
+  switch (r) {
+    case RuleSet::Wpa:
+      return "wpa";
+    case RuleSet::Paper:
+      return "paper";
+    case RuleSet::Umb:
+      return "umb";
+  }
+  return "?";
 }
 
 std::optional<RuleSet> ruleSetFromName(const std::string& name) {
-  if (name == "wpa") return RuleSet::Wpa;
-  if (name == "paper") return RuleSet::Paper;
+  for (RuleSet r : {RuleSet::Wpa, RuleSet::Paper, RuleSet::Umb}) {
+    if (name == ruleSetName(r)) return r;
+  }
   return std::nullopt;
 }
 

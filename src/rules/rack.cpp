@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "nineball/ball.hpp"
 #include "nineball/rules.hpp"
 
 namespace nineball::rules {
@@ -21,6 +22,10 @@ Rack::Rack(const RuleBook& book, std::vector<int> object_balls, bool opening_bre
 int RuleBook::ballOn(const RackState& s) const {
   const std::vector<int> balls = legalFirstBalls(s);
   return balls.empty() ? 0 : *std::min_element(balls.begin(), balls.end());
+}
+
+int RuleBook::cueBall(const RackState&) const {
+  return kCueBall;
 }
 
 void Rack::respot(int ball) {
@@ -48,6 +53,7 @@ Verdict Rack::shoot(const ShotSummary& shot, bool push_out) {
   s_.push_out_available = v.push_out_available;
   s_.decision = v.decision;
   s_.winner = v.winner;
+  s_.draw = v.draw;
   s_.break_next = false;
   s_.score[0] += v.points[0];
   s_.score[1] += v.points[1];
