@@ -24,11 +24,17 @@ struct DecisionWords {
   const char* about = "the choice after a push-out";
 };
 
+/// The kind of cue sport a game is: pool's games pocket object balls with one cue ball; carom's
+/// score with each player's own ball on a table without pockets. The computer plans each kind
+/// its own way.
+enum class GameFamily { Pool, Carom };
+
 /// One game as data: everything outside its rule book that differs from game to game. The
 /// match, the planner, the JSON readers and writers, the HUD and the menus read it, so that a
 /// new game is a rule book (src/rules), a definition (src/games/<game>/) and a registry line.
 struct GameDef {
   rules::Game id = rules::Game::NineBall;
+  GameFamily family = GameFamily::Pool;
   /// As scripts, the menu and --game name it.
   const char* name = "";
   /// The object balls of a full rack (sorted): the numbers a layout may hold.

@@ -36,6 +36,19 @@ std::string levelNamesText();
 /// lengths on the cloth).
 inline constexpr double kPaceReference = 2.0;
 
+/// What a level searches in carom (three-cushion): the shooter's ball's path.
+struct CaromSearch {
+  double heading_step_deg = 2.0;       ///< headings round the table this far apart
+  double fine_step_deg = 0.0;          ///< ... and this far apart across each object ball (0: not)
+  std::vector<double> speeds{3.0};     ///< m/s tried on every heading
+  std::vector<Vec2> tips{{0.0, 0.0}};  ///< [side, height] tried on every heading
+  std::vector<double> elevations_deg{0.0};  ///< cue elevations tried on every heading
+  int robust_top = 0;            ///< widest scoring windows checked against cueing errors
+  int position_top = 0;          ///< best of those whose next point is looked for
+  int position_headings = 0;     ///< ... with a sweep of this many headings
+  double position_weight = 0.0;  ///< worth of the next point's chance against this one's
+};
+
 /// What one level searches and how precisely it executes the chosen shot.
 struct LevelSettings {
   std::vector<double> pot_speeds;        ///< m/s tried on every pot line (slower ones are dropped)
@@ -76,6 +89,7 @@ struct LevelSettings {
   double elevation_noise_deg = 0.0;  ///< standard deviation of the executed cue elevation
   double tip_noise_m = 0.0;          ///< ... of each tip offset, m on the ball
   bool noise_on_break = false;       ///< the break cued with the whole noise (else a third)
+  CaromSearch carom;                 ///< the search in carom games
 
   /// The settings of a level (the table in README.md, "Computer opponent").
   static LevelSettings of(Level level);
@@ -119,9 +133,10 @@ struct PlanInput {
 PlanInput planInputFrom(const Match& match);
 
 /// What a planned shot means to do. A PushOut's turn has kind TurnInput::Kind::PushOut.
-enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety, PushOut };
+enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety, PushOut, Point };
 
-/// "break", "pot", "combination", "bank", "kick", "safety", "push-out".
+/// "break", "pot", "combination", "bank", "kick", "safety", "push-out", "point" (a carom
+/// point attempted).
 const char* shotKindName(ShotKind kind);
 
 /// The planner's answer for one position.
@@ -133,7 +148,9 @@ struct Plan {
   ShotKind kind = ShotKind::Safety;
   int target = 0;                  ///< the ball meant to drop (pot, combination, bank)
   std::optional<PocketId> pocket;  ///< where it is meant to drop
-  int first = 0;                   ///< the ball the cue ball is meant to hit first (0: none)
+  /// The ball the cue ball is meant to hit first (0: none; in carom, where the white is ball 0,
+  /// -1: a cushion first).
+  int first = 0;
   /// The stroke's difficulty for the stroke model: the cut on the first ball (0 straight, up
   /// to 90 degrees) and the cue ball's distance to it, m (both 0 when it is not aimed at
   /// directly: a break, a kick, a sweep that misses).
@@ -197,6 +214,8 @@ class Planner {
   double lastThinkSeconds() const { return last_think_seconds_; }
 
  private:
+  Plan planCaromShot(const PlanInput& in);
+
   Level level_;
   LevelSettings settings_;
   std::uint64_t rng_state_;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "ai/carom/carom_planner.hpp"
 #include "ai/planner_candidates.hpp"
 #include "ai/planner_evaluate.hpp"
 #include "ai/planner_geometry.hpp"
@@ -228,6 +229,7 @@ void ExecutionNoise::applyTo(LevelSettings& s) const {
 }
 
 Plan Planner::plan(const PlanInput& in) {
+  if (gameDef(in.rack.game()).family == GameFamily::Carom) return planCaromShot(in);
   const auto started = std::chrono::steady_clock::now();
   ball_radius_ = in.physics.ball_radius;
   const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
@@ -325,6 +327,18 @@ bool Planner::shootAfterPushOut(const PlanInput& in) {
   const bool shoot = plan(after).value >= kEven;
   logger("ai")->info("{}: after the push-out: {}", levelName(level_), shoot ? "shoot" : "pass");
   return shoot;
+}
+
+Plan Planner::planCaromShot(const PlanInput& in) {
+  const auto started = std::chrono::steady_clock::now();
+  ball_radius_ = in.physics.ball_radius;
+  long sims = 0;
+  Plan plan = planCarom(in, settings_, threads_, sims);
+  simulations_ += sims;
+  last_think_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  think_seconds_ += last_think_seconds_;
+  return plan;
 }
 
 TurnInput Planner::execute(const Plan& plan) {

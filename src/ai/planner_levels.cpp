@@ -81,6 +81,8 @@ const char* shotKindName(ShotKind kind) {
       return "safety";
     case ShotKind::PushOut:
       return "push-out";
+    case ShotKind::Point:
+      return "point";
   }
   return "?";
 }
@@ -172,6 +174,38 @@ void searchLikeALeaguePlayer(LevelSettings& s) {
   s.push_out_headings = 30;
 }
 
+// Carom: how finely each level looks round the table, with which strokes, and whether it
+// checks its choice against its cueing and plays for the next point.
+void caromLikeABeginner(CaromSearch& c) {
+  c.heading_step_deg = 3.0;
+  c.speeds = {3.0};
+  c.tips = {{0.0, 0.0}};
+}
+
+void caromLikeAClubPlayer(CaromSearch& c) {
+  c.heading_step_deg = 1.0;
+  c.fine_step_deg = 0.5;
+  c.speeds = {2.5, 3.5};
+  c.tips = {{0.0, 0.0}, {0.3, 0.2}, {-0.3, 0.2}};
+  c.robust_top = 6;
+}
+
+void caromLikeAnExpert(CaromSearch& c) {
+  c.heading_step_deg = 0.75;
+  c.fine_step_deg = 0.25;
+  c.speeds = {2.5, 3.5, 4.5};
+  c.tips = {{0.0, 0.0}, {0.35, 0.2}, {-0.35, 0.2}, {0.35, -0.2}, {-0.35, -0.2}};
+  c.robust_top = 10;
+}
+
+void caromLikeAMaster(CaromSearch& c) {
+  caromLikeAnExpert(c);
+  c.robust_top = 12;
+  c.position_top = 4;
+  c.position_headings = 60;
+  c.position_weight = 0.5;
+}
+
 // The finest errors a level's candidates are checked against (degrees; relative speed).
 constexpr double kFinestCheckedAimDeg = 0.15;
 constexpr double kFinestCheckedSpeed = 0.03;
@@ -202,30 +236,39 @@ LevelSettings LevelSettings::of(Level level) {
   switch (level) {
     case Level::Beginner:
       searchLikeABeginner(s);
+      caromLikeABeginner(s.carom);
       cue(s, {2.2, 1.0, 0.5, 0.5, 0.12, 0.004});
       break;
     case Level::Casual:
       searchLikeACasualPlayer(s);
+      s.carom.heading_step_deg = 2.0;
+      s.carom.speeds = {2.5, 3.5};
       cue(s, {1.2, 0.8, 0.4, 0.4, 0.08, 0.003});
       break;
     case Level::Club:
       searchLikeAClubPlayer(s);
+      caromLikeAClubPlayer(s.carom);
       cue(s, {0.32, 0.6, 0.35, 0.35, 0.05, 0.002});
       break;
     case Level::League:
       searchLikeALeaguePlayer(s);
+      caromLikeAClubPlayer(s.carom);
+      s.carom.speeds = {2.5, 3.5, 4.5};
       cue(s, {0.16, 0.45, 0.3, 0.3, 0.035, 0.0012});
       break;
     case Level::Advanced:
       searchLikeAnExpert(s);
+      caromLikeAnExpert(s.carom);
       cue(s, {0.15, 0.4, 0.25, 0.25, 0.03, 0.001});
       break;
     case Level::Pro:
       searchLikeAnExpert(s);
+      caromLikeAMaster(s.carom);
       cue(s, {0.13, 0.3, 0.2, 0.2, 0.025, 0.0006});
       break;
     case Level::Master:
       searchLikeAnExpert(s);
+      caromLikeAMaster(s.carom);
       cue(s, {0.05, 0.15, 0.1, 0.1, 0.015, 0.0002});
       break;
   }

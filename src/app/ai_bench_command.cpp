@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/ai_bench_carom.hpp"
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
 #include "common/log.hpp"
@@ -23,6 +24,8 @@
 namespace nineball::app {
 namespace {
 
+// Pool racks measured when --racks is not given.
+constexpr int kDefaultRacks = 100;
 // A rack that lasts longer than this many turns of one player is not a run-out anyway.
 constexpr int kMaxTurnsPerRack = 60;
 
@@ -210,9 +213,10 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   cmd->add_option("--positions", options.positions, "Seeded positions to pot the ball on from")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
-  cmd->add_option("--racks", options.racks, "Racks to break and try to run out")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
+  cmd->add_option("--racks", options.racks,
+                  "Racks to break and try to run out (default 100); three-cushion: games to 25 "
+                  "points between two players of the level (default none)")
+      ->check(CLI::Range(0, 100000));
   cmd->add_option("--seed", options.seed, "First seed of positions and racks")
       ->capture_default_str();
   cmd->add_option("--threads", options.threads, "Workers simulating candidates")
@@ -231,7 +235,8 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   return cmd;
 }
 
-int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err) {
+int runAiBench(const AiBenchOptions& given, std::ostream& out, std::ostream& err) {
+  AiBenchOptions options = given;
   const auto level = ai::levelFromName(options.level);
   if (!level) {
     err << "nineball ai-bench: --level: unknown level \"" << options.level << "\"\n";
@@ -258,14 +263,25 @@ int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& e
     v.racks = options.racks;
     versus = v;
   }
-  const auto started = std::chrono::steady_clock::now();
-  const double cpu_started = cpuSeconds();
-  Tally positions, racks;
   const auto game = rules::gameFromName(options.game);
   if (!game) {
     err << "nineball ai-bench: --game: unknown game \"" << options.game << "\"\n";
     return kExitBadInput;
   }
+  const bool carom = gameDef(*game).family == GameFamily::Carom;
+  if (options.racks < 0) options.racks = carom ? 0 : kDefaultRacks;
+  if (versus) versus->racks = options.racks;
+  if (carom) {
+    if (versus) {
+      err << "nineball ai-bench: --versus: not for " << options.game
+          << " (its games report points per inning)\n";
+      return kExitBadInput;
+    }
+    return runCaromBench(options, out, err);
+  }
+  const auto started = std::chrono::steady_clock::now();
+  const double cpu_started = cpuSeconds();
+  Tally positions, racks;
   playPositions(options, *game, *level, positions);
   if (versus) {
     playVersus(options, *game, *versus, racks, err);

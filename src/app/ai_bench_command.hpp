@@ -14,9 +14,11 @@ struct AiBenchOptions {
   std::string level = "master";           ///< the level measured (or an older name)
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
   int positions = 100;                    ///< seeded practice positions to pot the ball on from
-  int racks = 100;                        ///< racks broken to try to run out
-  std::uint64_t seed = 1;                 ///< first seed of the positions and the racks
-  int threads = 2;                        ///< workers simulating candidates
+  /// Racks broken to try to run out (carom: games played to the distance); -1 for the game's
+  /// default, 100 racks of pool or no carom games.
+  int racks = -1;
+  std::uint64_t seed = 1;  ///< first seed of the positions and the racks
+  int threads = 2;         ///< workers simulating candidates
   /// "level" (the level's own cueing errors) or "olympiad" (the computer-pool tournaments'
   /// noise, ai::ExecutionNoise::olympiad, in place of the level's).
   std::string noise = "level";

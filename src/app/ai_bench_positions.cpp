@@ -29,11 +29,13 @@ std::vector<BallState> randomPosition(std::uint64_t seed, const TableDef& table,
       numbers.push_back(b);
     }
   }
-  for (std::size_t i = numbers.size() - 1; i > 0; --i) {
-    std::swap(numbers[i], numbers[splitmix64(state) % (i + 1)]);
+  for (std::size_t i = numbers.size(); i > 1; --i) {
+    std::swap(numbers[i - 1], numbers[splitmix64(state) % i]);
   }
-  const int count = kMinObjectBalls +
+  // A set with no balls to leave out (carom's three) is laid out whole.
+  const int drawn = kMinObjectBalls +
                     static_cast<int>(splitmix64(state) % (kMaxObjectBalls - kMinObjectBalls + 1));
+  const int count = std::min(drawn, static_cast<int>(numbers.size()));
   std::vector<int> ids = {kCueBall};
   for (int b : def.required_balls) ids.push_back(b);
   ids.insert(ids.end(), numbers.begin(), numbers.begin() + count);

@@ -84,6 +84,14 @@ std::string planText(const ai::Plan& plan, int ball_on) {
       return "kick at " + on + " off the cushion";
     case ai::ShotKind::PushOut:
       return "push out";
+    case ai::ShotKind::Point: {
+      static const char* const kCaromBalls[] = {"white", "yellow", "red"};
+      const std::string first = plan.first >= 0 && plan.first <= 2
+                                    ? std::string("the ") + kCaromBalls[plan.first] + " first"
+                                    : "a cushion first";
+      return (plan.value > 0.0 ? "three cushions, " : "no point in sight, the closest try: ") +
+             first;
+    }
     case ai::ShotKind::Safety:
       break;
   }

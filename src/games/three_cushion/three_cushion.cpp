@@ -29,6 +29,7 @@ namespace games {
 GameDef threeCushion() {
   GameDef g;
   g.id = rules::Game::ThreeCushion;
+  g.family = GameFamily::Carom;
   g.name = "three-cushion";
   g.balls = {rules::ThreeCushionRules::kYellow, rules::ThreeCushionRules::kRed};
   g.required_balls = g.balls;
