@@ -50,22 +50,24 @@ struct BallLook {
   Rgb colour;
   bool stripe = false;    ///< a band of `colour` on a white ball
   bool numbered = false;  ///< a white disc with the ball's number
+  bool spots = false;     ///< red spots that show it turning (pool's cue ball, carom's two)
 };
 /// The looks of one set of balls, by ball id (a game's GameDef::looks).
 using BallLooks = BallLook (*)(int id);
 
 /// Pool balls: the cue ball white and plain, 1-8 solids and 9-15 stripes, each numbered.
 inline BallLook poolBallLook(int id) {
-  return {ballColour(id), isStripe(id), id != 0};
+  return {ballColour(id), isStripe(id), id != 0, id == 0};
 }
 
-/// Carom balls: 0 white, 1 yellow, 2 red, plain (no numbers, no stripes).
+/// Carom balls: 0 white, 1 yellow, 2 red, no numbers or stripes; the two cue balls carry red
+/// spots that show their spin (as tournament sets' spotted balls do).
 inline BallLook caromBallLook(int id) {
   constexpr Rgb kYellow{246, 200, 40};
   constexpr Rgb kRed{206, 26, 32};
-  if (id == 1) return {kYellow, false, false};
-  if (id == 2) return {kRed, false, false};
-  return {kCueBallColour, false, false};
+  if (id == 1) return {kYellow, false, false, true};
+  if (id == 2) return {kRed, false, false, false};
+  return {kCueBallColour, false, false, true};
 }
 
 /// The stripe's half height as a fraction of the radius.

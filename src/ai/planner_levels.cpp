@@ -179,22 +179,32 @@ void searchLikeALeaguePlayer(LevelSettings& s) {
 void caromLikeABeginner(CaromSearch& c) {
   c.heading_step_deg = 3.0;
   c.speeds = {3.0};
-  c.tips = {{0.0, 0.0}};
+  c.tips = {{0.0, 0.0}, {0.3, 0.2}, {-0.3, 0.2}};
+}
+
+void caromLikeACasualPlayer(CaromSearch& c) {
+  caromLikeABeginner(c);
+  c.heading_step_deg = 2.0;
+  c.speeds = {2.5, 3.5};
 }
 
 void caromLikeAClubPlayer(CaromSearch& c) {
   c.heading_step_deg = 1.0;
   c.fine_step_deg = 0.5;
   c.speeds = {2.5, 3.5};
-  c.tips = {{0.0, 0.0}, {0.3, 0.2}, {-0.3, 0.2}};
+  c.tips = {{0.0, 0.0}, {0.35, 0.2}, {-0.35, 0.2}, {0.35, -0.2}, {-0.35, -0.2}};
   c.robust_top = 6;
 }
 
-void caromLikeAnExpert(CaromSearch& c) {
-  c.heading_step_deg = 0.75;
-  c.fine_step_deg = 0.25;
+void caromLikeALeaguePlayer(CaromSearch& c) {
+  caromLikeAClubPlayer(c);
   c.speeds = {2.5, 3.5, 4.5};
-  c.tips = {{0.0, 0.0}, {0.35, 0.2}, {-0.35, 0.2}, {0.35, -0.2}, {-0.35, -0.2}};
+  c.robust_top = 8;
+}
+
+void caromLikeAnExpert(CaromSearch& c) {
+  caromLikeALeaguePlayer(c);
+  c.fine_step_deg = 0.25;
   c.robust_top = 10;
 }
 
@@ -241,8 +251,7 @@ LevelSettings LevelSettings::of(Level level) {
       break;
     case Level::Casual:
       searchLikeACasualPlayer(s);
-      s.carom.heading_step_deg = 2.0;
-      s.carom.speeds = {2.5, 3.5};
+      caromLikeACasualPlayer(s.carom);
       cue(s, {1.2, 0.8, 0.4, 0.4, 0.08, 0.003});
       break;
     case Level::Club:
@@ -252,8 +261,7 @@ LevelSettings LevelSettings::of(Level level) {
       break;
     case Level::League:
       searchLikeALeaguePlayer(s);
-      caromLikeAClubPlayer(s.carom);
-      s.carom.speeds = {2.5, 3.5, 4.5};
+      caromLikeALeaguePlayer(s.carom);
       cue(s, {0.16, 0.45, 0.3, 0.3, 0.035, 0.0012});
       break;
     case Level::Advanced:

@@ -59,9 +59,10 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                      ->each([&o](const std::string&) { o.game_given = true; })
                      ->capture_default_str());
   opts.push_back(app.add_option("--rules", o.rules,
-                                "Game window: the rules (paper: the seed paper's, for " +
+                                "Game window: the rules (default: the game's own; paper: the seed "
+                                "paper's, for " +
                                     gamesPlayedBy(rules::RuleSet::Paper) + ")")
-                     ->check(CLI::IsMember({"wpa", "paper"}))
+                     ->check(CLI::IsMember({"wpa", "paper", "umb"}))
                      ->each([&o](const std::string&) { o.rules_given = true; })
                      ->capture_default_str());
   opts.push_back(

@@ -103,9 +103,10 @@ FirstHit firstHit(const TableGeometry& table, double r, const std::vector<BallSt
 }  // namespace
 
 AimGuide computeAimGuide(const TableGeometry& table, double ball_radius,
-                         const std::vector<BallState>& balls, Vec2 cue, double heading_rad) {
+                         const std::vector<BallState>& balls, Vec2 cue, double heading_rad,
+                         int cue_id) {
   const Vec2 d = fromAngle(heading_rad);
-  const FirstHit first = firstHit(table, ball_radius, balls, cue, d, kCueBall, kCueBall);
+  const FirstHit first = firstHit(table, ball_radius, balls, cue, d, cue_id, cue_id);
   AimGuide guide;
   guide.start = cue;
   guide.end = cue + d * first.t;
@@ -127,13 +128,13 @@ AimGuide computeAimGuide(const TableGeometry& table, double ball_radius,
   guide.object_end =
       object_pos +
       guide.object_dir *
-          firstHit(table, ball_radius, balls, object_pos, guide.object_dir, kCueBall, first.ball).t;
+          firstHit(table, ball_radius, balls, object_pos, guide.object_dir, cue_id, first.ball).t;
   guide.cue_end = guide.end;
   if (guide.cue_dir != Vec2{}) {
     guide.cue_end =
         guide.end +
         guide.cue_dir *
-            firstHit(table, ball_radius, balls, guide.end, guide.cue_dir, kCueBall, first.ball).t;
+            firstHit(table, ball_radius, balls, guide.end, guide.cue_dir, cue_id, first.ball).t;
   }
   return guide;
 }

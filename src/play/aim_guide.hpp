@@ -40,6 +40,7 @@ struct AimGuide {
 /// table (a circle of radius 2R round its centre), the cushion loop offset by R (rails, jaws
 /// and pocket cups) and the pockets' drop circles, and returns the first thing met.
 AimGuide computeAimGuide(const TableGeometry& table, double ball_radius,
-                         const std::vector<BallState>& balls, Vec2 cue, double heading_rad);
+                         const std::vector<BallState>& balls, Vec2 cue, double heading_rad,
+                         int cue_id = kCueBall);
 
 }  // namespace nineball

@@ -160,7 +160,7 @@ void SphereBallRenderer::drawWithShader(sf::RenderTarget& target, const Ball& ba
   shader_.setUniform("base", sf::Glsl::Vec4(col.r / 255.0f, col.g / 255.0f, col.b / 255.0f, 1.0f));
   shader_.setUniform("stripe", ball.look.stripe ? 1.0f : 0.0f);
   shader_.setUniform("numbered", ball.look.numbered ? 1.0f : 0.0f);
-  shader_.setUniform("cue_spot", !ball.look.numbered && ball.number == kCueBall ? 1.0f : 0.0f);
+  shader_.setUniform("cue_spot", ball.look.spots ? 1.0f : 0.0f);
   const auto size = glyph_texture_.getSize();
   const int n = std::clamp(ball.number, 0, kGlyphs - 1);
   shader_.setUniform("cell", sf::Glsl::Vec4(static_cast<float>((n % kColumns) * kCell) / size.x,

@@ -109,7 +109,7 @@ Shade surfaceColour(const BallLook& look, int number, Vec3 body, InkSampler ink,
     const Shade k = shadeOf(kInk);
     c = {c.r + (k.r - c.r) * coverage, c.g + (k.g - c.g) * coverage, c.b + (k.b - c.b) * coverage,
          1.0};
-  } else if (!look.numbered && number == kCueBall && off < kSpotRadius) {
+  } else if (look.spots && off < kSpotRadius) {
     c = shadeOf(kCueSpot);
   }
   return c;

@@ -151,9 +151,19 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
        info);
   text(target, hud.mode, {info.left, row1 + layout.text_px * 0.05}, layout.text_px * 0.75, kDim,
        info);
-  // Row two: the tray.
-  drawTray(target, hud,
-           {centre.left, band.top + band.height / 2.0, centre.width, band.height / 2.0}, r * 0.8);
+  // Row two: the tray, or carom's count of cushions.
+  const PixelRect row2{centre.left, band.top + band.height / 2.0, centre.width, band.height / 2.0};
+  if (!hud.carom_count.empty()) {
+    const bool point = hud.carom_count.find("POINT") != std::string::npos;
+    const bool none = hud.carom_count.find("no point") != std::string::npos;
+    text(target, hud.carom_count, {mid, row2.top + row2.height * 0.05}, layout.text_px * 1.05,
+         point  ? kWin
+         : none ? kFoul
+                : kText,
+         row2, Align::Centre, true);
+    return;
+  }
+  drawTray(target, hud, row2, r * 0.8);
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #include "window/frame_builder.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "app/opponent.hpp"
 #include "nineball/games.hpp"
@@ -164,6 +165,32 @@ Overlay activeOverlay(const GameSession& session, const UiState& ui) {
   return Overlay::None;
 }
 
+namespace {
+
+// Carom's HUD: each player's points, innings, average and high run (a scoreboard's line), no
+// ball tray, and during a shot the cushions the shooter's ball has met before the second ball.
+void fillCaromHud(render::HudState& hud, const GameSession& session) {
+  const rules::Rack& rack = session.match().rack();
+  const Score score = scoreOf(rack);
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    const PlayerScore& ps = p == rules::Player::A ? score.a : score.b;
+    char average[16];
+    std::snprintf(average, sizeof average, "%.3f",
+                  ps.innings > 0 ? static_cast<double>(ps.points) / ps.innings : 0.0);
+    hud.players[session.seatOf(p)].detail = std::to_string(ps.points) + " pts   inn " +
+                                            std::to_string(ps.innings) + "   avg " + average +
+                                            "   high " + std::to_string(ps.high_run);
+  }
+  hud.on_table.clear();
+  hud.pocketed.clear();
+  hud.ball_on = 0;
+  hud.rules = std::string(gameDef(rack.game()).name) + " to " +
+              std::to_string(rack.targetPoints()) + ", UMB rules";
+  if (const auto count = session.caromCount()) hud.carom_count = *count;
+}
+
+}  // namespace
+
 render::Frame buildFrame(const GameSession& session, const UiState& ui,
                          const ComputerPlayer& computer) {
   render::Frame f;
@@ -191,6 +218,8 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
                     session.tip().x);
   }
   if (const auto s = session.strike(); s && s->since < kStroke) f.cue = stroke(*s, session);
+  // Carom: the stick addresses the shooter's own ball, which need not be ball 0.
+  if (f.cue && !f.cue->at && !session.practice()) f.cue->at = session.cuePosition();
   if ((ui.drag == Drag::Cue || ui.drag == Drag::Ball) && ui.ghost) {
     f.ghost = ui.ghost;
     for (BallState& b : f.balls) {
@@ -241,6 +270,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
       panel.detail = "racks " + std::to_string(panel.racks) + "   " + groupLabel(rack.groups(), p);
     }
   }
+  if (game.family == GameFamily::Carom) fillCaromHud(hud, session);
   hud.mode = opponentModeLabel(computer.opponent());
   if (session.practice()) {
     const std::size_t steps = session.practiceSteps();

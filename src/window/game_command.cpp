@@ -17,18 +17,14 @@ namespace nineball::window {
 int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostream& err) {
   GameStart start;
   start.setup.setGame(*rules::gameFromName(options.game));
-  start.setup.rules = *rules::ruleSetFromName(options.rules);
   const GameDef& game = gameDef(start.setup.game);
-  if (&game != &defaultGame()) {
-    if (!game.playedBy(start.setup.rules)) {
-      err << "nineball: --rules " << options.rules << " is " << gamesPlayedBy(start.setup.rules)
-          << "'s only; " << options.game << " is played by the WPA rules\n";
-      return app::kExitBadInput;
-    }
-    if (options.practice) {
-      err << "nineball: --practice has no rules, so no game: leave out --game\n";
-      return app::kExitBadInput;
-    }
+  // Without --rules a game is played by its own (the first it is played by).
+  if (options.rules_given) start.setup.rules = *rules::ruleSetFromName(options.rules);
+  if (!game.playedBy(start.setup.rules)) {
+    err << "nineball: --rules " << options.rules << " is " << gamesPlayedBy(start.setup.rules)
+        << "'s only; " << options.game << " is played by the "
+        << rules::ruleSetName(game.rule_sets.front()) << " rules\n";
+    return app::kExitBadInput;
   }
   start.setup.seed = options.seed;
   if (!options.script.empty()) {

@@ -10,6 +10,7 @@
 #include "common/log.hpp"
 #include "nineball/games.hpp"
 #include "play/shot_summary.hpp"
+#include "rules/three_cushion.hpp"
 #include "window/shot_call.hpp"
 #include "window/turn_message.hpp"
 
@@ -202,10 +203,35 @@ bool GameSession::cueInHand() const {
   return !practice_ && phase_ == Phase::Aiming && match_->cueInHand();
 }
 
+std::optional<std::string> GameSession::caromCount() const {
+  if (practice_ || replay_ || gameDef(match_->rack().game()).family != GameFamily::Carom) {
+    return std::nullopt;
+  }
+  if (phase_ != Phase::Rolling && !last_count_.empty()) return last_count_;
+  if (phase_ != Phase::Rolling) return std::nullopt;
+  // The events the picture has reached: the world may be a step ahead of what is drawn.
+  const double now = drawTime();
+  std::vector<Event> seen;
+  for (const Event& e : match_->world().events()) {
+    if (e.t <= now) seen.push_back(e);
+  }
+  const rules::ShotSummary summary = play::summarize(seen, shot_ball_);
+  bool both = false;
+  const int cushions = rules::ThreeCushionRules::cushionsBeforeSecond(summary, shot_ball_, both);
+  std::string text = "Cushions: " + std::to_string(cushions);
+  if (both) text += cushions >= 3 ? "   POINT" : "   no point";
+  return text;
+}
+
+int GameSession::shooterBall() const {
+  return practice_ ? kCueBall : match_->rack().cueBall();
+}
+
 Vec2 GameSession::cuePosition() const {
   if (cueInHand() && cue_spot_) return *cue_spot_;
+  const int cue = shooterBall();
   for (const BallState& b : shot_.current) {
-    if (b.id == kCueBall) return b.pos;
+    if (b.id == cue) return b.pos;
   }
   return {};
 }
@@ -236,11 +262,12 @@ bool GameSession::placeCue(Vec2 pos) {
 
 AimGuide GameSession::aimGuide() const {
   const Engine& w = match_->world();
-  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(),
-                         heading_);
+  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(), heading_,
+                         shooterBall());
 }
 
 void GameSession::startRack() {
+  last_count_.clear();
   MatchSetup s = setup_;
   if (rack_ > 0) {
     s.balls.reset();  // a rematch racks, whatever the first layout was
@@ -251,7 +278,10 @@ void GameSession::startRack() {
   rack_turns_.clear();
   replay_.reset();
   pocketed_.clear();
-  speed_ = match_->rack().isBreak() ? kBreakSpeed : speed_;
+  // Carom's opening is an ordinary stroke, not a break.
+  const bool pool_break =
+      match_->rack().isBreak() && gameDef(match_->rack().game()).family == GameFamily::Pool;
+  speed_ = pool_break ? kBreakSpeed : speed_;
   message_.clear();
   tone_ = render::Tone::Info;
   startTurn();
@@ -366,10 +396,11 @@ bool GameSession::shoot(const TurnInput& given) {
       turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
   clock_.reset();
+  shot_ball_ = shooterBall();
   shot_.begin(*match_);
   strike_from_ = cuePosition();
   for (const BallState& b : shot_.current) {
-    if (b.id == kCueBall) strike_from_ = b.pos;
+    if (b.id == shot_ball_) strike_from_ = b.pos;
   }
   message_.clear();
   strike_ = audio::cueStrike(turn.shot.speed);
@@ -510,17 +541,26 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
     if (std::find(spot.begin(), spot.end(), b) == spot.end()) pocketed_.push_back(b);
   }
   const auto& events = match_->world().events();
-  const rules::ShotSummary summary = play::summarize(events);
-  TurnMessage m = describeTurn(record, summary, ball_on_before, seatName(seatOf(record.shooter)),
-                               seatName(seatOf(rules::other(record.shooter))), groups_at_shot_);
+  const rules::ShotSummary summary = play::summarize(events, shot_ball_);
+  if (record.kind != TurnInput::Kind::Decision) {
+    const bool point = record.verdict.points[0] + record.verdict.points[1] > 0;
+    last_count_ = "Cushions: " + std::to_string(record.verdict.cushions) +
+                  (point ? "   POINT" : "   no point");
+  }
+  const std::string shooter = seatName(seatOf(record.shooter));
+  const std::string opponent = seatName(seatOf(rules::other(record.shooter)));
+  TurnMessage m =
+      gameDef(match_->rack().game()).family == GameFamily::Carom
+          ? describeCaromTurn(record, match_->rack(), shooter, opponent)
+          : describeTurn(record, summary, ball_on_before, shooter, opponent, groups_at_shot_);
   const bool miscue = record.kind != TurnInput::Kind::Decision &&
                       std::any_of(events.begin(), events.end(),
                                   [](const Event& e) { return e.type == EventType::Miscue; });
   if (miscue) m.text = "Miscue! " + m.text;
   say(m.text, m.tone);
   logger("game")->info("turn: {}", m.text);
-  if (const auto winner = match_->rack().winner()) {
-    ++racks_won_[seatOf(*winner)];
+  if (match_->rack().over()) {
+    if (const auto winner = match_->rack().winner()) ++racks_won_[seatOf(*winner)];
     shot_.current = shot_.previous = match_->balls();
     shot_.current_time = shot_.previous_time = match_->world().time();
     phase_ = Phase::GameOver;
@@ -619,13 +659,22 @@ std::string GameSession::status() const {
       return name + ": play from here (S) or pass it back (P)?";
     case Phase::GameOver: {
       const auto winner = match_->rack().winner();
-      return (winner ? seatName(seatOf(*winner)) : name) + " wins rack " +
+      if (!winner) return "A draw in game " + std::to_string(rackNumber()) + ". R: rematch";
+      const bool carom = gameDef(match_->rack().game()).family == GameFamily::Carom;
+      return seatName(seatOf(*winner)) + (carom ? " wins game " : " wins rack ") +
              std::to_string(rackNumber()) + ". R: rematch";
     }
     case Phase::Aiming:
       break;
   }
   std::string s = name + " to ";
+  if (gameDef(match_->rack().game()).family == GameFamily::Carom) {
+    static const char* const kBall[] = {"white", "yellow", "red"};
+    const int cue = shooterBall();
+    s += std::string("play the ") + (cue >= 0 && cue <= 2 ? kBall[cue] : "cue ball");
+    if (match_->rack().isBreak()) s += ": the opening shot, straight onto the red";
+    return s;
+  }
   if (match_->rack().isBreak()) {
     s += "break (cue ball behind the head string)";
   } else if (cueInHand()) {

@@ -117,6 +117,11 @@ class GameSession {
   bool cueInHand() const;
   /// Where the cue ball is, or will be shot from when in hand.
   Vec2 cuePosition() const;
+  /// The ball the player to move strikes: pool's cue ball, or carom's own ball.
+  int shooterBall() const;
+  /// Carom: the live count of the cushions before the second ball while a shot rolls, then the
+  /// last shot's count and whether it scored, until the next shot; nothing in other games.
+  std::optional<std::string> caromCount() const;
   /// Why the cue ball may not go there now, or nothing.
   std::optional<std::string> placementProblem(Vec2 pos) const;
   /// Moves the cue ball in hand; false (and a message saying why) for an illegal spot. A
@@ -238,7 +243,9 @@ class GameSession {
   bool placement_refused_ = false;       // the message is a refused cue-ball placement
   double play_rate_ = 1.0;
   std::optional<audio::Impact> strike_;  // the cue's strike, heard with the next frame
-  Vec2 strike_from_;  // where the cue ball stood when the rolling shot was struck
+  Vec2 strike_from_;          // where the cue ball stood when the rolling shot was struck
+  int shot_ball_ = kCueBall;  // the ball the rolling shot was struck on
+  std::string last_count_;    // carom: the last shot's cushions and point, shown after it
   FixedStepClock clock_;
   ShotSteps shot_;
   std::vector<int> pocketed_;

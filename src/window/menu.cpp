@@ -8,6 +8,18 @@
 namespace nineball::window {
 namespace {
 
+const char* rulesLabel(rules::RuleSet r) {
+  switch (r) {
+    case rules::RuleSet::Wpa:
+      return "WPA";
+    case rules::RuleSet::Paper:
+      return "Paper (the seed paper's)";
+    case rules::RuleSet::Umb:
+      return "UMB (the world rules of carom)";
+  }
+  return "?";
+}
+
 constexpr int kVolumeStep = 10;
 
 std::string utf8(char32_t c) {
@@ -74,7 +86,7 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
   for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
-                 Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
+                 Item::Points, Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
     v.push_back(i);
   }
   return v;
@@ -88,6 +100,8 @@ bool MenuModel::enabled(Item item) const {
       return computer_;
     case Item::Rules:
       return severalRules();
+    case Item::Points:
+      return !gameDef(settings_.last.game).points_choices.empty();
     case Item::Name2:
       return !computer_;  // the computer's seat is called "Computer"
     case Item::Sound:
@@ -124,12 +138,15 @@ MenuRow MenuModel::row(Item item) const {
       r = {Kind::Choice, "Game", capitalised(rules::gameName(settings_.last.game)), true, false};
       break;
     case Item::Rules:
-      r = {Kind::Choice, "Rules",
-           settings_.last.rules == rules::RuleSet::Wpa ? "WPA" : "Paper (the seed paper's)",
-           r.enabled, false};
-      if (!severalRules()) {
+      r = {Kind::Choice, "Rules", rulesLabel(choice().rules), r.enabled, false};
+      if (!severalRules() && choice().rules == rules::RuleSet::Wpa) {
         r.value = "WPA (the paper's are " + gamesPlayedBy(rules::RuleSet::Paper) + "'s only)";
       }
+      break;
+    case Item::Points:
+      r = {Kind::Choice, "Points to win",
+           r.enabled ? std::to_string(pointsToWin()) : std::string("(a game won on a ball)"),
+           r.enabled, false};
       break;
     case Item::Name1:
     case Item::Name2: {
@@ -215,10 +232,26 @@ void MenuModel::change(Item item, int step) {
       level_ = static_cast<ai::Level>(l);
       break;
     }
-    case Item::Game:
-      settings_.last.game =
-          static_cast<rules::Game>((static_cast<int>(settings_.last.game) + step + 3) % 3);
+    case Item::Game: {
+      const auto& games = allGames();
+      const int n = static_cast<int>(games.size());
+      int at = 0;
+      for (int i = 0; i < n; ++i) {
+        if (games[i].id == settings_.last.game) at = i;
+      }
+      settings_.last.game = games[((at + step) % n + n) % n].id;
       break;
+    }
+    case Item::Points: {
+      const std::vector<int>& choices = gameDef(settings_.last.game).points_choices;
+      const int n = static_cast<int>(choices.size());
+      int at = 0;
+      for (int i = 0; i < n; ++i) {
+        if (choices[i] == pointsToWin()) at = i;
+      }
+      settings_.last.points = choices[((at + step) % n + n) % n];
+      break;
+    }
     case Item::Rules:
       settings_.last.rules =
           settings_.last.rules == rules::RuleSet::Wpa ? rules::RuleSet::Paper : rules::RuleSet::Wpa;
@@ -353,10 +386,19 @@ void MenuModel::click(int i) {
   if (!editing_) activate(v[i]);
 }
 
+int MenuModel::pointsToWin() const {
+  const GameDef& g = gameDef(settings_.last.game);
+  const auto& choices = g.points_choices;
+  const bool offered =
+      std::find(choices.begin(), choices.end(), settings_.last.points) != choices.end();
+  return offered ? settings_.last.points : g.default_points;
+}
+
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
   c.opponent = computer_ ? Seat(ComputerSeat{level_}) : Seat(HumanSeat{});
   if (!gameDef(c.game).playedBy(c.rules)) c.rules = gameDef(c.game).rule_sets.front();
+  c.points = pointsToWin();
   c.resume = outcome_ == Outcome::Resume;
   return c;
 }

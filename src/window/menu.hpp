@@ -53,6 +53,8 @@ class MenuModel {
   Outcome outcome() const { return outcome_; }
   /// What the start menu settled (valid once the outcome is Play or Resume).
   MenuChoice choice() const;
+  /// The distance chosen for a game played to points (its default until one is chosen).
+  int pointsToWin() const;
   /// The settings as edited (the last choice included once Play was chosen).
   const Settings& settings() const { return settings_; }
 
@@ -65,6 +67,7 @@ class MenuModel {
     Level,
     Game,
     Rules,
+    Points,
     Name1,
     Name2,
     OpenSettings,

@@ -22,6 +22,8 @@ struct MenuChoice {
   rules::Game game = defaultGame().id;  ///< the game of a match (practice: none)
   Seat opponent;  ///< who plays Player 2: a second person, or the computer at a level
   rules::RuleSet rules = rules::RuleSet::Wpa;
+  /// The distance of a game played to points (GameDef::points_choices; 0: the game's default).
+  int points = 0;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)
 };

@@ -77,6 +77,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
   j["last"] = {{"game", s.last.mode == GameMode::Practice ? "practice" : gameDef(s.last.game).name},
                {"opponent", seatName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
+               {"points", s.last.points},
                {"names", {s.last.names[0], s.last.names[1]}}};
   return j;
 }
@@ -153,7 +154,14 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
     if (r) {
       s.last.rules = *r;
     } else {
-      warn(warnings, "last.rules: expected wpa or paper");
+      warn(warnings, "last.rules: expected wpa, paper or umb");
+    }
+  }
+  if (const auto* v = field(*last, "points")) {
+    if (v->is_number_integer() && *v >= 0 && *v <= 100) {
+      s.last.points = v->get<int>();
+    } else {
+      warn(warnings, "last.points: expected a whole number from 0 to 100");
     }
   }
   if (const auto* v = field(*last, "names")) {

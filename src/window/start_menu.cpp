@@ -96,8 +96,9 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     }
   }
   const MenuChoice choice = model.choice();
-  setup.setGame(choice.mode == GameMode::Practice ? defaultGame().id : choice.game);
+  setup.setGame(choice.game);
   setup.rules = choice.rules;
+  if (choice.points > 0) setup.points = choice.points;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);
     computer.setOpponent(session, HumanSeat{});

@@ -167,4 +167,38 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
   return m;
 }
 
+TurnMessage describeCaromTurn(const TurnRecord& record, const rules::Rack& rack,
+                              const std::string& shooter, const std::string& opponent) {
+  const rules::Verdict& v = record.verdict;
+  const std::string cushions =
+      std::to_string(v.cushions) + (v.cushions == 1 ? " cushion" : " cushions");
+  const bool point = v.points[0] + v.points[1] > 0;
+  TurnMessage m;
+  if (v.foul == rules::Foul::WrongBallFirst) {
+    m.text = "No point - foul: the opening shot goes straight onto the red. ";
+    m.tone = render::Tone::Foul;
+  } else if (point) {
+    m.text = "Point for " + shooter + "! " + cushions + " before the second ball. ";
+    m.tone = render::Tone::Win;
+  } else {
+    m.text = "No point: " + cushions + " before the second ball" +
+             (v.cushions >= 3 ? " (it missed a ball). " : ". ");
+  }
+  const Score s = scoreOf(rack);
+  const std::string score = std::to_string(s.a.points) + "-" + std::to_string(s.b.points);
+  if (v.draw) {
+    m.text += "A draw, " + score + ": both reached " + std::to_string(rack.targetPoints()) +
+              " in as many innings.";
+    m.tone = render::Tone::Win;
+  } else if (v.winner) {
+    m.text += (*v.winner == record.shooter ? shooter : opponent) + " wins " + score + ".";
+    m.tone = render::Tone::Win;
+  } else if (v.next == record.shooter) {
+    m.text += shooter + " plays on.";
+  } else {
+    m.text += opponent + " to play.";
+  }
+  return m;
+}
+
 }  // namespace nineball::window

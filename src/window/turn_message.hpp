@@ -22,6 +22,11 @@ TurnMessage describeTurn(const TurnRecord& record, const rules::ShotSummary& sum
                          const std::string& shooter, const std::string& opponent,
                          const rules::Groups& groups_before = {});
 
+/// What a carom turn gave, for the players: the point and its cushions, or why there was none,
+/// who plays next, or the game's end with the score.
+TurnMessage describeCaromTurn(const TurnRecord& record, const rules::Rack& rack,
+                              const std::string& shooter, const std::string& opponent);
+
 /// `text` as the start of a sentence: its first letter a capital ("the 9" -> "The 9").
 std::string sentence(std::string text);
 
