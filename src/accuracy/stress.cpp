@@ -317,10 +317,16 @@ void setMoving(std::uint64_t& rng, std::vector<BallState>& balls, const PhysicsP
   }
 }
 
-// Balls packed round one jaw of a pocket, as close to it and to each other as they fit.
+// Balls packed round one jaw of a pocket (on a table without pockets, into a corner), as close
+// to it and to each other as they fit.
 std::vector<BallState> crowdAtJaw(std::uint64_t& rng, const TableGeometry& t, double r, int n) {
-  const Pocket& pk = t.pockets[splitmix64(rng) % t.pockets.size()];
-  const Vec2 jaw = splitmix64(rng) % 2 ? pk.jaw_a : pk.jaw_b;
+  Vec2 jaw;
+  if (t.pockets.empty()) {
+    jaw = t.cushion_loop[splitmix64(rng) % t.cushion_loop.size()];
+  } else {
+    const Pocket& pk = t.pockets[splitmix64(rng) % t.pockets.size()];
+    jaw = splitmix64(rng) % 2 ? pk.jaw_a : pk.jaw_b;
+  }
   std::vector<BallState> balls;
   for (int tries = 0; static_cast<int>(balls.size()) < n && tries < 20000; ++tries) {
     const double reach = r * (1.0 + 0.5 * std::sqrt(static_cast<double>(tries)));
@@ -334,13 +340,19 @@ std::vector<BallState> crowdAtJaw(std::uint64_t& rng, const TableGeometry& t, do
 }
 
 // Everything the input allows, drawn at random: table, physics, step and balls.
-Scenario randomSettings(std::uint64_t& rng, int i, bool at_jaw) {
+Scenario randomSettings(std::uint64_t& rng, int i, bool at_jaw, bool pocketless = false) {
   Scenario s;
-  s.kind = at_jaw ? "crowd against a jaw, any settings" : "random settings";
-  s.name = (at_jaw ? "jaw #" : "settings #") + std::to_string(i);
+  s.kind =
+      std::string(at_jaw ? "crowd against a jaw" : "random settings") + (pocketless ? ", no pockets"
+                                                                         : at_jaw ? ", any settings"
+                                                                                  : "");
+  s.name = std::string(pocketless ? "no-pocket " : "") + (at_jaw ? "jaw #" : "settings #") +
+           std::to_string(i);
   s.physics = randomPhysics(rng);
   const double r = s.physics.ball_radius;
   s.table = randomTable(rng, r);
+  // Carom's four straight cushions (and their square corners) on the same table sizes.
+  if (pocketless) s.table.pockets = false;
   s.step = randomStep(rng, r);
   const TableGeometry t = buildTable(s.table, r);
   const int n = 2 + static_cast<int>(splitmix64(rng) % (at_jaw ? 12 : 20));
@@ -393,6 +405,25 @@ std::vector<Scenario> scenarios(const StressOptions& o) {
   std::uint64_t settings_rng = o.seed ^ 0x5E771465ULL;
   for (int i = 0; i < o.random_settings; ++i) {
     out.push_back(randomSettings(settings_rng, i, i % 3 == 2));
+  }
+
+  // Three-cushion: the carom tables and equipment, three balls, any stroke.
+  std::uint64_t carom_rng = o.seed ^ 0xCA20ULL;
+  for (int i = 0; i < o.random_layouts / 4; ++i) {
+    Scenario s;
+    s.kind = "carom table and equipment";
+    s.physics = PhysicsParams::carom();
+    s.table = i % 2 ? TableDef::caromSmall() : TableDef::carom();
+    s.name = std::string(i % 2 ? "carom-small" : "carom") + " #" + std::to_string(i);
+    const TableGeometry carom_table = buildTable(s.table, s.physics.ball_radius);
+    s.balls = randomLayout(carom_rng, carom_table, s.physics.ball_radius, 3);
+    Shot shot = Shot::withSpeed(uniform(carom_rng, -180.0, 180.0),
+                                uniform(carom_rng, 0.5, limits::kMaxSpeed));
+    const double tip_r = 0.5 * std::sqrt(uniform(carom_rng, 0.0, 1.0));
+    shot.tip = fromAngle(uniform(carom_rng, 0.0, 6.283)) * tip_r;
+    shot.elevation_rad = splitmix64(carom_rng) % 4 == 0 ? uniform(carom_rng, 0.0, 1.0) : 0.0;
+    s.shot = shot;
+    out.push_back(s);
   }
   {
     Scenario s;

@@ -14,6 +14,7 @@
 #include "app/cli_runner.hpp"
 #include "common/limits.hpp"
 #include "nineball/random.hpp"
+#include "nineball/params.hpp"
 #include "nineball/table.hpp"
 
 namespace nineball::testing {
@@ -53,8 +54,14 @@ double edgy(std::uint64_t& rng, double lo, double hi) {
 
 json generate(std::uint64_t& rng) {
   json s;
-  const double r =
-      splitmix64(rng) % 2 ? 0.028575 : edgy(rng, limits::kMinBallRadius, limits::kMaxBallRadius);
+  // One scene in four on a carom table with the carom preset, decided from a copy so that the
+  // other draws stay as they were.
+  std::uint64_t carom_draw = rng ^ 0x6361726f6dULL;
+  const bool carom = splitmix64(carom_draw) % 4 == 0;
+  const double r = carom ? PhysicsParams::carom().ball_radius
+                   : splitmix64(rng) % 2
+                       ? 0.028575
+                       : edgy(rng, limits::kMinBallRadius, limits::kMaxBallRadius);
   const char* cloths[] = {"spin", "friction", "damping"};
   const char* cloth = cloths[splitmix64(rng) % 3];
   json physics = {{"cloth", cloth}, {"ball_radius", r}};
@@ -82,7 +89,12 @@ json generate(std::uint64_t& rng) {
                std::max(width, 2.0 * (corner / std::sqrt(2.0) + side / 2.0 + 2.0 * r)) *
                    logUniform(rng, 1.0, 3.0));
   TableDef table;
-  if (splitmix64(rng) % 3 == 0) {
+  if (carom) {
+    const bool small = splitmix64(carom_draw) % 2 == 0;
+    table = small ? TableDef::caromSmall() : TableDef::carom();
+    s["table"] = small ? "carom-small" : "carom";
+    s["physics"]["preset"] = "carom";
+  } else if (splitmix64(rng) % 3 == 0) {
     s["table"] = "9ft";
   } else {
     table.length = table_length;
@@ -209,6 +221,7 @@ TEST(FuzzCli, EveryInputEndsWellOrIsRefusedCleanly) {
     EXPECT_EQ(out["partial"].get<bool>(), r.status == 3) << where;
     const double r_ball = scene["physics"]["ball_radius"].get<double>();
     TableDef def;
+    if (scene["table"].is_string()) def = *TableDef::named(scene["table"].get<std::string>());
     if (scene["table"].is_object()) {
       def.length = scene["table"]["length"];
       def.width = scene["table"]["width"];
