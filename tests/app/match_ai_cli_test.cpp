@@ -85,3 +85,52 @@ TEST(MatchAiCli, HumansStillNeedTurns) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("turns"), std::string::npos) << r.err;
 }
+
+// A whole three-cushion game between two computers, pinned turn by turn (who shot, whether it
+// scored, the cushions before the second ball) with the final score: the game, its rules and
+// both planners must play it the same way on every build.
+TEST(MatchAiCli, GoldenThreeCushionGameBetweenTwoComputers) {
+  const std::string script = R"({"game": "three-cushion", "seed": 2, "points": 4,
+      "players": {"A": "ai:advanced", "B": "ai:pro"}})";
+  const CliOutcome first = runOnDocument("match", script);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const auto doc = nlohmann::json::parse(first.out);
+  struct Turn {
+    const char* shooter;
+    bool point;
+    int cushions;
+  };
+  const Turn expected[] = {{"A", true, 4},  {"A", false, 4}, {"B", true, 3},
+                           {"B", true, 3},  {"B", false, 4}, {"A", true, 4},
+                           {"A", false, 4}, {"B", true, 3},  {"B", true, 3}};
+  ASSERT_EQ(doc["turns"].size(), std::size(expected)) << first.out;
+  for (std::size_t i = 0; i < std::size(expected); ++i) {
+    const auto& t = doc["turns"][i];
+    EXPECT_EQ(t["shooter"], expected[i].shooter) << "turn " << i;
+    EXPECT_EQ(t["point"], expected[i].point) << "turn " << i;
+    EXPECT_EQ(t["cushions"], expected[i].cushions) << "turn " << i;
+    EXPECT_TRUE(t.contains("score") && t.contains("shot")) << "turn " << i;
+  }
+  EXPECT_EQ(doc["winner"], "B");
+  EXPECT_EQ(doc["draw"], false);
+  EXPECT_EQ(doc["points"], 4);
+  const nlohmann::json a = {
+      {"points", 2}, {"innings", 2}, {"run", 0}, {"average", 1.0}, {"high_run", 1}};
+  const nlohmann::json b = {
+      {"points", 4}, {"innings", 2}, {"run", 0}, {"average", 2.0}, {"high_run", 2}};
+  EXPECT_EQ(doc["score"]["A"], a);
+  EXPECT_EQ(doc["score"]["B"], b);
+  EXPECT_EQ(runOnDocument("match", script).out, first.out);
+}
+
+TEST(MatchAiCli, AThreeCushionScriptIsRefusedPointsItCannotPlay) {
+  for (const char* points : {"0", "101", "2.5", "\"25\""}) {
+    const CliOutcome r = runOnDocument(
+        "match", std::string(R"({"game": "three-cushion", "points": )") + points + "}");
+    EXPECT_EQ(r.status, 2) << points;
+    EXPECT_NE(r.err.find("points"), std::string::npos) << r.err;
+  }
+  const CliOutcome pool = runOnDocument("match", R"({"points": 9, "turns": []})");
+  EXPECT_EQ(pool.status, 2);
+  EXPECT_NE(pool.err.find("nine-ball is won on a ball"), std::string::npos) << pool.err;
+}
