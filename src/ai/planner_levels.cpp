@@ -178,34 +178,37 @@ void searchLikeALeaguePlayer(LevelSettings& s) {
 // checks its choice against its cueing and plays for the next point.
 void caromLikeABeginner(CaromSearch& c) {
   c.heading_step_deg = 3.0;
-  c.speeds = {3.0};
+  c.speeds = {2.5, 3.5};
   c.tips = {{0.0, 0.0}, {0.3, 0.2}, {-0.3, 0.2}};
 }
 
 void caromLikeACasualPlayer(CaromSearch& c) {
   caromLikeABeginner(c);
   c.heading_step_deg = 2.0;
-  c.speeds = {2.5, 3.5};
+  c.robust_top = 4;
 }
 
 void caromLikeAClubPlayer(CaromSearch& c) {
   c.heading_step_deg = 1.0;
   c.fine_step_deg = 0.5;
-  c.speeds = {2.5, 3.5};
+  c.speeds = {2.5, 3.5, 4.5};
   c.tips = {{0.0, 0.0}, {0.35, 0.2}, {-0.35, 0.2}, {0.35, -0.2}, {-0.35, -0.2}};
   c.robust_top = 6;
 }
 
 void caromLikeALeaguePlayer(CaromSearch& c) {
   caromLikeAClubPlayer(c);
-  c.speeds = {2.5, 3.5, 4.5};
   c.robust_top = 8;
 }
 
+// + finer across the balls, and the next point looked for from the best three.
 void caromLikeAnExpert(CaromSearch& c) {
   caromLikeALeaguePlayer(c);
   c.fine_step_deg = 0.25;
   c.robust_top = 10;
+  c.position_top = 3;
+  c.position_headings = 40;
+  c.position_weight = 0.5;
 }
 
 void caromLikeAMaster(CaromSearch& c) {
@@ -213,7 +216,6 @@ void caromLikeAMaster(CaromSearch& c) {
   c.robust_top = 12;
   c.position_top = 4;
   c.position_headings = 60;
-  c.position_weight = 0.5;
 }
 
 // The finest errors a level's candidates are checked against (degrees; relative speed).

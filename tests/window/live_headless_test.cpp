@@ -216,6 +216,18 @@ TEST(LiveAndHeadless, TenBallRacksWithCallsSpotsAndPushOutsAreTheSameEitherWay) 
   EXPECT_GE(f.scratches, 2);
 }
 
+// Three-cushion: each player's own ball, the scoreboard and equal innings, frame by frame in the
+// window as headless.
+TEST(LiveAndHeadless, AThreeCushionGameIsTheSameEitherWay) {
+  MatchSetup setup;
+  setup.setGame(rules::Game::ThreeCushion);
+  setup.seed = 2;
+  setup.points = 3;
+  const LiveRack live = playLive(setup, Level::Advanced, Level::Pro, 2);
+  expectSameRack(live);
+  EXPECT_GE(live.turns.size(), 4u);
+}
+
 // Rolls the session's shot to its end a fixed frame at a time.
 void rollFrames(GameSession& s) {
   for (int frame = 0; frame < kMaxFrames && s.phase() == Phase::Rolling; ++frame) {
