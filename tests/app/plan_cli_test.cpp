@@ -47,6 +47,27 @@ TEST(PlanCli, PrintsAShotThatSimPotsTheBallOnWith) {
   EXPECT_FALSE(pockets(result, 0));
 }
 
+// Three-cushion: the shot for the white (player A's, the game's first to play) that scores as
+// intended, checked by playing it through `nineball match` from the same balls.
+TEST(PlanCli, AThreeCushionPlanScoresAPointAsIntended) {
+  const std::string balls = R"([{"id": 0, "x": -0.9, "y": 0.3}, {"id": 1, "x": 0.2, "y": -0.25},
+                                {"id": 2, "x": 0.8, "y": 0.4}])";
+  const CliOutcome r = runOnDocument(
+      "plan", R"({"game": "three-cushion", "table": "carom", "physics": {"preset": "carom"},
+                  "level": "club", "balls": )" +
+                  balls + "}");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto shot = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(shot.contains("heading_deg") && shot.contains("speed") && shot.contains("tip"));
+  EXPECT_FALSE(shot.contains("cue"));
+  const CliOutcome m = runOnDocument("match", R"({"game": "three-cushion", "balls": )" + balls +
+                                                  R"(, "turns": [)" + shot.dump() + "]}");
+  ASSERT_EQ(m.status, 0) << m.err;
+  const auto turn = nlohmann::json::parse(m.out)["turns"][0];
+  EXPECT_EQ(turn["point"], true) << m.out;
+  EXPECT_GE(turn["cushions"].get<int>(), 3);
+}
+
 TEST(PlanCli, PlacesTheCueBallWithBallInHand) {
   const CliOutcome r = runOnDocument("plan", R"({
     "level": "easy", "rules": "wpa", "ball_in_hand": true,

@@ -106,7 +106,9 @@ std::vector<Window> windowsOf(const std::vector<double>& headings, std::size_t s
       while (j + 1 < n && row[j + 1].outcome.point) ++j;
       const double lo = i > 0 ? 0.5 * (headings[i - 1] + headings[i]) : headings[i];
       const double hi = j + 1 < n ? 0.5 * (headings[j] + headings[j + 1]) : headings[j];
-      out.push_back({0.5 * (headings[i] + headings[j]), hi - lo, k});
+      // Its middle heading that was played and scored: a path of three cushions is chaotic
+      // enough that a heading between two scoring ones need not score.
+      out.push_back({headings[(i + j) / 2], hi - lo, k});
       i = j + 1;
     }
   }
