@@ -3,12 +3,12 @@
 #include <malloc.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <stdexcept>
 
 #include "ai/planner_geometry.hpp"
+#include "ai/thread_world.hpp"
 #include "nineball/engine.hpp"
 #include "play/shot_summary.hpp"
 
@@ -77,8 +77,7 @@ Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double jud
   // The exact engine is also the faster one; it agrees with the Box2D engine to the suite's
   // 1 mm, far inside the noise the planner judges its shots under.
   step_.engine = EngineKind::named("reference");
-  static std::atomic<std::uint64_t> next_id{1};
-  id_ = next_id++;
+  id_ = newWorldOwner();
 }
 
 std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
@@ -98,22 +97,8 @@ std::vector<BallState> Evaluator::ballsWithCueAt(Vec2 cue) const {
   return balls;
 }
 
-// One engine per thread for each evaluator, reset between candidates: building the table for
-// each of thousands of candidates cost a twentieth of the search. A reset engine is a new one
-// to the bit, so which thread ran a candidate changes nothing.
 Engine& Evaluator::engineForThisThread() const {
-  struct Kept {
-    std::uint64_t evaluator = 0;
-    std::unique_ptr<Engine> engine;
-  };
-  thread_local Kept kept;
-  if (kept.evaluator == id_ && kept.engine) {
-    kept.engine->reset();
-  } else {
-    kept.engine = makeEngine(in_.table, in_.physics, step_);
-    kept.evaluator = id_;
-  }
-  return *kept.engine;
+  return worldForThisThread(id_, in_.table, in_.physics, step_);
 }
 
 std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) const {

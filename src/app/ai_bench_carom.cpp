@@ -7,6 +7,7 @@
 #include <ostream>
 #include <vector>
 
+#include "app/ai_bench_common.hpp"
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
 #include "nineball/games.hpp"
@@ -27,13 +28,6 @@ struct Innings {
   int high_run = 0;
   std::vector<double> think;  // s per planned shot
 };
-
-ai::Planner plannerFor(const AiBenchOptions& o, ai::Level level, std::uint64_t seed) {
-  if (const auto noise = ai::ExecutionNoise::named(o.noise)) {
-    return ai::Planner(level, *noise, seed, o.threads);
-  }
-  return ai::Planner(level, seed, o.threads);
-}
 
 // One inning from the position: shots until one does not score.
 void playInning(Match& match, ai::Planner& planner, Innings& t) {
@@ -59,7 +53,7 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, I
     setup.seed = seed;
     if (i % 2 == 1) setup.balls = randomPosition(seed, setup.table, setup.physics, game);
     Match match(setup);
-    ai::Planner planner = plannerFor(o, level, seed);
+    ai::Planner planner = benchPlanner(o, level, seed);
     playInning(match, planner, t);
   }
 }
@@ -71,8 +65,8 @@ void playGames(const AiBenchOptions& o, rules::Game game, ai::Level level, Innin
     setup.setGame(game);
     setup.seed = o.seed + static_cast<std::uint64_t>(i);
     Match match(setup);
-    ai::Planner seat_a = plannerFor(o, level, setup.seed);
-    ai::Planner seat_b = plannerFor(o, level, setup.seed + 1);
+    ai::Planner seat_a = benchPlanner(o, level, setup.seed);
+    ai::Planner seat_b = benchPlanner(o, level, setup.seed + 1);
     for (int shot = 0; shot < kMostShotsPerGame && !match.rack().over(); ++shot) {
       ai::Planner& p = match.rack().shooter() == rules::Player::A ? seat_a : seat_b;
       match.play(p.turnFor(match));
@@ -85,13 +79,6 @@ void playGames(const AiBenchOptions& o, rules::Game game, ai::Level level, Innin
     }
     if ((i + 1) % 10 == 0) err << "ai-bench: " << (i + 1) << " games\n" << std::flush;
   }
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 double average(const Innings& t) {
@@ -122,7 +109,7 @@ int runCaromBench(const AiBenchOptions& options, std::ostream& out, std::ostream
     j["innings"] = all.innings;
     j["average"] = average(all);
     j["high_run"] = all.high_run;
-    j["think_s"] = {{"median", median(all.think)}, {"max", max_think}};
+    j["think_s"] = {{"median", medianOf(all.think)}, {"max", max_think}};
     out << j.dump() << "\n" << std::flush;
     return out ? kExitOk : kExitInternal;
   }
@@ -140,7 +127,7 @@ int runCaromBench(const AiBenchOptions& options, std::ostream& out, std::ostream
         << games.points << " points in " << games.innings << " innings: average " << average(games)
         << ", high run " << games.high_run << "\n";
   }
-  out << std::setprecision(2) << "think time per shot: median " << median(all.think) << " s, max "
+  out << std::setprecision(2) << "think time per shot: median " << medianOf(all.think) << " s, max "
       << max_think << " s over " << all.think.size() << " shots\n"
       << "wall time: " << wall << " s\n"
       << std::flush;

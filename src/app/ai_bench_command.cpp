@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/ai_bench_carom.hpp"
+#include "app/ai_bench_common.hpp"
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
 #include "common/log.hpp"
@@ -65,14 +66,6 @@ bool madeIt(rules::Game game, const TurnRecord& r, int on) {
   return contains(v.pocketed, on) && v.call_breach == rules::Foul::None;
 }
 
-// A planner of the level, cueing with the tournaments' noise when asked.
-ai::Planner plannerFor(const AiBenchOptions& o, ai::Level level, std::uint64_t seed) {
-  if (const auto noise = ai::ExecutionNoise::named(o.noise)) {
-    return ai::Planner(level, *noise, seed, o.threads);
-  }
-  return ai::Planner(level, seed, o.threads);
-}
-
 // A shot that keeps the turn legally, or wins the rack.
 bool succeeded(const TurnRecord& r) {
   const rules::Verdict& v = r.verdict;
@@ -87,7 +80,7 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, T
     setup.balls = randomPosition(seed, setup.table, setup.physics, game);
     Match match(setup);
     const int on = match.rack().ballOn();
-    ai::Planner planner = plannerFor(o, level, seed);
+    ai::Planner planner = benchPlanner(o, level, seed);
     const ai::Plan plan = planner.plan(ai::planInputFrom(match));
     t.think.push_back(planner.lastThinkSeconds());
     if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank) ++t.attempted;
@@ -108,10 +101,10 @@ void playRacks(const AiBenchOptions& o, rules::Game game, ai::Level level, Tally
     setup.setGame(game);
     setup.seed = o.seed + static_cast<std::uint64_t>(i);
     Match match(setup);
-    ai::Planner planner = plannerFor(o, level, setup.seed);
+    ai::Planner planner = benchPlanner(o, level, setup.seed);
     // The opponent only answers the breaker's push-outs and illegal breaks; when it passes the
     // table back the visit goes on, when it takes the table the run is over.
-    ai::Planner opponent = plannerFor(o, level, setup.seed + 1);
+    ai::Planner opponent = benchPlanner(o, level, setup.seed + 1);
     int turns = 0;
     int pocketed = 0;
     while (!match.rack().over() && turns < kMaxTurnsPerRack) {
@@ -167,8 +160,8 @@ void playVersus(const AiBenchOptions& o, rules::Game game, Versus& v, Tally& t, 
     Match match(setup);
     // The rack's breaker is seat A: level A sits there on even racks, level B on odd ones.
     const bool a_breaks = i % 2 == 0;
-    ai::Planner seat_a = plannerFor(o, a_breaks ? v.a : v.b, setup.seed);
-    ai::Planner seat_b = plannerFor(o, a_breaks ? v.b : v.a, setup.seed + 1);
+    ai::Planner seat_a = benchPlanner(o, a_breaks ? v.a : v.b, setup.seed);
+    ai::Planner seat_b = benchPlanner(o, a_breaks ? v.b : v.a, setup.seed + 1);
     for (int turn = 0; turn < kMaxRackTurns && !match.rack().over(); ++turn) {
       ai::Planner& p = match.rack().shooter() == rules::Player::A ? seat_a : seat_b;
       match.play(p.turnFor(match));
@@ -190,13 +183,6 @@ std::pair<double, double> wilson(int wins, int n) {
   const double centre = (p + z2n / 2.0) / (1.0 + z2n);
   const double half = z * std::sqrt(p * (1.0 - p) / n + z2n / (4.0 * n)) / (1.0 + z2n);
   return {centre - half, centre + half};
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -307,7 +293,7 @@ int runAiBench(const AiBenchOptions& given, std::ostream& out, std::ostream& err
                   {"of", versus ? 0 : options.racks},
                   {"ball_down_on_break", racks.break_pots}};
     j["shots"] = {{"succeeded", racks.succeeded}, {"attempted", racks.shots}};
-    j["think_s"] = {{"median", median(think)}, {"max", max_think}};
+    j["think_s"] = {{"median", medianOf(think)}, {"max", max_think}};
     j["shots_simulated_per_cpu_s"] = cpu > 0.0 ? static_cast<double>(sims) / cpu : 0.0;
     if (versus) {
       // An older name is reported as the level it stands for.
@@ -345,7 +331,7 @@ int runAiBench(const AiBenchOptions& given, std::ostream& out, std::ostream& err
       << " s of thinking: " << std::setprecision(0) << (thinking > 0.0 ? sims / thinking : 0.0)
       << " shots per second\n"
       << std::setprecision(2);
-  out << "think time per shot: median " << median(think) << " s, max " << max_think << " s over "
+  out << "think time per shot: median " << medianOf(think) << " s, max " << max_think << " s over "
       << think.size() << " shots\n";
   out << "wall time: " << wall << " s (thinking " << thinking << " s)\n" << std::flush;
   return out ? kExitOk : kExitInternal;

@@ -2,7 +2,6 @@
 // a pool table has its corner pockets), the three balls in their colours where the physics left
 // them after a scripted point, and the HUD's count showing the point.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <SFML/Graphics/Image.hpp>
@@ -15,6 +14,7 @@
 #include "nineball/match.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
+#include "window/xvfb_run.hpp"
 
 namespace nineball::window {
 namespace {
@@ -35,19 +35,8 @@ std::string quoted(const std::string& s) {
   return "'" + s + "'";
 }
 
-int shoot(const std::string& args) {
-  const std::string cmd =
-      std::string("LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" ") +
-      "xvfb-run -a -n " + std::to_string(200 + getpid() % 700) + " -s '-screen 0 " +
-      std::to_string(kWidth) + "x" + std::to_string(kHeight) + "x24' " + quoted(NINEBALL_BINARY) +
-      " --mute --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " " + args +
-      " 2>/dev/null";
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
 TEST(CaromWindow, ShowsTheCaromTableTheThreeBallsAndAScoredPoint) {
-  ASSERT_EQ(std::system("command -v xvfb-run >/dev/null 2>&1"), 0)
+  ASSERT_TRUE(testing::haveXvfbRun())
       << "xvfb-run not found: install xvfb and xauth (bash scripts/setup.sh)";
   const std::string stem = "/tmp/nineball-test-carom-" + std::to_string(getpid());
   {
@@ -58,8 +47,10 @@ TEST(CaromWindow, ShowsTheCaromTableTheThreeBallsAndAScoredPoint) {
            << radToDeg(t.shot.heading_rad) << R"(, "speed": )" << t.shot.speed << R"(, "tip": [)"
            << t.shot.tip.x << ", " << t.shot.tip.y << "]}]}";
   }
-  ASSERT_EQ(shoot("--script " + quoted(stem + ".json") + " --screenshot " + quoted(stem + ".png")),
-            0);
+  const testing::XvfbRun run = testing::runGameUnderXvfb(
+      "--script " + quoted(stem + ".json") + " --screenshot " + quoted(stem + ".png"), kWidth,
+      kHeight);
+  ASSERT_EQ(run.status, 0) << run.err;
   sf::Image image;
   ASSERT_TRUE(image.loadFromFile(stem + ".png"));
   std::remove((stem + ".png").c_str());

@@ -1,15 +1,12 @@
 #include "ai/carom/carom_judge.hpp"
 
-#include <atomic>
-#include <memory>
 #include <set>
 
+#include "ai/thread_world.hpp"
 #include "play/shot_summary.hpp"
 
 namespace nineball::ai {
 namespace {
-
-std::atomic<std::uint64_t> next_judge_id{1};
 
 // The point is decided once the shooter's ball has met a second object ball: scored or not,
 // nothing after changes it.
@@ -26,22 +23,10 @@ bool decided(const std::vector<Event>& events, int cue) {
 }  // namespace
 
 CaromJudge::CaromJudge(const PlanInput& in)
-    : in_(in), cue_(in.rack.cueBall()), id_(next_judge_id++) {}
+    : in_(in), cue_(in.rack.cueBall()), id_(newWorldOwner()) {}
 
 CaromOutcome CaromJudge::run(const Shot& shot, bool to_rest) const {
-  // One world per thread, reset between shots (as the pool evaluator keeps its own).
-  struct Kept {
-    std::uint64_t judge = 0;
-    std::unique_ptr<Engine> engine;
-  };
-  thread_local Kept kept;
-  if (kept.judge == id_ && kept.engine) {
-    kept.engine->reset();
-  } else {
-    kept.engine = makeEngine(in_.table, in_.physics, in_.step);
-    kept.judge = id_;
-  }
-  Engine& world = *kept.engine;
+  Engine& world = worldForThisThread(id_, in_.table, in_.physics, in_.step);
   for (const BallState& b : in_.balls) {
     if (!b.pocket) world.addBall(b);
   }
