@@ -79,5 +79,24 @@ TEST(AiBenchJson, AnUnknownNoiseIsRefused) {
   EXPECT_NE(r.err.find("--noise"), std::string::npos) << r.err;
 }
 
+// Three-cushion reports points per inning: exactly the contract's fields, one inning a position.
+TEST(AiBenchJson, ThreeCushionReportsPointsPerInning) {
+  const nlohmann::ordered_json j = benchJson("--game three-cushion --level casual --positions 4");
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"game", "level", "points", "innings", "average",
+                                            "high_run", "think_s"}));
+  EXPECT_EQ(j["game"], "three-cushion");
+  EXPECT_EQ(j["level"], "casual");
+  EXPECT_EQ(j["innings"], 4);  // no games unless --racks asks for them
+  EXPECT_GE(j["points"].get<int>(), j["high_run"].get<int>());
+  EXPECT_DOUBLE_EQ(j["average"].get<double>(), j["points"].get<double>() / 4.0);
+  EXPECT_LE(j["think_s"]["median"].get<double>(), j["think_s"]["max"].get<double>());
+  const CliOutcome versus =
+      runNineball("ai-bench --json --game three-cushion --versus club,pro --racks 2");
+  EXPECT_EQ(versus.status, 2);
+  EXPECT_NE(versus.err.find("--versus"), std::string::npos) << versus.err;
+}
+
 }  // namespace
 }  // namespace nineball::testing
