@@ -43,6 +43,10 @@ struct CaromSearch {
   std::vector<double> speeds{3.0};     ///< m/s tried on every heading
   std::vector<Vec2> tips{{0.0, 0.0}};  ///< [side, height] tried on every heading
   std::vector<double> elevations_deg{0.0};  ///< cue elevations tried on every heading
+  /// A raised cue (swerve): these elevations with running side and a little follow, at the two
+  /// slowest speeds, every raised_step_deg round the table (none: not tried).
+  std::vector<double> raised_elevations_deg;
+  double raised_step_deg = 2.0;
   int robust_top = 0;            ///< widest scoring windows checked against cueing errors
   int position_top = 0;          ///< best of those whose next point is looked for
   int position_headings = 0;     ///< ... with a sweep of this many headings

@@ -211,11 +211,14 @@ void caromLikeAnExpert(CaromSearch& c) {
   c.position_weight = 0.5;
 }
 
+// + a raised cue (15 degrees) with running side, for swerve round a ball.
 void caromLikeAMaster(CaromSearch& c) {
   caromLikeAnExpert(c);
   c.robust_top = 12;
   c.position_top = 4;
-  c.position_headings = 60;
+  c.position_headings = 48;
+  c.raised_elevations_deg = {15.0};
+  c.raised_step_deg = 3.0;
 }
 
 // The finest errors a level's candidates are checked against (degrees; relative speed).

@@ -88,12 +88,41 @@ std::vector<Stroke> strokesFor(const CaromSearch& s) {
   return out;
 }
 
+// The raised-cue strokes: running side either way with a little follow, at the two slowest
+// speeds, for each raised elevation.
+std::vector<Stroke> raisedStrokesFor(const CaromSearch& s) {
+  std::vector<Stroke> out;
+  const std::size_t speeds = std::min<std::size_t>(2, s.speeds.size());
+  for (double e : s.raised_elevations_deg) {
+    for (std::size_t k = 0; k < speeds; ++k) {
+      for (Vec2 tip : {Vec2{0.35, 0.2}, Vec2{-0.35, 0.2}}) out.push_back({s.speeds[k], tip, e});
+    }
+  }
+  return out;
+}
+
+// Every heading of `headings` with every stroke, played until the point is decided; trial
+// i * headings + j is stroke i at heading j.
+std::vector<Trial> playGrid(const CaromJudge& judge, const std::vector<double>& headings,
+                            const std::vector<Stroke>& strokes, std::size_t first_stroke,
+                            int threads, long& sims) {
+  std::vector<Trial> trials(headings.size() * strokes.size());
+  parallelFor(trials.size(), threads, [&](std::size_t i) {
+    const std::size_t k = i / headings.size();
+    const double h = headings[i % headings.size()];
+    trials[i] = {h, first_stroke + k, judge.run(shotOf(h, strokes[k]), false)};
+  });
+  sims += static_cast<long>(trials.size());
+  return trials;
+}
+
 // Every run of neighbouring scoring headings of each stroke (the headings sorted, round the
 // circle), widest first.
 std::vector<Window> windowsOf(const std::vector<double>& headings, std::size_t strokes,
                               const std::vector<Trial>& trials) {
   std::vector<Window> out;
   const std::size_t n = headings.size();
+  if (n == 0) return out;
   for (std::size_t k = 0; k < strokes; ++k) {
     const Trial* row = &trials[k * n];
     std::size_t i = 0;
@@ -108,7 +137,7 @@ std::vector<Window> windowsOf(const std::vector<double>& headings, std::size_t s
       const double hi = j + 1 < n ? 0.5 * (headings[j] + headings[j + 1]) : headings[j];
       // Its middle heading that was played and scored: a path of three cushions is chaotic
       // enough that a heading between two scoring ones need not score.
-      out.push_back({headings[(i + j) / 2], hi - lo, k});
+      out.push_back({headings[(i + j) / 2], hi - lo, row[0].stroke});
       i = j + 1;
     }
   }
@@ -201,18 +230,30 @@ Plan planCarom(const PlanInput& in, const LevelSettings& settings, int threads, 
   const CaromSearch& s = settings.carom;
   const CaromJudge judge(in);
   const std::vector<double> headings = headingsFor(in, judge.cue(), s);
-  const std::vector<Stroke> strokes = strokesFor(s);
-  std::vector<Trial> trials(headings.size() * strokes.size());
-  parallelFor(trials.size(), threads, [&](std::size_t i) {
-    const std::size_t k = i / headings.size();
-    const double h = headings[i % headings.size()];
-    trials[i] = {h, k, judge.run(shotOf(h, strokes[k]), false)};
-  });
-  sims += static_cast<long>(trials.size());
+  std::vector<Stroke> strokes = strokesFor(s);
+  const std::size_t level_strokes = strokes.size();
+  std::vector<Trial> trials = playGrid(judge, headings, strokes, 0, threads, sims);
+  std::vector<Window> windows = windowsOf(headings, level_strokes, trials);
+  // The raised cue on a coarser grid of its own.
+  const std::vector<Stroke> raised = raisedStrokesFor(s);
+  if (!raised.empty()) {
+    std::vector<double> coarse;
+    const int n = static_cast<int>(std::lround(360.0 / s.raised_step_deg));
+    for (int k = 0; k < n; ++k) coarse.push_back(k * 360.0 / n);
+    const std::vector<Trial> more = playGrid(judge, coarse, raised, level_strokes, threads, sims);
+    std::vector<Window> found = windowsOf(coarse, raised.size(), more);
+    // Measured without the coarser grid's half steps, so that a lone scoring heading there
+    // does not outrank two neighbours on the finer one.
+    for (Window& w : found) w.width_deg = std::max(0.0, w.width_deg - s.raised_step_deg);
+    windows.insert(windows.end(), found.begin(), found.end());
+    std::stable_sort(windows.begin(), windows.end(),
+                     [](const Window& a, const Window& b) { return a.width_deg > b.width_deg; });
+    trials.insert(trials.end(), more.begin(), more.end());
+    strokes.insert(strokes.end(), raised.begin(), raised.end());
+  }
 
   Plan plan;
   plan.kind = ShotKind::Point;
-  std::vector<Window> windows = windowsOf(headings, strokes.size(), trials);
   if (windows.empty()) {
     const Trial& t = trials[closest(trials)];
     plan.turn.shot = shotOf(t.heading_deg, strokes[t.stroke]);
