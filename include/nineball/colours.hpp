@@ -70,6 +70,12 @@ inline BallLook caromBallLook(int id) {
   return {kCueBallColour, false, false, true};
 }
 
+/// A carom ball's name as players say it ("white", "yellow", "red"); null for another id.
+inline const char* caromBallName(int id) {
+  constexpr const char* kNames[] = {"white", "yellow", "red"};
+  return id >= 0 && id <= 2 ? kNames[id] : nullptr;
+}
+
 /// The stripe's half height as a fraction of the radius.
 constexpr double kStripeHalfHeight = 0.55;
 /// The white disc that carries the number, as a fraction of the radius.

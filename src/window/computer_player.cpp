@@ -85,10 +85,9 @@ std::string planText(const ai::Plan& plan, int ball_on) {
     case ai::ShotKind::PushOut:
       return "push out";
     case ai::ShotKind::Point: {
-      static const char* const kCaromBalls[] = {"white", "yellow", "red"};
-      const std::string first = plan.first >= 0 && plan.first <= 2
-                                    ? std::string("the ") + kCaromBalls[plan.first] + " first"
-                                    : "a cushion first";
+      const char* ball = caromBallName(plan.first);
+      const std::string first =
+          ball ? std::string("the ") + ball + " first" : std::string("a cushion first");
       return (plan.value > 0.0 ? "three cushions, " : "no point in sight, the closest try: ") +
              first;
     }

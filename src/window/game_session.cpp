@@ -669,9 +669,8 @@ std::string GameSession::status() const {
   }
   std::string s = name + " to ";
   if (gameDef(match_->rack().game()).family == GameFamily::Carom) {
-    static const char* const kBall[] = {"white", "yellow", "red"};
-    const int cue = shooterBall();
-    s += std::string("play the ") + (cue >= 0 && cue <= 2 ? kBall[cue] : "cue ball");
+    const char* ball = caromBallName(shooterBall());
+    s += std::string("play the ") + (ball ? ball : "cue ball");
     if (match_->rack().isBreak()) s += ": the opening shot, straight onto the red";
     return s;
   }
