@@ -19,6 +19,12 @@ BallState freeMotion(const BallState& ball, double t, const PhysicsParams& p);
 /// the phase a trace names.
 TracePhase freePhase(const BallState& ball, const PhysicsParams& p);
 
+/// A traced ball (a trace of a run of these physics) at time t, at or after its first sample:
+/// its last sample at or before t carried on by freeMotion. Every event's instant is a sample,
+/// so no event lies between: this is the run's own motion, not an interpolation. A pocketed
+/// ball stays where it dropped.
+BallState tracedState(const BallTrace& b, double t, const PhysicsParams& p);
+
 /// The first instant within `horizon` seconds (finite, >= 0) at which two balls moving freely
 /// (as freeMotion moves them) touch while closing, or nothing: the contact time the engines
 /// solve for (a quartic while either slides or rolls).

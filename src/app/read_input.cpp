@@ -10,14 +10,15 @@
 namespace nineball::app {
 namespace {
 
-std::optional<std::string> readAll(std::istream& in, std::string& why) {
+std::optional<std::string> readAll(std::istream& in, std::string& why, std::size_t limit) {
   std::string text;
   char buffer[1 << 16];
   errno = 0;
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > limits::kMaxInputBytes) {
-      why = inputTooLarge();
+    if (text.size() > limit) {
+      why = limit == limits::kMaxInputBytes ? inputTooLarge()
+                                            : "larger than " + std::to_string(limit >> 20) + " MiB";
       return std::nullopt;
     }
   }
@@ -48,11 +49,11 @@ std::istream* openInput(const std::string& path, std::istream& stdin_stream, std
 }
 
 std::optional<std::string> readInput(const std::string& path, std::istream& stdin_stream,
-                                     std::string& why) {
+                                     std::string& why, std::size_t limit) {
   std::ifstream file;
   std::istream* source = openInput(path, stdin_stream, file, why);
   if (!source) return std::nullopt;
-  return readAll(*source, why);
+  return readAll(*source, why, limit);
 }
 
 }  // namespace nineball::app

@@ -5,12 +5,14 @@
 #include <optional>
 #include <string>
 
+#include "common/limits.hpp"
+
 namespace nineball::app {
 
 /// The whole of a file, or of `stdin_stream` when the path is "-"; nothing, with the reason in
-/// `why`, when it cannot be read.
+/// `why`, when it cannot be read or holds more than `limit` bytes.
 std::optional<std::string> readInput(const std::string& path, std::istream& stdin_stream,
-                                     std::string& why);
+                                     std::string& why, std::size_t limit = limits::kMaxInputBytes);
 
 /// The stream to read `path` from: `stdin_stream` for "-", else `file` opened on it; nothing,
 /// with the reason in `why`, when it cannot be opened.

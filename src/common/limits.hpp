@@ -21,6 +21,15 @@ constexpr double kMaxSpeed = 14.0;
 /// m/s: R |w| of a strike at the ball's very edge at the top speed (w = 5 v b / 2 R^2, b = R).
 constexpr double kMaxSurfaceSpeed = 2.5 * kMaxSpeed;
 
+/// The speed-dependent cushion's restitution curve e(V) = base + slope V + quadratic V^2: a
+/// slope of 1 s/m (or a quadratic term of 1 s^2/m^2) moves e across its whole range [0, 1] in
+/// 1 m/s, four times the steepest published fit (Han 2005: 0.257 s/m, -0.044 s^2/m^2).
+constexpr double kMaxRestitutionSlope = 1.0;
+constexpr double kMaxRestitutionQuadratic = 1.0;
+/// s: a ball stays in a cushion for milliseconds; 0.1 s, ten times the default, would join
+/// cushions a ball meets a slow roll apart.
+constexpr double kMaxCushionContactTime = 0.1;
+
 /// m: twice a 12 ft snooker table; beyond it the float coordinates Box2D keeps lose the
 /// micrometres the contact search works in.
 constexpr double kMaxTableLength = 10.0;
@@ -58,5 +67,11 @@ constexpr std::size_t kMaxTraceSamples = 1'000'000;
 constexpr std::size_t kMaxBalls = 200;
 constexpr std::size_t kMaxInputBytes = 4u << 20;
 constexpr std::size_t kMaxQuotedChars = 40;
+
+/// Recorded shots (`nineball fit`, `calibrate`): a file of them, and one ball's samples. 182
+/// three-cushion shots tracked at 50 Hz are about 10 MB of JSON; a ball tracked at 1000 Hz
+/// for ten minutes is 600,000 samples.
+constexpr std::size_t kMaxRecordingBytes = 256u << 20;
+constexpr std::size_t kMaxRecordedSamples = 1'000'000;
 
 }  // namespace nineball::limits

@@ -5,6 +5,9 @@
 
 namespace nineball {
 
+/// The threads to run on when `asked` for: itself, or one per core for 0 (or less).
+int threadsFor(int asked);
+
 /// Calls `work(i)` for every i in [0, count) on up to `threads` threads (the caller's own
 /// included). Each call must write only its own slot of the caller's results, so that the
 /// results do not depend on which thread ran which index. The first exception thrown by a call

@@ -8,6 +8,7 @@
 #include "app/bench_command.hpp"
 #include "app/break_command.hpp"
 #include "app/exit_codes.hpp"
+#include "app/fit_command.hpp"
 #include "app/game_launcher.hpp"
 #include "app/game_options_cli.hpp"
 #ifdef NINEBALL_WINDOW
@@ -55,6 +56,10 @@ int run(int argc, char** argv) {
   CLI::App* stress = addStressCommand(app, stress_options);
   BreakOptions break_options;
   CLI::App* brk = addBreakCommand(app, break_options);
+  FitCommandOptions fit_options;
+  CLI::App* fit = addFitCommand(app, fit_options);
+  CalibrateCommandOptions calibrate_options;
+  CLI::App* calibrate = addCalibrateCommand(app, calibrate_options);
   GameOptions game_options;
   const std::vector<CLI::Option*> game_flags = addGameOptions(app, game_options);
 
@@ -97,6 +102,10 @@ int run(int argc, char** argv) {
   if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);
   if (stress->parsed()) return runStressCommand(stress_options, std::cout);
   if (brk->parsed()) return runBreak(break_options, std::cout, std::cerr);
+  if (fit->parsed()) return runFit(fit_options, std::cin, std::cout, std::cerr);
+  if (calibrate->parsed()) {
+    return runCalibrate(calibrate_options, std::cin, std::cout, std::cerr);
+  }
 #ifdef NINEBALL_WINDOW
   return window::runGameCommand(game_options, std::cin, std::cerr);
 #else

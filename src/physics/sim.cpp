@@ -211,9 +211,8 @@ SimResult simulate(const Scene& scene) {
 
 std::vector<SimResult> simulateMany(const std::vector<Scene>& scenes, int threads,
                                     const std::atomic<bool>* cancel) {
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<SimResult> results(scenes.size());
-  parallelFor(scenes.size(), threads > 0 ? threads : cores, [&](std::size_t k) {
+  parallelFor(scenes.size(), threadsFor(threads), [&](std::size_t k) {
     const CancelScope scope(cancel);
     if (!cancelRequested()) results[k] = simulate(scenes[k]);
   });

@@ -37,6 +37,19 @@ TracePhase freePhase(const BallState& ball, const PhysicsParams& p) {
   return physics::tracePhase(physics::beginArc(0.0, kinematicsOf(ball), p).phase);
 }
 
+BallState tracedState(const BallTrace& b, double t, const PhysicsParams& p) {
+  const auto after = std::upper_bound(b.t.begin(), b.t.end(), t);
+  const std::size_t k =
+      after == b.t.begin() ? 0 : static_cast<std::size_t>(after - b.t.begin()) - 1;
+  BallState s;
+  s.id = b.id;
+  s.pos = {b.x[k], b.y[k]};
+  if (b.phase[k] == TracePhase::Pocketed) return s;
+  s.vel = {b.vx[k], b.vy[k]};
+  s.w = b.w[k];
+  return t > b.t[k] ? freeMotion(s, t - b.t[k], p) : s;
+}
+
 std::optional<double> timeToTouch(const BallState& a, const BallState& b, const PhysicsParams& p,
                                   double horizon) {
   if (!(horizon >= 0.0) || !std::isfinite(horizon)) {

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nineball/params.hpp"
+#include "nineball/sim.hpp"
+#include "nineball/table.hpp"
+
+/// Recorded shots from a real table, the shot that best reproduces each one, and physics
+/// calibrated to many of them (docs/calibrating.md).
+namespace nineball {
+
+/// One ball's tracked path: positions (m, from the table centre) at the recording's own times
+/// (s, increasing; its t = 0 need not be the strike).
+struct RecordedPath {
+  std::string name;
+  std::vector<double> t, x, y;
+};
+
+/// A recorded shot: every tracked ball, on a table with its physics.
+struct Recording {
+  std::string id;
+  TableDef table;
+  PhysicsParams physics;
+  std::vector<RecordedPath> balls;
+  /// The struck ball's name; empty: the ball that moves first.
+  std::string cue_ball;
+};
+
+/// Empty when the recording can be fitted, else a message naming what is wrong ("balls.white:
+/// t is not increasing at sample 12").
+std::optional<std::string> recordingFault(const Recording& r);
+
+/// How a tracker sees a table: its frame rate, its noise, and when on its clock the shot
+/// was struck.
+struct Tracker {
+  double hz = 50.0;        ///< frames per second
+  double noise = 0.005;    ///< m, Gaussian, on each coordinate
+  double strike = 0.5;     ///< s, the recording's time of the strike
+  std::uint64_t seed = 1;  ///< of the noise
+};
+
+/// A recording of a checked scene (with a shot) as `tracker` would make it: every ball at
+/// every frame from 0 to the end of the run, read off the run exactly, with noise added and
+/// each position clamped at the cushion lines (no tracker sees a centre nearer a cushion than
+/// R). names[i] names scene ball i. For tests and for trying the workflow.
+Recording recordScene(const Scene& scene, const std::vector<std::string>& names,
+                      const Tracker& tracker, const std::string& id = "synthetic");
+
+/// What a fit minimises.
+enum class FitObjective {
+  Full,   ///< RMSE over every recorded sample of every ball
+  Early,  ///< t <= 4 s after the strike, the cue ball weighted 1.5, each sample by 1/(1 + t)
+};
+
+/// The errors of a fitted shot against its recording (m).
+struct FitErrors {
+  double full = 0.0;
+  double early = 0.0;
+};
+
+/// The shot that best reproduces a recording.
+struct ShotFit {
+  std::string id;
+  /// A complete scene (the reference engine): the balls where the recording has them at the
+  /// strike, the fitted shot; simulated, it gives the fit.
+  Scene scene;
+  /// names[i]: the recorded ball scene ball i (id i) stands for; the cue ball is id 0.
+  std::vector<std::string> names;
+  /// The recording's time of the strike (simulated time 0).
+  double strike_time = 0.0;
+  FitErrors rmse;
+  /// Simulations the search ran.
+  int evals = 0;
+};
+
+struct FitOptions {
+  int evals = 6000;  ///< simulations per shot (at least kMinFitEvals)
+  FitObjective objective = FitObjective::Full;
+  std::uint64_t seed = 1;
+  int threads = 0;  ///< 0: one per core
+  /// Called after each shot with the number done and the total (from any thread, one call at
+  /// a time).
+  std::function<void(std::size_t, std::size_t)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+constexpr int kMinFitEvals = 50;
+
+/// The errors of `scene` (whose balls stand for `names`) against the recording, struck at the
+/// recording's time `strike_time`.
+FitErrors fitErrors(const Recording& r, const Scene& scene, const std::vector<std::string>& names,
+                    double strike_time);
+
+/// Fits one checked recording (see recordingFault). Deterministic for a seed.
+ShotFit fitShot(const Recording& r, const FitOptions& options);
+
+/// Fits every recording, on up to options.threads threads; the results, in order, do not
+/// depend on the threads.
+std::vector<ShotFit> fitShots(const std::vector<Recording>& shots, const FitOptions& options);
+
+/// The physics with the searched parameters set to `values`, or why they cannot be (a name the
+/// physics does not take, a value out of its range): set by the caller, who knows the names.
+using PhysicsSetter = std::function<std::optional<PhysicsParams>(
+    const PhysicsParams& base, const std::vector<double>& values, std::string& why)>;
+
+struct CalibrateOptions {
+  std::vector<std::string> params;  ///< the physics parameters searched, by name
+  /// Their values in the recordings' physics (the search starts there).
+  std::vector<double> start;
+  PhysicsSetter set;
+  double holdout = 0.5;  ///< the share of shots kept out of the training, drawn by the seed
+  std::uint64_t seed = 1;
+  int evals = 600;        ///< simulations of each shot's first fit
+  int refit_evals = 120;  ///< simulations of each shot's refit under each candidate physics
+  int candidates = 60;    ///< physics candidates the search tries
+  int threads = 0;
+  /// Called with a line of progress (a stage, a candidate and its median).
+  std::function<void(const std::string&)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct Calibration {
+  PhysicsParams physics;
+  std::vector<double> values;               ///< the calibrated parameters, in options.params' order
+  double train_median = 0.0;                ///< m, the median full RMSE of the training shots
+  double holdout_median = 0.0;              ///< m; 0 without held-out shots
+  std::vector<std::size_t> train, holdout;  ///< indices into the shots
+  std::vector<ShotFit> fits;                ///< every shot refitted under the calibrated physics
+};
+
+/// Calibrates the physics of checked recordings that share one table and physics.
+Calibration calibrate(const std::vector<Recording>& shots, const CalibrateOptions& options);
+
+}  // namespace nineball

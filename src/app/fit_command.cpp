@@ -1,0 +1,178 @@
+#include "app/fit_command.hpp"
+
+#include <chrono>
+#include <istream>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+#include "app/cli_checks.hpp"
+#include "app/exit_codes.hpp"
+#include "app/read_input.hpp"
+#include "io/recording_json.hpp"
+#include "io/scene_parts.hpp"
+#include "nineball/fit.hpp"
+
+namespace nineball::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::optional<std::vector<Recording>> readShots(const std::string& path, std::istream& in,
+                                                std::ostream& err, const std::string& prefix) {
+  std::string why;
+  const auto text = readInput(path, in, why, limits::kMaxRecordingBytes);
+  if (!text) {
+    err << prefix << why << '\n';
+    return std::nullopt;
+  }
+  auto parsed = io::parseRecordings(*text);
+  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    err << prefix << refused->message << '\n';
+    return std::nullopt;
+  }
+  return std::get<std::vector<Recording>>(parsed);
+}
+
+// A line on stderr at most once a second, and at the end, for runs long enough to wait on.
+class Progress {
+ public:
+  Progress(std::ostream& err, std::string what) : err_(err), what_(std::move(what)) {}
+
+  void operator()(std::size_t done, std::size_t total) {
+    const auto now = Clock::now();
+    if (done < total && now - last_ < std::chrono::seconds(1)) return;
+    last_ = now;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    err_ << what_ << done << " of " << total << " shots fitted (" << static_cast<int>(seconds)
+         << " s)\n"
+         << std::flush;
+  }
+
+ private:
+  std::ostream& err_;
+  std::string what_;
+  Clock::time_point start_ = Clock::now();
+  Clock::time_point last_ = Clock::now();
+};
+
+std::vector<std::string> splitNames(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  std::string name;
+  while (std::getline(in, name, ',')) names.push_back(name);
+  return names;
+}
+
+}  // namespace
+
+CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "fit", "Find the shot that best reproduces each recorded shot (JSON or JSON Lines)");
+  cmd->add_option("file", options.path, "Recorded shots, or - to read standard input")->required();
+  cmd->add_option("--evals", options.evals, "Simulations per shot")
+      ->check(CLI::Range(kMinFitEvals, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--objective", options.objective,
+                  "What the fit minimises: full (every sample) or early (4 s after the strike)")
+      ->check(CLI::IsMember({"full", "early"}))
+      ->capture_default_str();
+  cmd->add_option("--seed", options.seed, "Seed of the search's restarts")
+      ->check(seedCheck())
+      ->capture_default_str();
+  cmd->add_option("--threads", options.threads, "Threads (0: one per core)")
+      ->check(CLI::Range(0, 256))
+      ->capture_default_str();
+  return cmd;
+}
+
+CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand("calibrate",
+                                     "Calibrate physics parameters to recorded shots of one table");
+  cmd->add_option("file", options.path, "Recorded shots, or - to read standard input")->required();
+  cmd->add_option("--params", options.params,
+                  "Physics parameters to calibrate, comma-separated (rolling_friction,...)")
+      ->required();
+  cmd->add_option("--holdout", options.holdout, "Share of the shots kept out of the training")
+      ->check(CLI::Range(0.0, 0.9))
+      ->capture_default_str();
+  cmd->add_option("--seed", options.seed, "Seed of the held-out draw and the searches")
+      ->check(seedCheck())
+      ->capture_default_str();
+  cmd->add_option("--evals", options.evals, "Simulations of each shot's first fit")
+      ->check(CLI::Range(kMinFitEvals, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--refit-evals", options.refit_evals,
+                  "Simulations of each training shot's refit under each candidate physics")
+      ->check(CLI::Range(10, 100000))
+      ->capture_default_str();
+  cmd->add_option("--candidates", options.candidates, "Physics candidates the search tries")
+      ->check(CLI::Range(2, 10000))
+      ->capture_default_str();
+  cmd->add_option("--threads", options.threads, "Threads (0: one per core)")
+      ->check(CLI::Range(0, 256))
+      ->capture_default_str();
+  return cmd;
+}
+
+int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
+           std::ostream& err) {
+  const std::string prefix = "nineball fit: " + shownPath(options.path) + ": ";
+  const auto shots = readShots(options.path, in, err, prefix);
+  if (!shots) return kExitBadInput;
+  FitOptions o;
+  o.evals = options.evals;
+  o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
+  o.seed = options.seed;
+  o.threads = options.threads;
+  Progress progress(err, "nineball fit: ");
+  if (shots->size() > 1) o.progress = std::ref(progress);
+  for (const ShotFit& f : fitShots(*shots, o)) out << io::fitToJson(f).dump() << '\n';
+  out << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
+                 std::ostream& err) {
+  const std::string prefix = "nineball calibrate: ";
+  const std::vector<std::string> names = splitNames(options.params);
+  std::set<std::string> seen;
+  for (const std::string& n : names) {
+    if (n.empty() || !seen.insert(n).second) {
+      err << prefix << "--params: " << (n.empty() ? "an empty name" : "\"" + n + "\" twice")
+          << " in \"" << options.params << "\"\n";
+      return kExitBadInput;
+    }
+  }
+  const auto shots = readShots(options.path, in, err, prefix + shownPath(options.path) + ": ");
+  if (!shots) return kExitBadInput;
+  const std::string physics = io::physicsToJson(shots->front().physics).dump();
+  for (std::size_t i = 1; i < shots->size(); ++i) {
+    if (io::physicsToJson((*shots)[i].physics).dump() != physics) {
+      err << prefix << "shot " << i + 1
+          << ": physics differs from the first shot's: calibrate one table's shots at a time\n";
+      return kExitBadInput;
+    }
+  }
+  auto start = io::physicsValues(shots->front().physics, names);
+  if (const auto* refused = std::get_if<io::ParseError>(&start)) {
+    err << prefix << refused->message << '\n';
+    return kExitBadInput;
+  }
+  CalibrateOptions o;
+  o.params = names;
+  o.start = std::get<std::vector<double>>(start);
+  o.set = io::physicsSetter(names);
+  o.holdout = options.holdout;
+  o.seed = options.seed;
+  o.evals = options.evals;
+  o.refit_evals = options.refit_evals;
+  o.candidates = options.candidates;
+  o.threads = options.threads;
+  o.progress = [&](const std::string& line) { err << prefix << line << '\n' << std::flush; };
+  const Calibration c = calibrate(*shots, o);
+  out << io::calibrationToJson(c, *shots).dump(2) << '\n' << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+}  // namespace nineball::app

@@ -1,0 +1,242 @@
+#include "fit/recorded_shot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace nineball {
+namespace {
+
+// Beyond this a tracked position is no tracking noise but another table (m).
+constexpr double kOffTable = 0.1;
+
+std::string pathFault(const RecordedPath& b, const std::string& at) {
+  if (b.t.size() != b.x.size() || b.t.size() != b.y.size()) {
+    return at + ": t, x and y have different lengths (" + std::to_string(b.t.size()) + ", " +
+           std::to_string(b.x.size()) + ", " + std::to_string(b.y.size()) + ")";
+  }
+  if (b.t.size() < 2) return at + ": needs at least 2 samples";
+  for (std::size_t i = 0; i < b.t.size(); ++i) {
+    if (!std::isfinite(b.t[i]) || !std::isfinite(b.x[i]) || !std::isfinite(b.y[i])) {
+      return at + ": sample " + std::to_string(i) + " is not a finite number";
+    }
+    if (i > 0 && !(b.t[i] > b.t[i - 1])) {
+      return at + ".t: not increasing at sample " + std::to_string(i);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::optional<std::string> recordingFault(const Recording& r) {
+  if (r.balls.empty()) return "balls: no ball recorded";
+  std::set<std::string> names;
+  for (const RecordedPath& b : r.balls) {
+    const std::string at = "balls." + b.name;
+    if (b.name.empty()) return std::string("balls: a ball has an empty name");
+    if (!names.insert(b.name).second) return at + ": recorded twice";
+    if (std::string why = pathFault(b, at); !why.empty()) return why;
+    const double hx = r.table.length / 2.0 + kOffTable;
+    const double hy = r.table.width / 2.0 + kOffTable;
+    for (std::size_t i = 0; i < b.t.size(); ++i) {
+      if (std::abs(b.x[i]) > hx || std::abs(b.y[i]) > hy) {
+        return at + ": sample " + std::to_string(i) + " lies off the table";
+      }
+    }
+  }
+  if (!r.cue_ball.empty() && !names.count(r.cue_ball)) {
+    return "cue_ball: no ball named \"" + r.cue_ball + "\" is recorded";
+  }
+  return std::nullopt;
+}
+
+namespace fit {
+namespace {
+
+// A ball has moved once it lies this far from where it stood, at two samples running: five
+// times a good tracker's noise, and twice over, so that noise alone almost never moves it (m).
+constexpr double kMoved = 0.02;
+// The cue ball's first samples in motion that give the first guess of its line (s).
+constexpr double kEarlyWindow = 0.1;
+// Off its early line by this much, the cue ball has met something (m).
+constexpr double kTurned = 0.03;
+
+Vec2 medianOf(const RecordedPath& b, std::size_t from, std::size_t to) {
+  std::vector<double> xs(b.x.begin() + from, b.x.begin() + to);
+  std::vector<double> ys(b.y.begin() + from, b.y.begin() + to);
+  auto median = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  };
+  return {median(xs), median(ys)};
+}
+
+Vec2 at(const RecordedPath& b, std::size_t i) {
+  return {b.x[i], b.y[i]};
+}
+
+struct Onset {
+  std::size_t index = 0;  // the first sample in motion; size() when it never moves
+  bool from_start = false;
+};
+
+Onset onsetOf(const RecordedPath& b) {
+  const std::size_t n = b.t.size();
+  const Vec2 first = medianOf(b, 0, std::min<std::size_t>(5, n));
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, n); ++i) {
+    if (length(at(b, i) - first) > kMoved) return {0, true};
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool far = length(at(b, i) - first) > kMoved;
+    if (far && (i + 1 == n || length(at(b, i + 1) - first) > kMoved)) return {i, false};
+  }
+  return {n, false};
+}
+
+// Where a ball stood before it moved: the samples up to 0.1 s before its onset when there are
+// any (a slow ball creeps before it reaches kMoved), else all before it.
+Vec2 restOf(const RecordedPath& b, const Onset& o) {
+  if (o.index == 0) return at(b, 0);
+  std::size_t last = o.index;
+  while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
+  return medianOf(b, 0, last);
+}
+
+// Least squares line p(t) = a + v (t - tm) through samples [from, to).
+struct Line {
+  Vec2 a, v;
+  double tm = 0.0;
+};
+
+Line lineThrough(const RecordedPath& b, std::size_t from, std::size_t to) {
+  Line l;
+  const double n = static_cast<double>(to - from);
+  for (std::size_t i = from; i < to; ++i) {
+    l.tm += b.t[i] / n;
+    l.a += at(b, i) * (1.0 / n);
+  }
+  double stt = 0.0;
+  Vec2 stp;
+  for (std::size_t i = from; i < to; ++i) {
+    const double dt = b.t[i] - l.tm;
+    stt += dt * dt;
+    stp += (at(b, i) - l.a) * dt;
+  }
+  if (stt > 0.0) l.v = stp * (1.0 / stt);
+  return l;
+}
+
+bool nearCushion(Vec2 p, const TableDef& table, double radius) {
+  const double margin = radius + 0.01;
+  return std::abs(p.x) > table.length / 2.0 - margin || std::abs(p.y) > table.width / 2.0 - margin;
+}
+
+std::size_t cueIndex(const Recording& r, const std::vector<Onset>& onsets) {
+  if (!r.cue_ball.empty()) {
+    for (std::size_t i = 0; i < r.balls.size(); ++i) {
+      if (r.balls[i].name == r.cue_ball) return i;
+    }
+  }
+  std::size_t best = 0;
+  double earliest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.balls.size(); ++i) {
+    const RecordedPath& b = r.balls[i];
+    if (onsets[i].index >= b.t.size()) continue;
+    // Ties (two balls moving from the first sample) go to the faster.
+    const double when = b.t[onsets[i].index];
+    if (when < earliest) {
+      best = i;
+      earliest = when;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+RecordedShot readRecording(const Recording& r) {
+  RecordedShot s;
+  s.recording = &r;
+  std::vector<Onset> onsets;
+  for (const RecordedPath& b : r.balls) {
+    onsets.push_back(onsetOf(b));
+    s.end = std::max(s.end, b.t.back());
+  }
+  const std::size_t cue = cueIndex(r, onsets);
+  s.order.push_back(cue);
+  for (std::size_t i = 0; i < r.balls.size(); ++i) {
+    if (i != cue) s.order.push_back(i);
+  }
+  for (std::size_t k : s.order) s.rest.push_back(restOf(r.balls[k], onsets[k]));
+
+  const RecordedPath& c = r.balls[cue];
+  const Onset o = onsets[cue];
+  const std::size_t n = c.t.size();
+  const std::size_t start = std::min(o.index, n - 2);
+  s.cue_onset = c.t[start];
+  std::size_t stop = start + 2;
+  while (stop < n && c.t[stop] <= s.cue_onset + kEarlyWindow) ++stop;
+  const Line line = lineThrough(c, start, stop);
+  const double speed = std::max(length(line.v), 0.05);
+  const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
+  const double sample = c.t[start + 1] - c.t[start];
+  if (o.from_start) {
+    s.rest[0] = line.a - line.v * (line.tm - c.t[0] + 0.5 * sample);
+  }
+  s.strike = line.tm + dot(s.rest[0] - line.a, dir) / speed;
+  s.latest = s.cue_onset;
+  s.earliest = s.latest - std::max(0.3, 3.0 * sample);
+  s.strike = std::clamp(s.strike, s.earliest, s.latest);
+  s.heading = std::atan2(dir.y, dir.x);
+  const PhysicsParams& p = r.physics;
+  const double mu = p.spin() ? p.sliding_friction : p.rolling_friction;
+  s.speed = speed + mu * p.gravity * std::max(0.0, line.tm - s.strike);
+
+  s.first_event = s.end;
+  for (std::size_t k = 1; k < s.order.size(); ++k) {
+    const RecordedPath& b = r.balls[s.order[k]];
+    const Onset& ob = onsets[s.order[k]];
+    if (ob.index < b.t.size()) s.first_event = std::min(s.first_event, b.t[ob.index]);
+  }
+  for (std::size_t i = start; i < n && c.t[i] < s.first_event; ++i) {
+    const Vec2 off = at(c, i) - (line.a + line.v * (c.t[i] - line.tm));
+    if (length(off) > kTurned || nearCushion(at(c, i), r.table, p.ball_radius)) {
+      s.first_event = c.t[i];
+      break;
+    }
+  }
+  s.first_event = std::max(s.first_event, s.cue_onset + sample);
+  return s;
+}
+
+void separate(std::vector<Vec2>& rest, const TableDef& table, double radius) {
+  const double hx = table.length / 2.0 - radius - 1e-6;
+  const double hy = table.width / 2.0 - radius - 1e-6;
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    bool moved = false;
+    for (Vec2& p : rest) {
+      const Vec2 clamped{std::clamp(p.x, -hx, hx), std::clamp(p.y, -hy, hy)};
+      moved = moved || clamped != p;
+      p = clamped;
+    }
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      for (std::size_t j = i + 1; j < rest.size(); ++j) {
+        const Vec2 d = rest[j] - rest[i];
+        const double gap = length(d) - 2.0 * radius;
+        if (gap >= 1e-6) continue;
+        const Vec2 u = length(d) > 0.0 ? normalized(d) : Vec2{1.0, 0.0};
+        const Vec2 push = u * (0.5 * (1e-6 - gap) + 1e-7);
+        rest[i] -= push;
+        rest[j] += push;
+        moved = true;
+      }
+    }
+    if (!moved) return;
+  }
+}
+
+}  // namespace fit
+}  // namespace nineball

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "nineball/fit.hpp"
+#include "nineball/vec2.hpp"
+
+namespace nineball::fit {
+
+/// What a recording says before any simulation: which ball was struck, where every ball
+/// stood at the strike, and a first guess of the strike from the cue ball's early samples.
+struct RecordedShot {
+  const Recording* recording = nullptr;
+  /// Scene ball i stands for recording->balls[order[i]]; the cue ball first.
+  std::vector<std::size_t> order;
+  /// Each scene ball's position at the strike: the median of its samples before it moves.
+  std::vector<Vec2> rest;
+  /// The recording's time of the cue ball's first move, and of its first event (another ball
+  /// moving, a turn, a cushion), both from the samples.
+  double cue_onset = 0.0;
+  double first_event = 0.0;
+  /// The first guess: the strike's time, heading (rad) and speed (m/s).
+  double strike = 0.0;
+  double heading = 0.0;
+  double speed = 1.0;
+  /// The strike lies in [earliest, latest].
+  double earliest = 0.0;
+  double latest = 0.0;
+  /// The last recorded instant of any ball.
+  double end = 0.0;
+
+  const RecordedPath& path(std::size_t scene_ball) const {
+    return recording->balls[order[scene_ball]];
+  }
+};
+
+/// Reads a checked recording. `radius`: the balls' (to tell a cushion from a turn).
+RecordedShot readRecording(const Recording& r);
+
+/// Moves balls that overlap or sink into a cushion (tracking noise) apart, by no more than the
+/// overlap, so that the scene is valid.
+void separate(std::vector<Vec2>& rest, const TableDef& table, double radius);
+
+}  // namespace nineball::fit

@@ -1,0 +1,200 @@
+#include "fit/shot_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/log.hpp"
+#include "fit/nelder_mead.hpp"
+#include "nineball/random.hpp"
+
+namespace nineball::fit {
+namespace {
+
+constexpr double kDegree = kPi / 180.0;
+
+// First steps of the simplex: a first guess (from the samples) is this far off at most...
+const Variables kCoarseStep{1.0 * kDegree, 0.05, 0.15, 0.15, 3.0 * kDegree, 0.01};
+// ... and a fitted shot about this far.
+const Variables kFineStep{0.2 * kDegree, 0.01, 0.04, 0.04, 1.0 * kDegree, 0.003};
+
+// Tips the search starts from: the centre and eight about it.
+constexpr double kTipStart = 0.3;
+
+// After the cue ball's first event, the window the starting tips are judged over (s); then
+// ever longer windows, each fitting the best of the last again and keeping half of them
+// (successive halving), the whole shot (infinity) last.
+constexpr double kFirstWindow = 1.0;
+constexpr double kLongerWindows[] = {2.0, 4.0, std::numeric_limits<double>::infinity()};
+
+// The searches each stage may run, as shares of the budget.
+constexpr double kCueShare = 0.05;
+constexpr double kTipShare = 0.025;    // each of the nine starting tips
+constexpr double kWindowShare = 0.11;  // each longer window, shared by the shots it keeps
+constexpr double kLevelShare = 0.6;    // of what is left: the places, the cue level
+
+class Search {
+ public:
+  Search(const RecordedShot& s, const PhysicsParams& p, int budget, const std::atomic<bool>* cancel)
+      : s_(s), p_(p), budget_(budget), cancel_(cancel) {}
+
+  int left() const { return budget_ - used_; }
+  int used() const { return used_; }
+
+  // Searches the variables `free` from x (the others held), at most `budget` simulations.
+  Found over(const std::vector<int>& free, const Variables& x, const Variables& step,
+             const Window& w, int budget) {
+    budget = std::min(budget, left());
+    if (budget <= 0) return {x, error(x, w), 0};
+    std::vector<double> x0, steps;
+    for (int i : free) {
+      x0.push_back(x[i]);
+      steps.push_back(step[i]);
+    }
+    auto widen = [&](const std::vector<double>& sub) {
+      Variables full = x;
+      for (std::size_t k = 0; k < free.size(); ++k) full[free[k]] = sub[k];
+      return full;
+    };
+    const Minimum m = nelderMead(
+        [&](const std::vector<double>& sub) { return searchError(s_, p_, widen(sub), w); }, x0,
+        steps, budget, 1e-3, cancel_);
+    used_ += m.evals;
+    const Variables y = legal(s_, p_, widen(m.x));
+    logger("fit")->debug(
+        "{}: window to {:.2f} s, {} variables, {} runs: {:.4f} m (heading {:.3f} deg, speed "
+        "{:.3f}, tip {:.3f} {:.3f}, elevation {:.2f} deg, strike {:.4f} s)",
+        s_.recording->id, w.until, free.size(), m.evals, m.f, y[kHeading] / kDegree, y[kSpeed],
+        y[kSide], y[kHeight], y[kElevation] / kDegree, y[kStrike]);
+    return {y, m.f, m.evals};
+  }
+
+  double error(const Variables& x, const Window& w) {
+    ++used_;
+    return searchError(s_, p_, x, w);
+  }
+
+ private:
+  const RecordedShot& s_;
+  const PhysicsParams& p_;
+  int budget_;
+  const std::atomic<bool>* cancel_;
+  int used_ = 0;
+};
+
+// A level cue first: a slight elevation (swerve) trades against the heading within a
+// tracker's noise, so it is kept only where it lowers the error by more than kElevationGain.
+const std::vector<int> kLevel{kHeading, kSpeed, kSide, kHeight, kStrike};
+constexpr double kElevationGain = 0.05;
+// A ball's place at the strike is known to about a millimetre from its samples before it.
+constexpr double kPlaceStep = 0.002;
+
+// The shot's variables and the balls' places, the elevation among them or not.
+std::vector<int> everything(const Variables& x, bool elevation) {
+  std::vector<int> all;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (elevation || i != kElevation) all.push_back(static_cast<int>(i));
+  }
+  return all;
+}
+
+Variables stepsFor(const Variables& x, const Variables& shot_steps) {
+  Variables steps = shot_steps;
+  steps.resize(x.size(), kPlaceStep);
+  return steps;
+}
+
+Window after(const RecordedShot& s, double seconds) {
+  Window w;
+  w.until = s.first_event + seconds;
+  return w;
+}
+
+int share(int budget, double part) {
+  return std::max(1, static_cast<int>(std::lround(budget * part)));
+}
+
+}  // namespace
+
+Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitObjective objective,
+                 std::uint64_t seed, const std::atomic<bool>* cancel) {
+  Search search(s, p, evals, cancel);
+  Variables x{s.heading, s.speed, 0.0, 0.0, 0.0, s.strike};
+  Window cue = after(s, -1e-9);
+  cue.cue_only = true;
+  x = search.over({kHeading, kSpeed, kStrike}, x, kCoarseStep, cue, share(evals, kCueShare)).x;
+
+  std::vector<Found> starts;
+  for (double side : {0.0, -kTipStart, kTipStart}) {
+    for (double height : {0.0, -kTipStart, kTipStart}) {
+      Variables from = x;
+      from[kSide] = side;
+      from[kHeight] = height;
+      starts.push_back(
+          search.over(kLevel, from, kCoarseStep, after(s, kFirstWindow), share(evals, kTipShare)));
+    }
+  }
+  auto rank = [](std::vector<Found>& found) {
+    std::stable_sort(found.begin(), found.end(),
+                     [](const Found& a, const Found& b) { return a.error < b.error; });
+  };
+  rank(starts);
+  for (double seconds : kLongerWindows) {
+    starts.resize((starts.size() + 1) / 2);
+    const int each = share(evals, kWindowShare) / static_cast<int>(starts.size());
+    const Window w = std::isinf(seconds) ? wholeShot(objective) : after(s, seconds);
+    for (Found& f : starts) f = search.over(kLevel, f.x, kFineStep, w, each);
+    rank(starts);
+  }
+  const Window whole = wholeShot(objective);
+  Found best = starts.front();
+  // Then the balls' places with the shot, and restarts about the best, each from a point a
+  // fine step or so away, until the budget ends.
+  best.x = withPlaces(s, best.x);
+  const Variables steps = stepsFor(best.x, kFineStep);
+  std::uint64_t state = seed;
+  auto restarts = [&](Found from, bool elevation, int budget) {
+    const int until = search.left() - budget;
+    while (search.left() - until > 2 * static_cast<int>(from.x.size()) &&
+           !(cancel && cancel->load())) {
+      Variables near = from.x;
+      for (int i : everything(near, elevation)) {
+        if (i < kVariables) near[i] += 0.5 * steps[i] * gaussian(state);
+      }
+      const Found f = search.over(everything(near, elevation), legal(s, p, near), steps, whole,
+                                  search.left() - until);
+      if (f.error < from.error) from = f;
+    }
+    return from;
+  };
+  best = restarts(best, false, static_cast<int>(kLevelShare * search.left()));
+  const Found raised = restarts(best, true, search.left());
+  if (raised.error < (1.0 - kElevationGain) * best.error) best = raised;
+  best.evals = search.used();
+  return best;
+}
+
+Found refineShot(const RecordedShot& s, const PhysicsParams& p, const Variables& from, int evals,
+                 FitObjective objective, const std::atomic<bool>* cancel) {
+  Search search(s, p, evals, cancel);
+  const bool elevation = from[kElevation] > 0.0;
+  Found best = search.over(everything(from, elevation), from, stepsFor(from, kFineStep),
+                           wholeShot(objective), evals);
+  best.evals = search.used();
+  return best;
+}
+
+ShotFit shotFitOf(const RecordedShot& s, const PhysicsParams& p, const Found& f) {
+  ShotFit fit;
+  fit.id = s.recording->id;
+  fit.scene = sceneOf(s, p, legal(s, p, f.x), wholeShot(FitObjective::Full));
+  fit.scene.until.reset();
+  fit.scene.trace.reset();
+  for (std::size_t k : s.order) fit.names.push_back(s.recording->balls[k].name);
+  fit.strike_time = f.x[kStrike];
+  fit.rmse = fitErrors(*s.recording, fit.scene, fit.names, fit.strike_time);
+  fit.evals = f.evals;
+  return fit;
+}
+
+}  // namespace nineball::fit

@@ -1,0 +1,249 @@
+#include "io/recording_json.hpp"
+
+#include "io/json_fields.hpp"
+#include "io/json_reader.hpp"
+#include "io/scene_parts.hpp"
+
+namespace nineball::io {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+std::vector<double> numbers(const json& v, const std::string& path) {
+  if (!v.is_array()) refuse(path, "expected an array of numbers, found " + describe(v));
+  if (v.size() > limits::kMaxRecordedSamples) {
+    refuse(path, "more than " + std::to_string(limits::kMaxRecordedSamples) + " samples");
+  }
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(number(v[i], element(path, i)));
+  return out;
+}
+
+RecordedPath pathFromJson(const std::string& name, const json& v) {
+  const std::string path = member("balls", name);
+  expectObject(v, path);
+  allowOnly(v, path, {"t", "x", "y"});
+  RecordedPath p;
+  p.name = name;
+  p.t = numbers(required(v, path, "t"), member(path, "t"));
+  p.x = numbers(required(v, path, "x"), member(path, "x"));
+  p.y = numbers(required(v, path, "y"), member(path, "y"));
+  return p;
+}
+
+std::string idOf(const json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_integer()) return v.dump();
+  refuse("id", "expected a string or an integer, found " + describe(v));
+}
+
+ordered_json tableToJson(const TableDef& t) {
+  for (const std::string& name : TableDef::names()) {
+    const TableDef n = *TableDef::named(name);
+    if (n.length == t.length && n.width == t.width && n.pockets == t.pockets &&
+        (!t.pockets ||
+         (n.corner_pocket == t.corner_pocket && n.side_pocket == t.side_pocket &&
+          n.corner_jaw_deg == t.corner_jaw_deg && n.side_jaw_deg == t.side_jaw_deg))) {
+      return name;
+    }
+  }
+  ordered_json j{{"length", t.length}, {"width", t.width}, {"pockets", t.pockets}};
+  if (t.pockets) {
+    j["corner_pocket"] = t.corner_pocket;
+    j["side_pocket"] = t.side_pocket;
+    j["corner_jaw_deg"] = t.corner_jaw_deg;
+    j["side_jaw_deg"] = t.side_jaw_deg;
+  }
+  return j;
+}
+
+// The refusal of a shot, named by where it stands in the input.
+ParseError refusedShot(const std::string& where, const std::string& why) {
+  return {where + ": " + why};
+}
+
+std::variant<std::vector<Recording>, ParseError> shotsOf(const json& doc) {
+  std::vector<Recording> shots;
+  const bool many = doc.is_array();
+  if (many && doc.empty()) return ParseError{"expected at least one recorded shot"};
+  for (std::size_t i = 0; i < (many ? doc.size() : 1); ++i) {
+    try {
+      shots.push_back(recordingFromJson(many ? doc[i] : doc));
+    } catch (const ParseError& e) {
+      return many ? refusedShot("shot " + std::to_string(i + 1), e.message) : e;
+    }
+  }
+  return shots;
+}
+
+bool jsonLines(std::string_view text) {
+  // More than one line that holds something: one shot a line.
+  int lines = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    if (text.substr(start, end - start).find_first_not_of(" \t\r") != std::string_view::npos) {
+      ++lines;
+    }
+    start = end + 1;
+  }
+  return lines > 1 && text.find_first_not_of(" \t\r\n") != std::string_view::npos &&
+         text[text.find_first_not_of(" \t\r\n")] == '{';
+}
+
+}  // namespace
+
+Recording recordingFromJson(const json& v) {
+  expectObject(v, "");
+  allowOnly(v, "", {"id", "table", "physics", "balls", "cue_ball"});
+  Recording r;
+  if (const json* id = optional(v, "id")) r.id = idOf(*id);
+  if (const json* t = optional(v, "table")) r.table = parseTable(*t);
+  if (const json* p = optional(v, "physics")) r.physics = parsePhysics(*p);
+  const json& balls = required(v, "", "balls");
+  expectObject(balls, "balls");
+  if (balls.empty()) refuse("balls", "no ball recorded");
+  if (balls.size() > limits::kMaxBalls) {
+    refuse("balls", "more than " + std::to_string(limits::kMaxBalls) + " balls");
+  }
+  for (const auto& item : balls.items()) r.balls.push_back(pathFromJson(item.key(), item.value()));
+  if (const json* c = optional(v, "cue_ball")) r.cue_ball = text(*c, "cue_ball");
+  if (auto fault = recordingFault(r)) throw ParseError{*fault};
+  return r;
+}
+
+std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text) {
+  if (!jsonLines(text)) {
+    try {
+      return shotsOf(readJson(text));
+    } catch (const ParseError& e) {
+      return e;
+    }
+  }
+  std::vector<Recording> shots;
+  std::size_t start = 0;
+  for (int line = 1; start < text.size(); ++line) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view one = text.substr(start, end - start);
+    start = end + 1;
+    if (one.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    try {
+      shots.push_back(recordingFromJson(readJson(one)));
+    } catch (const ParseError& e) {
+      return refusedShot("line " + std::to_string(line), e.message);
+    }
+  }
+  return shots;
+}
+
+ordered_json sceneToJson(const Scene& scene) {
+  ordered_json j;
+  j["table"] = tableToJson(scene.table);
+  j["physics"] = physicsToJson(scene.physics);
+  ordered_json balls = ordered_json::array();
+  for (const BallState& b : scene.balls) {
+    balls.push_back({{"id", b.id}, {"x", b.pos.x}, {"y", b.pos.y}});
+  }
+  j["balls"] = balls;
+  if (scene.shot) {
+    const Shot& s = *scene.shot;
+    j["shot"] = {{"heading_deg", s.heading_rad * 180.0 / kPi},
+                 {"speed", s.speed},
+                 {"tip", ordered_json::array({s.tip.x, s.tip.y})},
+                 {"elevation_deg", s.elevation_rad * 180.0 / kPi}};
+  }
+  j["step"] = {{"engine", scene.step.engine.name()}};
+  return j;
+}
+
+ordered_json fitToJson(const ShotFit& fit) {
+  ordered_json names;
+  for (std::size_t i = 0; i < fit.names.size(); ++i) names[std::to_string(i)] = fit.names[i];
+  ordered_json j;
+  j["id"] = fit.id;
+  j["scene"] = sceneToJson(fit.scene);
+  j["names"] = names;
+  j["strike_time"] = fit.strike_time;
+  j["rmse_m"] = {{"full", fit.rmse.full}, {"early", fit.rmse.early}};
+  j["evals"] = fit.evals;
+  return j;
+}
+
+ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots) {
+  ordered_json j;
+  j["physics"] = physicsToJson(c.physics);
+  j["train"] = {{"median_rmse_m", c.train_median}, {"shots", c.train.size()}};
+  j["holdout"] = {
+      {"median_rmse_m", c.holdout.empty() ? ordered_json(nullptr) : ordered_json(c.holdout_median)},
+      {"shots", c.holdout.size()}};
+  ordered_json per_shot = ordered_json::array();
+  std::vector<bool> held(shots.size(), false);
+  for (std::size_t i : c.holdout) held[i] = true;
+  for (std::size_t i = 0; i < c.fits.size(); ++i) {
+    ordered_json one = fitToJson(c.fits[i]);
+    one["set"] = held[i] ? "holdout" : "train";
+    per_shot.push_back(one);
+  }
+  j["per_shot"] = per_shot;
+  return j;
+}
+
+PhysicsSetter physicsSetter(const std::vector<std::string>& names) {
+  return [names](const PhysicsParams& base, const std::vector<double>& values,
+                 std::string& why) -> std::optional<PhysicsParams> {
+    json physics = json::parse(physicsToJson(base).dump());
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const std::size_t dot = names[i].find('.');
+      if (dot == std::string::npos) {
+        physics[names[i]] = values[i];
+      } else {
+        physics[names[i].substr(0, dot)][names[i].substr(dot + 1)] = values[i];
+      }
+    }
+    try {
+      return parsePhysics(physics);
+    } catch (const ParseError& e) {
+      why = e.message;
+      return std::nullopt;
+    }
+  };
+}
+
+std::variant<std::vector<double>, ParseError> physicsValues(const PhysicsParams& p,
+                                                            const std::vector<std::string>& names) {
+  const json physics = json::parse(physicsToJson(p).dump());
+  std::vector<double> values;
+  for (const std::string& name : names) {
+    const std::size_t dot = name.find('.');
+    const json* v = nullptr;
+    if (dot == std::string::npos) {
+      if (physics.contains(name)) v = &physics[name];
+    } else if (physics.contains(name.substr(0, dot))) {
+      const json& outer = physics[name.substr(0, dot)];
+      if (outer.is_object() && outer.contains(name.substr(dot + 1))) {
+        v = &outer[name.substr(dot + 1)];
+      }
+    }
+    if (!v || !v->is_number()) {
+      std::string known;
+      for (const auto& item : physics.items()) {
+        if (item.value().is_number()) known += (known.empty() ? "" : ", ") + item.key();
+        if (item.value().is_object()) {
+          for (const auto& inner : item.value().items()) {
+            known += (known.empty() ? "" : ", ") + item.key() + "." + inner.key();
+          }
+        }
+      }
+      return ParseError{"--params: " + quote(name) +
+                        " is no number of these physics (its models read: " + known + ")"};
+    }
+    values.push_back(v->get<double>());
+  }
+  return values;
+}
+
+}  // namespace nineball::io
