@@ -59,6 +59,9 @@ class CushionModel {
   const char* name() const;
   /// True when it reads `parameter` (a field of "physics" that only some cushion models read).
   bool reads(const std::string& parameter) const;
+  /// True when it does not read `parameter`, a field the other cushion models read
+  /// ("cushion_restitution" for a model whose restitution is a function of speed).
+  bool ignores(const std::string& parameter) const;
   /// Its place in the registry.
   std::size_t index() const { return index_; }
 
@@ -78,6 +81,13 @@ struct BallFriction {
   double c = 1.088;
 
   double at(double sliding) const { return a + b * std::exp(-c * sliding); }
+};
+
+/// How contacts that meet within one contact are resolved: one after the other, each with its
+/// own model (the paper's way, and the default), or their normal impulses solved together.
+enum class ContactOrder {
+  Sequential,    ///< one contact after the other
+  Simultaneous,  ///< the normal impulses of both contacts from one linear complementarity problem
 };
 
 /// How ball-ball contacts are resolved.
@@ -137,6 +147,20 @@ struct PhysicsParams {
   /// the cushion models that model the nose (the registry says which). Follows ball_radius in a
   /// scene that sets only the radius.
   double cushion_height = 1.27 * 0.028575;
+  /// The restitution of the speed-dependent cushion ("mathavan_speed"), a function of the
+  /// normal approach speed V (m/s): e(V) = base + slope V + quadratic V^2, held within
+  /// [restitution_min, 1]. Han 2005's fit to measured rebounds (his eq. 26): 0.39, 0.257 s/m,
+  /// -0.044 s^2/m^2, and the floor 0.40 that pooltool and other simulators give it.
+  double cushion_restitution_base = 0.39;
+  double cushion_restitution_slope = 0.257;       ///< s/m
+  double cushion_restitution_quadratic = -0.044;  ///< s^2/m^2
+  double cushion_restitution_min = 0.40;
+  /// A ball touching a cushion when another ball strikes it (a frozen ball).
+  ContactOrder frozen = ContactOrder::Sequential;
+  /// A ball meeting a second cushion within cushion_contact_time of the first (a corner, a jaw).
+  ContactOrder corner = ContactOrder::Sequential;
+  /// s, how long a ball stays in a cushion; read by "corner": "simultaneous" only.
+  double cushion_contact_time = 0.01;
   double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
   double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
 
@@ -183,6 +207,8 @@ struct StepParams {
 
 const char* clothModelName(ClothModel m);
 const char* contactModelName(ContactModel m);
+const char* contactOrderName(ContactOrder o);
+std::optional<ContactOrder> contactOrderFromName(const std::string& name);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
 std::optional<ContactModel> contactModelFromName(const std::string& name);
 

@@ -87,6 +87,16 @@ const char* contactModelName(ContactModel m) {
   return m == ContactModel::Pairwise ? "pairwise" : "box2d";
 }
 
+const char* contactOrderName(ContactOrder o) {
+  return o == ContactOrder::Sequential ? "sequential" : "simultaneous";
+}
+
+std::optional<ContactOrder> contactOrderFromName(const std::string& name) {
+  if (name == "sequential") return ContactOrder::Sequential;
+  if (name == "simultaneous") return ContactOrder::Simultaneous;
+  return std::nullopt;
+}
+
 std::optional<ClothModel> clothModelFromName(const std::string& name) {
   if (name == "spin") return ClothModel::Spin;
   if (name == "friction") return ClothModel::Friction;

@@ -4,6 +4,7 @@
 
 #include "common/named.hpp"
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
+#include "physics/resolve/cushion/mathavan_speed/mathavan_speed.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"
 #include "physics/resolve/cushion/stronge_compliant/stronge_compliant.hpp"
 
@@ -15,6 +16,7 @@ const std::vector<CushionModelDef>& cushionModels() {
       simpleCushion(),
       mathavan2010Cushion(),
       strongeCompliantCushion(),
+      mathavanSpeedCushion(),
   };
   return models;
 }
@@ -41,6 +43,10 @@ std::vector<std::string> CushionModel::names() {
 
 bool CushionModel::reads(const std::string& parameter) const {
   return holds(physics::cushionModel(*this).reads, parameter);
+}
+
+bool CushionModel::ignores(const std::string& parameter) const {
+  return holds(physics::cushionModel(*this).ignores, parameter);
 }
 
 const char* CushionModel::name() const {

@@ -26,6 +26,9 @@ struct CushionModelDef {
   /// Parameters that only some cushion models read (today "cushion_height"): a scene that
   /// sets one the chosen model does not read is refused, naming the models that do.
   std::vector<std::string> reads;
+  /// Parameters every other model reads that this one does not (a restitution it takes from
+  /// elsewhere): a scene that sets one with this model is refused.
+  std::vector<std::string> ignores;
   /// Why settings cannot run with this model (a message naming the field), or nothing.
   std::optional<std::string> (*check)(const PhysicsParams& p) = nullptr;
 };
