@@ -293,6 +293,18 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
   // The nose anywhere strictly between the ball's centre and its top.
   p.cushion_height = p.ball_radius * uniform(models, 1.001, 1.999);
   p.ball_friction.a = uniform(models, 0.0, 0.1);
+  // The contact orders and the speed-dependent cushion's curve from a copy of their own, for
+  // the same reason.
+  std::uint64_t orders = rng ^ 0x6f7264657273ULL;
+  p.frozen = splitmix64(orders) % 2 ? ContactOrder::Simultaneous : ContactOrder::Sequential;
+  p.corner = splitmix64(orders) % 2 ? ContactOrder::Simultaneous : ContactOrder::Sequential;
+  p.cushion_contact_time = uniform(orders, 0.0, limits::kMaxCushionContactTime);
+  p.cushion_restitution_base = uniform(orders, 0.0, 1.0);
+  p.cushion_restitution_slope =
+      uniform(orders, -limits::kMaxRestitutionSlope, limits::kMaxRestitutionSlope);
+  p.cushion_restitution_quadratic =
+      uniform(orders, -limits::kMaxRestitutionQuadratic, limits::kMaxRestitutionQuadratic);
+  p.cushion_restitution_min = uniform(orders, 0.0, 1.0);
   return p;
 }
 

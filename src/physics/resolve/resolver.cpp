@@ -9,6 +9,7 @@
 #include "physics/resolve/cushion/registry.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"
 #include "physics/resolve/jam/jam.hpp"
+#include "physics/resolve/simultaneous/simultaneous.hpp"
 
 namespace nineball::physics {
 
@@ -74,10 +75,58 @@ void Resolver::ballContact(double t, EngineBalls& balls, std::size_t i, std::siz
     settleJam(t, balls, i, j);
     return;
   }
+  if (p_.frozen == ContactOrder::Simultaneous && frozenContact(t, balls, i, j)) return;
   Kinematics sa = balls.now(i), sb = balls.now(j);
   collideBalls(sa, sb, balls.mass(i), balls.mass(j), p_);
   placeApart(balls, i, j, sa, sb);
   ballEvent(t, balls, i, j, sa.v, sb.v);
+}
+
+// A ball struck while it touches a cushion the strike presses it into ("frozen": "simultaneous"):
+// both normal impulses solved together (strikeFrozen). Only the plain case, one ball on one
+// face; a ball on two faces, or both balls on cushions, are left to the contacts one by one.
+// False when it is not that case.
+bool Resolver::frozenContact(double t, EngineBalls& balls, std::size_t i, std::size_t j) {
+  const Vec2 n = normalized(balls.centre(j) - balls.centre(i));
+  std::size_t held = 0, other = 0, found = 0;
+  Vec2 face;
+  for (auto [x, y, push] : {std::tuple{i, j, n * -1.0}, std::tuple{j, i, n}}) {
+    for (Vec2 f : faces(balls.centre(x))) {
+      if (dot(push, f) >= -1e-9) continue;  // the strike does not press it into this face
+      ++found;
+      held = x;
+      other = y;
+      face = f;
+    }
+  }
+  if (found != 1) return false;
+  const Kinematics sh = balls.now(held);
+  if (dot(sh.v, face) > kMinClosingSpeed) return false;  // already leaving the cushion
+  const FrozenStrike hit =
+      strikeFrozen(balls.now(other), sh, balls.mass(other), balls.mass(held), face, p_);
+  const Kinematics si = held == i ? hit.b : hit.a, sj = held == i ? hit.a : hit.b;
+  placeApart(balls, i, j, si, sj);
+  ballEvent(t, balls, i, j, si.v, sj.v);
+  if (hit.cushion_impulse > 0.0) cushionEvent(t, balls, held, hit.b.v);
+  return true;
+}
+
+// A ball that meets a second cushion within cushion_contact_time of this one ("corner":
+// "simultaneous"): both normals resolved together (intoCorner). False when no second cushion
+// is that near.
+bool Resolver::cornerContact(double t, EngineBalls& balls, std::size_t i, const Kinematics& k,
+                             Vec2 predicted) {
+  const auto second = secondFace(k, predicted, p_.ball_radius, cushions_, p_.cushion_contact_time);
+  if (!second) return false;
+  const CornerBounce hit = intoCorner(k, predicted, *second, balls.mass(i), p_);
+  Kinematics out = hit.k;
+  setOutOfCushion(out, predicted, table_, p_.ball_radius);
+  setOutOfCushion(out, *second, table_, p_.ball_radius);
+  balls.restart(i, out);
+  for (double impulse : hit.impulse) {
+    if (impulse > 0.0) cushionEvent(t, balls, i, out.v);
+  }
+  return true;
 }
 
 // A contact of i and j in a jam: every ball touching them settled at once (see settleJam).
@@ -126,6 +175,10 @@ void Resolver::cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 
     settleOnCushion(t, balls, i, k, predicted, predicted, impulse);
     return;
   }
+  if (p_.corner == ContactOrder::Simultaneous && -dot(k.v, predicted) > kRestingSpeed &&
+      cornerContact(t, balls, i, k, predicted)) {
+    return;
+  }
   const CushionModelDef& model = cushionModel(p_.cushion);
   if (model.bounce && -dot(k.v, predicted) > kRestingSpeed) {
     double impulse = 0.0;
@@ -148,11 +201,15 @@ void Resolver::settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kine
   k = stopPressing(k, -normal, p_);
   setOutOfCushion(k, predicted, table_, p_.ball_radius);
   balls.restart(i, k);
+  cushionEvent(t, balls, i, k.v);
+}
+
+void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v) {
   Event e;
   e.type = EventType::Cushion;
   e.t = t;
   e.a = balls.id(i);
-  e.va = k.v;
+  e.va = v;
   events_.push_back(e);
   logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
 }

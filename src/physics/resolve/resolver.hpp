@@ -73,6 +73,10 @@ class Resolver {
 
  private:
   void ballContact(double t, EngineBalls& balls, std::size_t i, std::size_t j);
+  bool frozenContact(double t, EngineBalls& balls, std::size_t i, std::size_t j);
+  bool cornerContact(double t, EngineBalls& balls, std::size_t i, const Kinematics& k,
+                     Vec2 predicted);
+  void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted);
   void settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k, Vec2 normal,
