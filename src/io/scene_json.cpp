@@ -132,6 +132,34 @@ const ParamField kParamFields[] = {
     {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed), kDampingCloth},
 };
 
+// Parameters only some cushion models read (the registry's `reads`): each refused, naming the
+// models that read it, when the chosen one does not.
+struct CushionParamField {
+  const char* name;
+  double PhysicsParams::*field;
+  Bounds bounds;
+};
+
+const CushionParamField kCushionParamFields[] = {
+    {"cushion_height", &PhysicsParams::cushion_height, Bounds::positive(1.0)},
+    {"cushion_restitution_base", &PhysicsParams::cushion_restitution_base,
+     Bounds::closed(0.0, 1.0)},
+    {"cushion_restitution_slope", &PhysicsParams::cushion_restitution_slope,
+     Bounds::closed(-limits::kMaxRestitutionSlope, limits::kMaxRestitutionSlope)},
+    {"cushion_restitution_quadratic", &PhysicsParams::cushion_restitution_quadratic,
+     Bounds::closed(-limits::kMaxRestitutionQuadratic, limits::kMaxRestitutionQuadratic)},
+    {"cushion_restitution_min", &PhysicsParams::cushion_restitution_min, Bounds::closed(0.0, 1.0)},
+};
+
+// The contact orders, each a name of "physics" (sequential, simultaneous).
+struct OrderField {
+  const char* name;
+  ContactOrder PhysicsParams::*field;
+};
+
+const OrderField kOrderFields[] = {{"frozen", &PhysicsParams::frozen},
+                                   {"corner", &PhysicsParams::corner}};
+
 // What reads a parameter, for the message that refuses one the chosen cloth does not read.
 std::string clothsUsing(unsigned used_by) {
   std::string out;
@@ -201,10 +229,17 @@ nlohmann::ordered_json physicsToJson(const PhysicsParams& p) {
         {"a", p.ball_friction.a}, {"b", p.ball_friction.b}, {"c", p.ball_friction.c}};
   }
   out["cushion"] = p.cushion.name();
-  if (p.cushion.reads("cushion_height")) out["cushion_height"] = p.cushion_height;
+  for (const CushionParamField& f : kCushionParamFields) {
+    if (p.cushion.reads(f.name)) out[f.name] = p.*(f.field);
+  }
+  // The contact orders appear where they differ from one contact after the other.
+  for (const OrderField& f : kOrderFields) {
+    if (p.*(f.field) != ContactOrder::Sequential) out[f.name] = contactOrderName(p.*(f.field));
+  }
+  if (p.corner == ContactOrder::Simultaneous) out["cushion_contact_time"] = p.cushion_contact_time;
   const unsigned cloth = 1u << static_cast<unsigned>(p.cloth);
   for (const ParamField& f : kParamFields) {
-    if (f.used_by & cloth) out[f.name] = p.*(f.field);
+    if ((f.used_by & cloth) && !p.cushion.ignores(f.name)) out[f.name] = p.*(f.field);
   }
   return out;
 }
@@ -246,27 +281,55 @@ PhysicsParams parsePhysics(const json& v) {
                              oneOf(CushionModel::names()).c_str());
       continue;
     }
-    if (key == "cushion_height") {
-      p.cushion_height = number(item.value(), field_path, Bounds::positive(1.0));
+    const auto* cf = std::find_if(std::begin(kCushionParamFields), std::end(kCushionParamFields),
+                                  [&](const CushionParamField& f) { return key == f.name; });
+    if (cf != std::end(kCushionParamFields)) {
+      p.*(cf->field) = number(item.value(), field_path, cf->bounds);
+      continue;
+    }
+    const auto* of = std::find_if(std::begin(kOrderFields), std::end(kOrderFields),
+                                  [&](const OrderField& f) { return key == f.name; });
+    if (of != std::end(kOrderFields)) {
+      p.*(of->field) = modelNamed(item.value(), field_path, contactOrderFromName, of->name,
+                                  "\"sequential\" or \"simultaneous\"");
+      continue;
+    }
+    if (key == "cushion_contact_time") {
+      p.cushion_contact_time =
+          number(item.value(), field_path, Bounds::positive(limits::kMaxCushionContactTime));
       continue;
     }
     const auto* f = std::find_if(std::begin(kParamFields), std::end(kParamFields),
                                  [&](const ParamField& pf) { return key == pf.name; });
     if (f == std::end(kParamFields)) {
-      std::string list = "preset, cloth, ball_ball, ball_friction, cushion, cushion_height";
+      std::string list = "preset, cloth, ball_ball, ball_friction, cushion";
+      for (const CushionParamField& c : kCushionParamFields) list += ", " + std::string(c.name);
+      for (const OrderField& o : kOrderFields) list += ", " + std::string(o.name);
+      list += ", cushion_contact_time";
       for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
     p.*(f->field) = number(item.value(), field_path, f->bounds);
   }
-  if (optional(v, "cushion_height")) {
-    if (!p.cushion.reads("cushion_height")) {
-      refuse(member(path, "cushion_height"),
-             std::string("not used by the ") + quote(p.cushion.name()) + " cushion (only by " +
-                 oneOf(modelsReading<CushionModel>("cushion_height")) + ")");
-    }
-    // Its range (between the ball's centre and top) is checkSettings's, with every setting.
-  } else if (optional(v, "ball_radius")) {
+  // Each checked once the cushion is known, wherever "cushion" and "preset" appear. The
+  // nose's range (between the ball's centre and top) is checkSettings's, with every setting.
+  for (const CushionParamField& cf : kCushionParamFields) {
+    if (!optional(v, cf.name) || p.cushion.reads(cf.name)) continue;
+    refuse(member(path, cf.name), std::string("not used by the ") + quote(p.cushion.name()) +
+                                      " cushion (only by " +
+                                      oneOf(modelsReading<CushionModel>(cf.name)) + ")");
+  }
+  for (const ParamField& pf : kParamFields) {
+    if (!optional(v, pf.name) || !p.cushion.ignores(pf.name)) continue;
+    refuse(member(path, pf.name), std::string("not used by the ") + quote(p.cushion.name()) +
+                                      " cushion (its restitution is a function of speed: "
+                                      "cushion_restitution_base, _slope, _quadratic, _min)");
+  }
+  if (optional(v, "cushion_contact_time") && p.corner != ContactOrder::Simultaneous) {
+    refuse(member(path, "cushion_contact_time"),
+           "not used by the \"sequential\" corner (only by \"corner\": \"simultaneous\")");
+  }
+  if (!optional(v, "cushion_height") && optional(v, "ball_radius")) {
     p.cushion_height = 1.27 * p.ball_radius;  // 63.5 % of the diameter, as for the default ball
   }
   if (optional(v, "ball_friction") && !p.ball_ball.reads("ball_friction")) {
