@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -577,6 +578,86 @@ py::object planOf(py::handle scene) {
   return runContract(scene, &planJsonText);
 }
 
+// Recorded shots as JSON text: one dict, a list of them, or the text itself (JSON or JSON
+// Lines), numpy arrays written as lists.
+std::string recordingsText(py::handle shots) {
+  if (py::isinstance<py::str>(shots)) return shots.cast<std::string>();
+  const std::string bad = nonFiniteAt(shots, "shots");
+  if (!bad.empty())
+    throw py::value_error(bad + ": expected a finite number, found NaN or an infinity");
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  return dumps(shots, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
+}
+
+py::object jsonAnswer(const std::variant<std::string, SceneRefusal>& answer) {
+  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
+    throw py::value_error(refused->message);
+  }
+  return py::module_::import("json").attr("loads")(std::get<std::string>(answer));
+}
+
+// What `nineball fit` prints for the shots, a dict per shot.
+py::list fitOf(py::handle shots, int evals, const std::string& objective, std::uint64_t seed,
+               py::handle threads) {
+  if (objective != "full" && objective != "early") {
+    throw py::value_error("objective: expected \"full\" or \"early\", found \"" + objective + "\"");
+  }
+  if (evals < kMinFitEvals) {
+    throw py::value_error("evals: must be >= " + std::to_string(kMinFitEvals));
+  }
+  const std::string text = recordingsText(shots);
+  FitOptions o;
+  o.evals = evals;
+  o.objective = objective == "early" ? FitObjective::Early : FitObjective::Full;
+  o.seed = seed;
+  o.threads = threadCount(threads);
+  std::variant<std::string, SceneRefusal> answer;
+  runInterruptibly([&](const std::atomic<bool>* cancel) {
+    o.cancel = cancel;
+    answer = fitJsonText(text, o);
+  });
+  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
+    throw py::value_error(refused->message);
+  }
+  py::list out;
+  const py::object loads = py::module_::import("json").attr("loads");
+  std::istringstream lines(std::get<std::string>(answer));
+  for (std::string line; std::getline(lines, line);) out.append(loads(line));
+  return out;
+}
+
+// What `nineball calibrate` prints for the shots.
+py::object calibrateOf(py::handle shots, const std::vector<std::string>& params, double holdout,
+                       std::uint64_t seed, int evals, int refit_evals, int candidates,
+                       py::handle threads) {
+  const std::string text = recordingsText(shots);
+  CalibrateRequest r;
+  r.params = params;
+  r.holdout = holdout;
+  r.seed = seed;
+  r.evals = evals;
+  r.refit_evals = refit_evals;
+  r.candidates = candidates;
+  r.threads = threadCount(threads);
+  std::variant<std::string, SceneRefusal> answer;
+  runInterruptibly([&](const std::atomic<bool>* cancel) {
+    r.cancel = cancel;
+    answer = calibrateJsonText(text, r);
+  });
+  return jsonAnswer(answer);
+}
+
+// A scene recorded as a tracker would.
+py::object recordOf(py::handle scene, const std::vector<std::string>& names, double hz,
+                    double noise, double strike, std::uint64_t seed) {
+  Tracker t;
+  t.hz = hz;
+  t.noise = noise;
+  t.strike = strike;
+  t.seed = seed;
+  return jsonAnswer(recordingJsonText(sceneText(scene, ""), names, t));
+}
+
 // A result (or a scene) as JSON text: numpy arrays and numbers as the lists and numbers they
 // hold, so that a result with a trace serialises.
 std::string toJson(py::handle doc) {
@@ -617,6 +698,16 @@ PYBIND11_MODULE(_core, m) {
         "What `nineball plan` prints for the scene: the shot the computer would play.");
   m.def("to_json", &nineball::python::toJson, py::arg("doc"),
         "A result or scene as JSON text, numpy arrays (a trace's) written as lists.");
+  m.def("fit", &nineball::python::fitOf, py::arg("shots"), py::arg("evals"), py::arg("objective"),
+        py::arg("seed"), py::arg("threads"),
+        "What `nineball fit` prints for the recorded shots: a dict per shot.");
+  m.def("calibrate", &nineball::python::calibrateOf, py::arg("shots"), py::arg("params"),
+        py::arg("holdout"), py::arg("seed"), py::arg("evals"), py::arg("refit_evals"),
+        py::arg("candidates"), py::arg("threads"),
+        "What `nineball calibrate` prints for the recorded shots.");
+  m.def("record", &nineball::python::recordOf, py::arg("scene"), py::arg("names"), py::arg("hz"),
+        py::arg("noise"), py::arg("strike"), py::arg("seed"),
+        "The scene recorded as a tracker would: a recorded shot.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
         py::arg("first_index") = 0,
         "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "

@@ -80,7 +80,7 @@ struct ShotFit {
 };
 
 struct FitOptions {
-  int evals = 6000;  ///< simulations per shot (at least kMinFitEvals)
+  int evals = 12000;  ///< simulations per shot (at least kMinFitEvals)
   FitObjective objective = FitObjective::Full;
   std::uint64_t seed = 1;
   int threads = 0;  ///< 0: one per core
@@ -116,8 +116,8 @@ struct CalibrateOptions {
   PhysicsSetter set;
   double holdout = 0.5;  ///< the share of shots kept out of the training, drawn by the seed
   std::uint64_t seed = 1;
-  int evals = 600;        ///< simulations of each shot's first fit
-  int refit_evals = 120;  ///< simulations of each shot's refit under each candidate physics
+  int evals = 6000;       ///< simulations of each shot's first fit
+  int refit_evals = 300;  ///< simulations of each shot's refit under each candidate physics
   int candidates = 60;    ///< physics candidates the search tries
   int threads = 0;
   /// Called with a line of progress (a stage, a candidate and its median).

@@ -1,10 +1,15 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
+#include "nineball/fit.hpp"
 #include "nineball/sim.hpp"
 
 /// The JSON contracts of `nineball sim` (docs/cli.md) for programs that link the library: the
@@ -43,5 +48,34 @@ std::variant<std::string, SceneRefusal> matchJsonText(std::string_view text);
 /// "level"; docs/cli.md), as compact JSON text: the shot the computer would play, as
 /// intended. Or why the scene is refused.
 std::variant<std::string, SceneRefusal> planJsonText(std::string_view text);
+
+/// What `nineball fit` prints for the recorded shots in `text` (one object, an array, or JSON
+/// Lines; docs/cli.md): one JSON line per shot, in order. Or why the shots are refused.
+std::variant<std::string, SceneRefusal> fitJsonText(std::string_view text,
+                                                    const FitOptions& options);
+
+/// What `nineball calibrate` is asked for: the parameters by name and the search's settings.
+struct CalibrateRequest {
+  std::vector<std::string> params;
+  double holdout = 0.5;
+  std::uint64_t seed = 1;
+  int evals = 6000;
+  int refit_evals = 300;
+  int candidates = 60;
+  int threads = 0;
+  std::function<void(const std::string&)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+/// What `nineball calibrate` prints for the recorded shots in `text` (one JSON object). Or why
+/// they, or the parameters, are refused.
+std::variant<std::string, SceneRefusal> calibrateJsonText(std::string_view text,
+                                                          const CalibrateRequest& request);
+
+/// The scene `text` (with a shot) recorded as `tracker` would (recordScene), as a recorded
+/// shot's JSON; names[i] names scene ball i. Or why the scene is refused.
+std::variant<std::string, SceneRefusal> recordingJsonText(std::string_view scene,
+                                                          const std::vector<std::string>& names,
+                                                          const Tracker& tracker);
 
 }  // namespace nineball

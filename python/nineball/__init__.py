@@ -17,6 +17,9 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
 - match(script): a rack played from a match script, computer players included.
 - preset(name) / PRESETS: the physics presets ("real", "paper", "carom") with every parameter.
+- record(scene, names=None, ...): a scene as a tracker would record it (a recorded shot).
+- fit(shots, evals=12000, ...): the shot that best reproduces each recorded shot.
+- calibrate(shots, params, holdout=0.5, ...): physics parameters fitted to recorded shots.
 - Result: what the simulations return, a dict that keeps its run's physics (.physics).
 - nineball.dask.simulate(client, scenes): a sweep on a Dask cluster (optional).
 
@@ -59,7 +62,7 @@ TABLES = _core.TABLES
 
 __all__ = ["TABLES", "simulate", "simulate_many", "continue_from", "to_json", "state_at", "iter_simulate",
            "simulate_batch", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
-           "Result",
+           "Result", "record", "fit", "calibrate",
            "__version__"]
 
 #: A batch at least this long shows a progress bar when tqdm is installed (progress=None).
@@ -344,3 +347,60 @@ def match(script: Scene) -> Dict[str, Any]:
     ``partial``. A bad script or turn raises ValueError naming it; Ctrl-C stops it.
     """
     return _core.match(script)
+
+
+#: Recorded shots: one dict, a list of them, or their JSON (or JSON Lines) text.
+Shots = Union[Mapping[str, Any], Iterable[Mapping[str, Any]], str]
+
+
+def _shots(shots: Shots) -> Any:
+    if isinstance(shots, (str, Mapping)):
+        return shots
+    return list(shots)
+
+
+def record(scene: Scene, names: Optional[List[str]] = None, hz: float = 50.0,
+           noise: float = 0.005, strike: float = 0.5, seed: int = 1) -> Dict[str, Any]:
+    """The scene (with a shot) as a tracker would record it: a recorded shot for fit.
+
+    Every ball at every frame (``hz`` per second) from 0 to the end of the run, read off the
+    run exactly, with Gaussian ``noise`` (m) on each coordinate from ``seed``, clamped at the
+    cushion lines; the shot struck at ``strike`` s on the recording's clock. ``names[i]``
+    names scene ball i (default: the ids as strings). For trying the workflow and testing it.
+    """
+    if names is None:
+        parsed = json.loads(scene) if isinstance(scene, str) else scene
+        names = [str(b["id"]) for b in parsed["balls"]]
+    return _core.record(scene, list(names), float(hz), float(noise), float(strike), int(seed))
+
+
+def fit(shots: Shots, evals: int = 12000, objective: str = "full", seed: int = 1,
+        threads: int = 0) -> List[Dict[str, Any]]:
+    """The shot that best reproduces each recorded shot, as ``nineball fit`` prints it.
+
+    Each answer: ``id``, ``scene`` (a complete scene: simulate it to see the fit), ``names``
+    (scene ball id as a string -> recorded name; the cue ball is "0"), ``strike_time`` (the
+    recording's time of the strike), ``rmse_m`` (``full`` and ``early``) and ``evals``.
+    ``objective``: "full" (every sample) or "early" (4 s after the strike, the cue ball
+    weighted 1.5, each sample by 1/(1 + t)). Deterministic for a seed; both cores used
+    (``threads``: 0 for one per core). A bad recording raises ValueError naming it.
+    """
+    return _core.fit(_shots(shots), int(evals), objective, int(seed), threads)
+
+
+def calibrate(shots: Shots, params: Iterable[str], holdout: float = 0.5, seed: int = 1,
+              evals: int = 6000, refit_evals: int = 300, candidates: int = 60,
+              threads: int = 0) -> Dict[str, Any]:
+    """Physics parameters calibrated to recorded shots of one table, as ``nineball calibrate``
+    prints it.
+
+    ``params``: the physics parameters searched, by name (any number the scene's physics
+    takes, e.g. "rolling_friction", "cushion_restitution", "ball_friction.a"). A share
+    ``holdout`` of the shots (drawn by ``seed``) is kept out of the training and measured
+    under the result. Returns ``physics`` (ready for a scene), ``train`` and ``holdout``
+    (``median_rmse_m``, ``shots``) and ``per_shot`` (each shot's fit, with ``set``).
+    """
+    if isinstance(params, str):
+        params = params.split(",")
+    return _core.calibrate(_shots(shots), list(params), float(holdout), int(seed), int(evals),
+                           int(refit_evals), int(candidates), threads)

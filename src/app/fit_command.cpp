@@ -3,36 +3,17 @@
 #include <chrono>
 #include <istream>
 #include <ostream>
-#include <set>
 #include <sstream>
 
 #include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
-#include "io/recording_json.hpp"
-#include "io/scene_parts.hpp"
-#include "nineball/fit.hpp"
+#include "nineball/json.hpp"
 
 namespace nineball::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::optional<std::vector<Recording>> readShots(const std::string& path, std::istream& in,
-                                                std::ostream& err, const std::string& prefix) {
-  std::string why;
-  const auto text = readInput(path, in, why, limits::kMaxRecordingBytes);
-  if (!text) {
-    err << prefix << why << '\n';
-    return std::nullopt;
-  }
-  auto parsed = io::parseRecordings(*text);
-  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
-    err << prefix << refused->message << '\n';
-    return std::nullopt;
-  }
-  return std::get<std::vector<Recording>>(parsed);
-}
 
 // A line on stderr at most once a second, and at the end, for runs long enough to wait on.
 class Progress {
@@ -118,60 +99,56 @@ CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
 int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
            std::ostream& err) {
   const std::string prefix = "nineball fit: " + shownPath(options.path) + ": ";
-  const auto shots = readShots(options.path, in, err, prefix);
-  if (!shots) return kExitBadInput;
+  std::string why;
+  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
+  if (!text) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
+  }
   FitOptions o;
   o.evals = options.evals;
   o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
   o.seed = options.seed;
   o.threads = options.threads;
   Progress progress(err, "nineball fit: ");
-  if (shots->size() > 1) o.progress = std::ref(progress);
-  for (const ShotFit& f : fitShots(*shots, o)) out << io::fitToJson(f).dump() << '\n';
-  out << std::flush;
+  o.progress = [&](std::size_t done, std::size_t total) {
+    if (total > 1) progress(done, total);
+  };
+  const auto answer = fitJsonText(*text, o);
+  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
+    err << prefix << refused->message << '\n';
+    return kExitBadInput;
+  }
+  out << std::get<std::string>(answer) << std::flush;
   return out ? kExitOk : kExitInternal;
 }
 
 int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
                  std::ostream& err) {
-  const std::string prefix = "nineball calibrate: ";
-  const std::vector<std::string> names = splitNames(options.params);
-  std::set<std::string> seen;
-  for (const std::string& n : names) {
-    if (n.empty() || !seen.insert(n).second) {
-      err << prefix << "--params: " << (n.empty() ? "an empty name" : "\"" + n + "\" twice")
-          << " in \"" << options.params << "\"\n";
-      return kExitBadInput;
-    }
+  const std::string prefix = "nineball calibrate: " + shownPath(options.path) + ": ";
+  std::string why;
+  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
+  if (!text) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
   }
-  const auto shots = readShots(options.path, in, err, prefix + shownPath(options.path) + ": ");
-  if (!shots) return kExitBadInput;
-  const std::string physics = io::physicsToJson(shots->front().physics).dump();
-  for (std::size_t i = 1; i < shots->size(); ++i) {
-    if (io::physicsToJson((*shots)[i].physics).dump() != physics) {
-      err << prefix << "shot " << i + 1
-          << ": physics differs from the first shot's: calibrate one table's shots at a time\n";
-      return kExitBadInput;
-    }
-  }
-  auto start = io::physicsValues(shots->front().physics, names);
-  if (const auto* refused = std::get_if<io::ParseError>(&start)) {
+  CalibrateRequest r;
+  r.params = splitNames(options.params);
+  r.holdout = options.holdout;
+  r.seed = options.seed;
+  r.evals = options.evals;
+  r.refit_evals = options.refit_evals;
+  r.candidates = options.candidates;
+  r.threads = options.threads;
+  r.progress = [&](const std::string& line) {
+    err << "nineball calibrate: " << line << '\n' << std::flush;
+  };
+  const auto answer = calibrateJsonText(*text, r);
+  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
     err << prefix << refused->message << '\n';
     return kExitBadInput;
   }
-  CalibrateOptions o;
-  o.params = names;
-  o.start = std::get<std::vector<double>>(start);
-  o.set = io::physicsSetter(names);
-  o.holdout = options.holdout;
-  o.seed = options.seed;
-  o.evals = options.evals;
-  o.refit_evals = options.refit_evals;
-  o.candidates = options.candidates;
-  o.threads = options.threads;
-  o.progress = [&](const std::string& line) { err << prefix << line << '\n' << std::flush; };
-  const Calibration c = calibrate(*shots, o);
-  out << io::calibrationToJson(c, *shots).dump(2) << '\n' << std::flush;
+  out << std::get<std::string>(answer) << std::flush;
   return out ? kExitOk : kExitInternal;
 }
 

@@ -10,7 +10,7 @@ namespace nineball::app {
 /// Options of `nineball fit`.
 struct FitCommandOptions {
   std::string path;  ///< recorded shots: a file, or "-" for standard input
-  int evals = 6000;
+  int evals = 12000;
   std::string objective = "full";
   std::uint64_t seed = 1;
   int threads = 0;
@@ -22,8 +22,8 @@ struct CalibrateCommandOptions {
   std::string params;  ///< comma-separated physics parameters
   double holdout = 0.5;
   std::uint64_t seed = 1;
-  int evals = 3000;
-  int refit_evals = 150;
+  int evals = 6000;
+  int refit_evals = 300;
   int candidates = 60;
   int threads = 0;
 };

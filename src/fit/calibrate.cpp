@@ -20,7 +20,7 @@ constexpr double kFirstStep = 0.1;
 constexpr double kStepAtZero = 0.01;
 // The searches over the physics: the second starts from shots refitted under the first's
 // best physics, so that no shot is held to where the recordings' own physics put it.
-constexpr int kRounds = 2;
+constexpr int kRounds = 3;
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;

@@ -32,6 +32,8 @@ constexpr double kCueShare = 0.05;
 constexpr double kTipShare = 0.025;    // each of the nine starting tips
 constexpr double kWindowShare = 0.11;  // each longer window, shared by the shots it keeps
 constexpr double kLevelShare = 0.6;    // of what is left: the places, the cue level
+// Searches whose errors lie within this factor of the best go on to the next window.
+constexpr double kClose = 1.2;
 
 class Search {
  public:
@@ -110,6 +112,30 @@ Window after(const RecordedShot& s, double seconds) {
   return w;
 }
 
+// The same shot twice: within a fine step of each other in every variable of the shot.
+bool alike(const Found& a, const Found& b) {
+  for (int i = 0; i < kVariables; ++i) {
+    if (std::abs(a.x[i] - b.x[i]) > kFineStep[i]) return false;
+  }
+  return true;
+}
+
+// Of ranked searches, those worth a longer window: no two alike, and every one whose error
+// is within kClose of the best (a window too short to tell them apart), at least half.
+void keepTheBest(std::vector<Found>& ranked) {
+  std::vector<Found> kept;
+  for (const Found& f : ranked) {
+    bool seen = false;
+    for (const Found& k : kept) seen = seen || alike(f, k);
+    if (!seen) kept.push_back(f);
+  }
+  const std::size_t half = (kept.size() + 1) / 2;
+  std::size_t n = 0;
+  while (n < kept.size() && (n < half || kept[n].error <= kClose * kept.front().error)) ++n;
+  kept.resize(n);
+  ranked = kept;
+}
+
 int share(int budget, double part) {
   return std::max(1, static_cast<int>(std::lround(budget * part)));
 }
@@ -140,7 +166,7 @@ Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitOb
   };
   rank(starts);
   for (double seconds : kLongerWindows) {
-    starts.resize((starts.size() + 1) / 2);
+    keepTheBest(starts);
     const int each = share(evals, kWindowShare) / static_cast<int>(starts.size());
     const Window w = std::isinf(seconds) ? wholeShot(objective) : after(s, seconds);
     for (Found& f : starts) f = search.over(kLevel, f.x, kFineStep, w, each);

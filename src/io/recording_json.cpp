@@ -140,6 +140,18 @@ std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_vie
   return shots;
 }
 
+ordered_json recordingToJson(const Recording& r) {
+  ordered_json j;
+  j["id"] = r.id;
+  j["table"] = tableToJson(r.table);
+  j["physics"] = physicsToJson(r.physics);
+  ordered_json balls = ordered_json::object();
+  for (const RecordedPath& b : r.balls) balls[b.name] = {{"t", b.t}, {"x", b.x}, {"y", b.y}};
+  j["balls"] = balls;
+  if (!r.cue_ball.empty()) j["cue_ball"] = r.cue_ball;
+  return j;
+}
+
 ordered_json sceneToJson(const Scene& scene) {
   ordered_json j;
   j["table"] = tableToJson(scene.table);

@@ -20,6 +20,9 @@ std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_vie
 /// One recorded shot from its object.
 Recording recordingFromJson(const nlohmann::json& v);
 
+/// A recorded shot as parseRecordings reads it.
+nlohmann::ordered_json recordingToJson(const Recording& r);
+
 /// A scene as `nineball sim` reads it: table, physics, balls, shot, step.
 nlohmann::ordered_json sceneToJson(const Scene& scene);
 
