@@ -610,3 +610,50 @@ def test_the_worked_example_in_the_docs_is_the_script_ctest_runs():
     assert len(shown) == 5
     for title, code in shown:
         assert script.get(title) == code.strip(), title
+
+
+def carom_scene(heading_deg=19.0, speed=3.0, tip=(0.2, 0.1)):
+    return {"table": "carom", "physics": {"preset": "carom"},
+            "balls": [{"id": 0, "x": -0.6, "y": -0.25}, {"id": 1, "x": -0.15, "y": -0.1},
+                      {"id": 2, "x": 0.9, "y": 0.45}],
+            "shot": {"heading_deg": heading_deg, "speed": speed, "tip": list(tip)},
+            "step": {"engine": "reference"}}
+
+
+def test_fit_is_what_the_command_line_prints_and_finds_the_shot(tmp_path):
+    shot = nineball.record(carom_scene(), ["white", "yellow", "red"], strike=0.83)
+    assert sorted(shot["balls"]) == ["red", "white", "yellow"]
+    assert shot["balls"]["white"]["t"][0] == 0.0
+    got = nineball.fit(shot, evals=3000)[0]
+    path = tmp_path / "shot.json"
+    path.write_text(json.dumps(shot))
+    out = subprocess.run([BINARY, "fit", str(path), "--evals", "3000"], check=True,
+                         capture_output=True, text=True).stdout
+    assert json.loads(out) == got
+    assert list(got) == ["id", "scene", "names", "strike_time", "rmse_m", "evals"]
+    # The printed scene simulates (it is a complete scene of nineball sim).
+    assert nineball.simulate(got["scene"])["end"] == "rest"
+    assert abs(got["strike_time"] - 0.83) < 0.01
+
+
+def test_fit_and_calibrate_refuse_bad_input_by_name():
+    shot = nineball.record(carom_scene(), ["white", "yellow", "red"])
+    broken = json.loads(json.dumps(shot))
+    broken["balls"]["red"]["x"] = broken["balls"]["red"]["x"][:-1]
+    with pytest.raises(ValueError, match="balls.red"):
+        nineball.fit(broken, evals=100)
+    with pytest.raises(ValueError, match="objective"):
+        nineball.fit(shot, objective="late")
+    with pytest.raises(ValueError, match="nonsense"):
+        nineball.calibrate([shot], ["nonsense"])
+
+
+def test_calibrate_returns_physics_a_scene_takes():
+    shots = [nineball.record(carom_scene(h, v), ["white", "yellow", "red"], seed=k)
+             for k, (h, v) in enumerate([(19.0, 3.0), (12.0, 2.5), (25.0, 3.5)])]
+    got = nineball.calibrate(shots, "rolling_friction", holdout=0.0, evals=300, refit_evals=20,
+                             candidates=4)
+    assert list(got) == ["physics", "train", "holdout", "per_shot"]
+    assert got["train"]["shots"] == 3 and got["holdout"]["shots"] == 0
+    assert got["holdout"]["median_rmse_m"] is None
+    assert nineball.simulate(dict(carom_scene(), physics=got["physics"]))["end"] == "rest"
