@@ -57,6 +57,16 @@ class Calibrator {
     found_.resize(shots.size());
   }
 
+  // Every shot fitted afresh under `p` as well, the better fit kept: a shot refitted only from
+  // where other physics left it may sit in a false minimum the new physics has moved.
+  void fitAfresh(const PhysicsParams& p, int evals) {
+    parallelFor(found_.size(), threads_, [&](std::size_t i) {
+      const fit::Found fresh =
+          fit::searchShot(read_[i], p, evals, FitObjective::Full, o_.seed + i, o_.cancel);
+      if (fresh.error < found_[i].error) found_[i] = fresh;
+    });
+  }
+
   void fitAll(const PhysicsParams& p, const std::vector<std::size_t>& which, int evals,
               bool from_scratch) {
     parallelFor(which.size(), threads_, [&](std::size_t k) {
@@ -148,6 +158,8 @@ Calibration calibrate(const std::vector<Recording>& shots, const CalibrateOption
     calibrator.fitAll(physics, every, o.evals / 2, false);
     for (double& s : step) s *= 0.5;
   }
+  say(o, "fitting every shot afresh under the calibrated physics");
+  calibrator.fitAfresh(physics, o.evals);
   c.values = values;
   c.physics = physics;
   for (std::size_t i = 0; i < shots.size(); ++i) c.fits.push_back(calibrator.fitOf(i, physics));

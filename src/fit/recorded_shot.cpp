@@ -60,6 +60,8 @@ namespace {
 constexpr double kMoved = 0.02;
 // The cue ball's first samples in motion that give the first guess of its line (s).
 constexpr double kEarlyWindow = 0.1;
+// A turn this sharp between frames is a contact (rad).
+constexpr double kTurn = 30.0 * kPi / 180.0;
 // Off its early line by this much, the cue ball has met something (m).
 constexpr double kTurned = 0.03;
 
@@ -83,15 +85,21 @@ struct Onset {
   bool from_start = false;
 };
 
+// A ball moving from the first sample: the median of its first three samples lies kMoved
+// from that of the next three (medians, so that one sample of noise moves neither).
+bool movingFromStart(const RecordedPath& b) {
+  if (b.t.size() < 6) return length(at(b, b.t.size() - 1) - at(b, 0)) > kMoved;
+  return length(medianOf(b, 3, 6) - medianOf(b, 0, 3)) > kMoved;
+}
+
 Onset onsetOf(const RecordedPath& b) {
   const std::size_t n = b.t.size();
+  if (movingFromStart(b)) return {0, true};
   const Vec2 first = medianOf(b, 0, std::min<std::size_t>(5, n));
-  for (std::size_t i = 0; i < std::min<std::size_t>(5, n); ++i) {
-    if (length(at(b, i) - first) > kMoved) return {0, true};
-  }
+  auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - first) > kMoved; };
+  // Three samples running, each kMoved away: noise alone all but never does that.
   for (std::size_t i = 0; i < n; ++i) {
-    const bool far = length(at(b, i) - first) > kMoved;
-    if (far && (i + 1 == n || length(at(b, i + 1) - first) > kMoved)) return {i, false};
+    if (far(i) && far(i + 1) && far(i + 2)) return {i, false};
   }
   return {n, false};
 }
@@ -132,6 +140,15 @@ Line lineThrough(const RecordedPath& b, std::size_t from, std::size_t to) {
 bool nearCushion(Vec2 p, const TableDef& table, double radius) {
   const double margin = radius + 0.01;
   return std::abs(p.x) > table.length / 2.0 - margin || std::abs(p.y) > table.width / 2.0 - margin;
+}
+
+// Between samples i - 2, i - 1 and i the ball turns by more than kTurn: a cushion or a ball
+// met between frames (steps too short to tell a turn from noise do not count).
+bool turns(const RecordedPath& b, std::size_t i) {
+  const Vec2 before = at(b, i - 1) - at(b, i - 2);
+  const Vec2 step = at(b, i) - at(b, i - 1);
+  if (length(before) < kMoved || length(step) < kMoved) return false;
+  return dot(before, step) < std::cos(kTurn) * length(before) * length(step);
 }
 
 std::size_t cueIndex(const Recording& r, const std::vector<Onset>& onsets) {
@@ -177,16 +194,23 @@ RecordedShot readRecording(const Recording& r) {
   const std::size_t n = c.t.size();
   const std::size_t start = std::min(o.index, n - 2);
   s.cue_onset = c.t[start];
+  // The early line ends before a cushion: a ball struck near one meets it within a frame or two.
   std::size_t stop = start + 2;
-  while (stop < n && c.t[stop] <= s.cue_onset + kEarlyWindow) ++stop;
+  while (stop < n && c.t[stop] <= s.cue_onset + kEarlyWindow &&
+         !nearCushion(at(c, stop), r.table, r.physics.ball_radius) && !turns(c, stop)) {
+    ++stop;
+  }
   const Line line = lineThrough(c, start, stop);
-  const double speed = std::max(length(line.v), 0.05);
+  // Its first step in motion bounds the speed from below: a line through a turn is slower.
+  const double first_step = length(at(c, start + 1) - at(c, start)) / (c.t[start + 1] - c.t[start]);
+  const double speed = std::max({length(line.v), first_step, 0.05});
   const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
   const double sample = c.t[start + 1] - c.t[start];
   if (o.from_start) {
     s.rest[0] = line.a - line.v * (line.tm - c.t[0] + 0.5 * sample);
   }
   s.strike = line.tm + dot(s.rest[0] - line.a, dir) / speed;
+  s.cue_first_move = length(at(c, start) - s.rest[0]);
   s.latest = s.cue_onset;
   s.earliest = s.latest - std::max(0.3, 3.0 * sample);
   s.strike = std::clamp(s.strike, s.earliest, s.latest);

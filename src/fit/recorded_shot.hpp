@@ -20,6 +20,8 @@ struct RecordedShot {
   /// moving, a turn, a cushion), both from the samples.
   double cue_onset = 0.0;
   double first_event = 0.0;
+  /// The cue ball's distance from where it stood at its first sample in motion (m).
+  double cue_first_move = 0.0;
   /// The first guess: the strike's time, heading (rad) and speed (m/s).
   double strike = 0.0;
   double heading = 0.0;

@@ -18,6 +18,15 @@ const Variables kCoarseStep{1.0 * kDegree, 0.05, 0.15, 0.15, 3.0 * kDegree, 0.01
 // ... and a fitted shot about this far.
 const Variables kFineStep{0.2 * kDegree, 0.01, 0.04, 0.04, 1.0 * kDegree, 0.003};
 
+// The scan of the cue ball's heading: every 5 degrees at six speeds about the first guess,
+// the best kScanKept at least kScanApart apart searched on, over the cue ball up to kCueWindow
+// past its first recorded event.
+constexpr int kScanHeadings = 72;
+constexpr double kScanSpeeds[] = {0.5, 0.7, 1.0, 1.4, 2.0, 2.8};
+constexpr std::size_t kScanKept = 3;
+constexpr double kScanApart = 4.0 * kPi / 180.0;
+constexpr double kCueWindow = 0.1;
+
 // Tips the search starts from: the centre and eight about it.
 constexpr double kTipStart = 0.3;
 
@@ -145,10 +154,45 @@ int share(int budget, double part) {
 Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitObjective objective,
                  std::uint64_t seed, const std::atomic<bool>* cancel) {
   Search search(s, p, evals, cancel);
-  Variables x{s.heading, s.speed, 0.0, 0.0, 0.0, s.strike};
-  Window cue = after(s, -1e-9);
+  // The first guess from the samples is wrong where the cue ball met a cushion within a frame
+  // or two: headings all round it, at six speeds, judged on the cue ball alone a little past
+  // its first event, and the best few searched there.
+  Window cue = after(s, kCueWindow);
   cue.cue_only = true;
-  x = search.over({kHeading, kSpeed, kStrike}, x, kCoarseStep, cue, share(evals, kCueShare)).x;
+  std::vector<Found> scanned;
+  for (int k = 0; k < kScanHeadings; ++k) {
+    for (double scale : kScanSpeeds) {
+      // Struck when this speed would have carried the ball to its first sample in motion.
+      const double speed = s.speed * scale;
+      Variables x{s.heading + 2.0 * kPi * k / kScanHeadings,
+                  speed,
+                  0.0,
+                  0.0,
+                  0.0,
+                  std::clamp(s.cue_onset - s.cue_first_move / speed, s.earliest, s.latest)};
+      scanned.push_back({x, search.error(x, cue), 1});
+    }
+  }
+  std::stable_sort(scanned.begin(), scanned.end(),
+                   [](const Found& a, const Found& b) { return a.error < b.error; });
+  std::vector<Found> cues;
+  for (const Found& f : scanned) {
+    bool near = false;
+    for (const Found& c : cues) {
+      near =
+          near || std::abs(std::remainder(f.x[kHeading] - c.x[kHeading], 2.0 * kPi)) < kScanApart;
+    }
+    if (!near) cues.push_back(f);
+    if (cues.size() == kScanKept) break;
+  }
+  Found guess;
+  guess.error = std::numeric_limits<double>::infinity();
+  for (const Found& c : cues) {
+    const Found f = search.over({kHeading, kSpeed, kStrike}, c.x, kCoarseStep, cue,
+                                share(evals, kCueShare) / static_cast<int>(kScanKept));
+    if (f.error < guess.error) guess = f;
+  }
+  const Variables x = guess.x;
 
   std::vector<Found> starts;
   for (double side : {0.0, -kTipStart, kTipStart}) {
@@ -216,6 +260,8 @@ ShotFit shotFitOf(const RecordedShot& s, const PhysicsParams& p, const Found& f)
   fit.scene = sceneOf(s, p, legal(s, p, f.x), wholeShot(FitObjective::Full));
   fit.scene.until.reset();
   fit.scene.trace.reset();
+  // Headings searched past a half turn read as the same direction in (-180, 180] degrees.
+  fit.scene.shot->heading_rad = -std::remainder(-fit.scene.shot->heading_rad, 2.0 * kPi);
   for (std::size_t k : s.order) fit.names.push_back(s.recording->balls[k].name);
   fit.strike_time = f.x[kStrike];
   fit.rmse = fitErrors(*s.recording, fit.scene, fit.names, fit.strike_time);

@@ -78,20 +78,23 @@ std::variant<std::vector<Recording>, ParseError> shotsOf(const json& doc) {
   return shots;
 }
 
-bool jsonLines(std::string_view text) {
-  // More than one line that holds something: one shot a line.
-  int lines = 0;
+// The first line that holds something, when it is a whole JSON object by itself: the text is
+// JSON Lines (a document spread over lines, pretty-printed, starts with a line that is not).
+bool firstLineIsAnObject(std::string_view text) {
   std::size_t start = 0;
   while (start < text.size()) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
-    if (text.substr(start, end - start).find_first_not_of(" \t\r") != std::string_view::npos) {
-      ++lines;
-    }
+    const std::string_view line = text.substr(start, end - start);
     start = end + 1;
+    if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    try {
+      return readJson(line).is_object();
+    } catch (const ParseError&) {
+      return false;
+    }
   }
-  return lines > 1 && text.find_first_not_of(" \t\r\n") != std::string_view::npos &&
-         text[text.find_first_not_of(" \t\r\n")] == '{';
+  return false;
 }
 
 }  // namespace
@@ -116,12 +119,11 @@ Recording recordingFromJson(const json& v) {
 }
 
 std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text) {
-  if (!jsonLines(text)) {
-    try {
-      return shotsOf(readJson(text));
-    } catch (const ParseError& e) {
-      return e;
-    }
+  try {
+    return shotsOf(readJson(text));
+  } catch (const ParseError& e) {
+    // One document that does not parse whole, unless it is one shot a line.
+    if (!firstLineIsAnObject(text)) return e;
   }
   std::vector<Recording> shots;
   std::size_t start = 0;

@@ -119,6 +119,27 @@ TEST(FitCli, RefusesBadRecordingsByName) {
   EXPECT_EQ(r.status, 2);
 }
 
+TEST(FitCli, ReadsOneShotPrettyPrintedAnArrayOfThemAndJsonLines) {
+  const nlohmann::json a = io::recordingToJson(recorded(19.0, 3.0, 1));
+  const nlohmann::json b = io::recordingToJson(recorded(25.0, 2.0, 2));
+  auto lines = [](const std::string& document) {
+    TempFile file(document);
+    const CliOutcome r = runNineball("fit " + shellQuoted(file.path()) + " --evals 60");
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::size_t n = 0;
+    for (char c : r.out) n += c == '\n';
+    return n;
+  };
+  EXPECT_EQ(lines(a.dump(2)), 1u);
+  EXPECT_EQ(lines(nlohmann::json::array({a, b}).dump(2)), 2u);
+  EXPECT_EQ(lines(a.dump() + "\n\n" + b.dump() + "\n"), 2u);
+  // A bad line of JSON Lines is named by its number.
+  TempFile file(a.dump() + "\n{\"balls\": }\n");
+  const CliOutcome r = runNineball("fit " + shellQuoted(file.path()) + " --evals 60");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("line 2:"), std::string::npos) << r.err;
+}
+
 TEST(CalibrateCli, PrintsThePhysicsAndTheMediansOfBothSets) {
   const std::vector<Recording> shots{recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2),
                                      recorded(12.0, 2.5, 3)};
