@@ -117,7 +117,7 @@ struct CalibrateOptions {
   double holdout = 0.5;  ///< the share of shots kept out of the training, drawn by the seed
   std::uint64_t seed = 1;
   int evals = 6000;       ///< simulations of each shot's first fit
-  int refit_evals = 300;  ///< simulations of each shot's refit under each candidate physics
+  int refit_evals = 900;  ///< simulations of each shot's refit under each candidate physics
   int candidates = 60;    ///< physics candidates the search tries
   int threads = 0;
   /// Called with a line of progress (a stage, a candidate and its median).

@@ -60,7 +60,7 @@ struct CalibrateRequest {
   double holdout = 0.5;
   std::uint64_t seed = 1;
   int evals = 6000;
-  int refit_evals = 300;
+  int refit_evals = 900;
   int candidates = 60;
   int threads = 0;
   std::function<void(const std::string&)> progress;

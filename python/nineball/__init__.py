@@ -389,7 +389,7 @@ def fit(shots: Shots, evals: int = 12000, objective: str = "full", seed: int = 1
 
 
 def calibrate(shots: Shots, params: Iterable[str], holdout: float = 0.5, seed: int = 1,
-              evals: int = 6000, refit_evals: int = 300, candidates: int = 60,
+              evals: int = 6000, refit_evals: int = 900, candidates: int = 60,
               threads: int = 0) -> Dict[str, Any]:
     """Physics parameters calibrated to recorded shots of one table, as ``nineball calibrate``
     prints it.

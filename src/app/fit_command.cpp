@@ -1,6 +1,7 @@
 #include "app/fit_command.hpp"
 
 #include <chrono>
+#include <functional>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -74,37 +75,52 @@ CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
   cmd->add_option("--params", options.params,
                   "Physics parameters to calibrate, comma-separated (rolling_friction,...)")
       ->required();
-  cmd->add_option("--holdout", options.holdout, "Share of the shots kept out of the training")
+  cmd->add_option("--holdout", options.settings.holdout, "Share of the shots kept out of the training")
       ->check(CLI::Range(0.0, 0.9))
       ->capture_default_str();
-  cmd->add_option("--seed", options.seed, "Seed of the held-out draw and the searches")
+  cmd->add_option("--seed", options.settings.seed, "Seed of the held-out draw and the searches")
       ->check(seedCheck())
       ->capture_default_str();
-  cmd->add_option("--evals", options.evals, "Simulations of each shot's first fit")
+  cmd->add_option("--evals", options.settings.evals, "Simulations of each shot's first fit")
       ->check(CLI::Range(kMinFitEvals, 1000000))
       ->capture_default_str();
-  cmd->add_option("--refit-evals", options.refit_evals,
+  cmd->add_option("--refit-evals", options.settings.refit_evals,
                   "Simulations of each training shot's refit under each candidate physics")
       ->check(CLI::Range(10, 100000))
       ->capture_default_str();
-  cmd->add_option("--candidates", options.candidates, "Physics candidates the search tries")
+  cmd->add_option("--candidates", options.settings.candidates, "Physics candidates the search tries")
       ->check(CLI::Range(2, 10000))
       ->capture_default_str();
-  cmd->add_option("--threads", options.threads, "Threads (0: one per core)")
+  cmd->add_option("--threads", options.settings.threads, "Threads (0: one per core)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
   return cmd;
 }
 
-int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
-           std::ostream& err) {
-  const std::string prefix = "nineball fit: " + shownPath(options.path) + ": ";
+// Reads the shots' text and prints what `answer` makes of it: the JSON on `out`, or a refusal
+// on `err` (kExitBadInput).
+static int answerShots(const std::string& command, const std::string& path, std::istream& in,
+                std::ostream& out, std::ostream& err,
+                const std::function<std::variant<std::string, SceneRefusal>(std::string_view)>&
+                    answer) {
+  const std::string prefix = "nineball " + command + ": " + shownPath(path) + ": ";
   std::string why;
-  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
+  const auto text = readInput(path, in, why, limits::kMaxRecordingBytes);
   if (!text) {
     err << prefix << why << '\n';
     return kExitBadInput;
   }
+  const auto answered = answer(*text);
+  if (const auto* refused = std::get_if<SceneRefusal>(&answered)) {
+    err << prefix << refused->message << '\n';
+    return kExitBadInput;
+  }
+  out << std::get<std::string>(answered) << std::flush;
+  return out ? kExitOk : kExitInternal;
+}
+
+int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
+           std::ostream& err) {
   FitOptions o;
   o.evals = options.evals;
   o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
@@ -114,42 +130,19 @@ int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out
   o.progress = [&](std::size_t done, std::size_t total) {
     if (total > 1) progress(done, total);
   };
-  const auto answer = fitJsonText(*text, o);
-  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
-    err << prefix << refused->message << '\n';
-    return kExitBadInput;
-  }
-  out << std::get<std::string>(answer) << std::flush;
-  return out ? kExitOk : kExitInternal;
+  return answerShots("fit", options.path, in, out, err,
+                     [&](std::string_view text) { return fitJsonText(text, o); });
 }
 
 int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
                  std::ostream& err) {
-  const std::string prefix = "nineball calibrate: " + shownPath(options.path) + ": ";
-  std::string why;
-  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
-  if (!text) {
-    err << prefix << why << '\n';
-    return kExitBadInput;
-  }
-  CalibrateRequest r;
+  CalibrateRequest r = options.settings;
   r.params = splitNames(options.params);
-  r.holdout = options.holdout;
-  r.seed = options.seed;
-  r.evals = options.evals;
-  r.refit_evals = options.refit_evals;
-  r.candidates = options.candidates;
-  r.threads = options.threads;
   r.progress = [&](const std::string& line) {
     err << "nineball calibrate: " << line << '\n' << std::flush;
   };
-  const auto answer = calibrateJsonText(*text, r);
-  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
-    err << prefix << refused->message << '\n';
-    return kExitBadInput;
-  }
-  out << std::get<std::string>(answer) << std::flush;
-  return out ? kExitOk : kExitInternal;
+  return answerShots("calibrate", options.path, in, out, err,
+                     [&](std::string_view text) { return calibrateJsonText(text, r); });
 }
 
 }  // namespace nineball::app

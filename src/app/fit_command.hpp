@@ -5,6 +5,8 @@
 #include <iosfwd>
 #include <string>
 
+#include "nineball/json.hpp"
+
 namespace nineball::app {
 
 /// Options of `nineball fit`.
@@ -20,12 +22,7 @@ struct FitCommandOptions {
 struct CalibrateCommandOptions {
   std::string path;
   std::string params;  ///< comma-separated physics parameters
-  double holdout = 0.5;
-  std::uint64_t seed = 1;
-  int evals = 6000;
-  int refit_evals = 300;
-  int candidates = 60;
-  int threads = 0;
+  CalibrateRequest settings;  ///< all but the parameters, which come from `params`
 };
 
 CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options);

@@ -1,5 +1,8 @@
 #include "io/recording_json.hpp"
 
+#include <functional>
+#include <optional>
+
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_parts.hpp"
@@ -78,23 +81,33 @@ std::variant<std::vector<Recording>, ParseError> shotsOf(const json& doc) {
   return shots;
 }
 
-// The first line that holds something, when it is a whole JSON object by itself: the text is
-// JSON Lines (a document spread over lines, pretty-printed, starts with a line that is not).
-bool firstLineIsAnObject(std::string_view text) {
+// Calls `each(number, line)` for every line that holds something, numbered from 1, until it
+// returns false.
+void forEachLine(std::string_view text,
+                 const std::function<bool(int, std::string_view)>& each) {
   std::size_t start = 0;
-  while (start < text.size()) {
+  for (int number = 1; start < text.size(); ++number) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(start, end - start);
     start = end + 1;
     if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
-    try {
-      return readJson(line).is_object();
-    } catch (const ParseError&) {
-      return false;
-    }
+    if (!each(number, line)) return;
   }
-  return false;
+}
+
+// The first line that holds something, when it is a whole JSON object by itself: the text is
+// JSON Lines (a document spread over lines, pretty-printed, starts with a line that is not).
+bool firstLineIsAnObject(std::string_view text) {
+  bool object = false;
+  forEachLine(text, [&](int, std::string_view line) {
+    try {
+      object = readJson(line).is_object();
+    } catch (const ParseError&) {
+    }
+    return false;
+  });
+  return object;
 }
 
 }  // namespace
@@ -126,19 +139,17 @@ std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_vie
     if (!firstLineIsAnObject(text)) return e;
   }
   std::vector<Recording> shots;
-  std::size_t start = 0;
-  for (int line = 1; start < text.size(); ++line) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view one = text.substr(start, end - start);
-    start = end + 1;
-    if (one.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+  std::optional<ParseError> refused;
+  forEachLine(text, [&](int number, std::string_view line) {
     try {
-      shots.push_back(recordingFromJson(readJson(one)));
+      shots.push_back(recordingFromJson(readJson(line)));
+      return true;
     } catch (const ParseError& e) {
-      return refusedShot("line " + std::to_string(line), e.message);
+      refused = refusedShot("line " + std::to_string(number), e.message);
+      return false;
     }
-  }
+  });
+  if (refused) return *refused;
   return shots;
 }
 

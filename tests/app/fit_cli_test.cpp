@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/cli_runner.hpp"
+#include "fit/carom_shot.hpp"
 #include "io/recording_json.hpp"
 #include "io/scene_json.hpp"
 
@@ -18,16 +19,7 @@ namespace nineball {
 namespace {
 
 Recording recorded(double heading_deg, double speed, std::uint64_t seed) {
-  Scene s;
-  s.table = TableDef::carom();
-  s.physics = PhysicsParams::carom();
-  s.step.engine = EngineKind::named("reference");
-  s.balls = {BallState::at(0, {-0.6, -0.25}), BallState::at(1, {-0.15, -0.1}),
-             BallState::at(2, {0.9, 0.45})};
-  Shot shot;
-  shot.heading_rad = heading_deg * kPi / 180.0;
-  shot.speed = speed;
-  s.shot = shot;
+  const Scene s = testing::caromShot(heading_deg, speed);
   Tracker t;
   t.seed = seed;
   return recordScene(s, {"white", "yellow", "red"}, t, "shot-" + std::to_string(seed));
@@ -78,6 +70,15 @@ TEST(FitCli, PrintsOneLineAShotWhoseSceneReproducesTheFit) {
     ++n;
   }
   EXPECT_EQ(n, shots.size());
+}
+
+TEST(FitCli, TheSameSeedGivesTheSameFitsOnOneOrTwoThreads) {
+  TempFile file(jsonLines({recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2), recorded(12.0, 2.5, 3)}));
+  const std::string fit = "fit " + shellQuoted(file.path()) + " --evals 400 --seed 9";
+  const CliOutcome one = runNineball(fit + " --threads 1");
+  const CliOutcome two = runNineball(fit + " --threads 2");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(one.out, two.out);
 }
 
 TEST(FitCli, RefusesBadRecordingsByName) {

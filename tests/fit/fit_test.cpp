@@ -1,3 +1,4 @@
+#include "fit/carom_shot.hpp"
 #include "nineball/fit.hpp"
 
 #include <gtest/gtest.h>
@@ -17,20 +18,7 @@ struct Case {
 };
 
 Scene caromShot(const Case& c) {
-  Scene s;
-  s.table = TableDef::carom();
-  s.physics = PhysicsParams::carom();
-  s.step.engine = EngineKind::named("reference");
-  // The first object ball near enough to be met while the cue ball still slides, so that the
-  // tip shows in what follows (a rolling cue ball keeps only v0 (1 + height) of it).
-  s.balls = {BallState::at(0, {-0.6, -0.25}), BallState::at(1, {-0.15, -0.1}),
-             BallState::at(2, {0.9, 0.45})};
-  Shot shot;
-  shot.heading_rad = c.heading_deg * kDegree;
-  shot.speed = c.speed;
-  shot.tip = c.tip;
-  s.shot = shot;
-  return s;
+  return testing::caromShot(c.heading_deg, c.speed, c.tip);
 }
 
 TEST(Fit, RecoversTheShotOfASyntheticRecording) {
