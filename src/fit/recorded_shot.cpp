@@ -207,7 +207,12 @@ RecordedShot readRecording(const Recording& r) {
   const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
   const double sample = c.t[start + 1] - c.t[start];
   if (o.from_start) {
-    s.rest[0] = line.a - line.v * (line.tm - c.t[0] + 0.5 * sample);
+    // Struck half a frame before the first sample, as far as the samples can tell.
+    s.cue_moving_at_start = true;
+    s.line_at = line.a;
+    s.line_velocity = line.v;
+    s.line_time = line.tm;
+    s.rest[0] = s.cueAtStrike(c.t[0] - 0.5 * sample);
   }
   s.strike = line.tm + dot(s.rest[0] - line.a, dir) / speed;
   s.cue_first_move = length(at(c, start) - s.rest[0]);

@@ -31,6 +31,17 @@ struct RecordedShot {
   double latest = 0.0;
   /// The last recorded instant of any ball.
   double end = 0.0;
+  /// The cue ball moves from the recording's first sample (it began after the strike): where
+  /// it stood at a strike at time t is then its early line carried back to t.
+  bool cue_moving_at_start = false;
+  Vec2 line_at, line_velocity;
+  double line_time = 0.0;
+
+  /// Where the cue ball stood at a strike at recording time `strike`.
+  Vec2 cueAtStrike(double struck) const {
+    if (!cue_moving_at_start) return rest[0];
+    return line_at + line_velocity * (struck - line_time);
+  }
 
   const RecordedPath& path(std::size_t scene_ball) const {
     return recording->balls[order[scene_ball]];

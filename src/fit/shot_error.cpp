@@ -30,16 +30,19 @@ Window wholeShot(FitObjective objective) {
 
 Variables withPlaces(const RecordedShot& s, Variables x) {
   x.resize(kVariables);
-  for (Vec2 r : s.rest) {
-    x.push_back(r.x);
-    x.push_back(r.y);
+  const Variables shot = x;
+  for (std::size_t i = 0; i < s.rest.size(); ++i) {
+    const Vec2 p = placeOf(s, shot, i);
+    x.push_back(p.x);
+    x.push_back(p.y);
   }
   return x;
 }
 
 Vec2 placeOf(const RecordedShot& s, const Variables& x, std::size_t i) {
   const std::size_t at = kVariables + 2 * i;
-  return x.size() > at + 1 ? Vec2{x[at], x[at + 1]} : s.rest[i];
+  if (x.size() > at + 1) return {x[at], x[at + 1]};
+  return i == 0 ? s.cueAtStrike(x[kStrike]) : s.rest[i];
 }
 
 Variables legal(const RecordedShot& s, const PhysicsParams& p, Variables x) {
@@ -69,8 +72,12 @@ Scene sceneOf(const RecordedShot& s, const PhysicsParams& p, const Variables& x,
   scene.table = s.recording->table;
   scene.physics = p;
   scene.step.engine = EngineKind::named("reference");
-  for (std::size_t i = 0; i < s.rest.size(); ++i) {
-    scene.balls.push_back(BallState::at(static_cast<int>(i), placeOf(s, x, i)));
+  // Apart and on the table whatever the variables say: a scene the engines may run.
+  std::vector<Vec2> places;
+  for (std::size_t i = 0; i < s.rest.size(); ++i) places.push_back(placeOf(s, x, i));
+  separate(places, s.recording->table, p.ball_radius);
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    scene.balls.push_back(BallState::at(static_cast<int>(i), places[i]));
   }
   Shot shot;
   shot.heading_rad = x[kHeading];
