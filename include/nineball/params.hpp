@@ -157,6 +157,10 @@ struct PhysicsParams {
   double cushion_restitution_min = 0.40;
   /// A ball touching a cushion when another ball strikes it (a frozen ball).
   ContactOrder frozen = ContactOrder::Sequential;
+  /// m, how near a cushion a struck ball counts as frozen to it (0: touching, within the
+  /// engines' touch tolerance); read by "frozen": "simultaneous" only. A tracked ball's place
+  /// is known to a millimetre or so, never to the touch.
+  double frozen_tolerance = 0.0;
   /// A ball meeting a second cushion within cushion_contact_time of the first (a corner, a jaw).
   ContactOrder corner = ContactOrder::Sequential;
   /// s, how long a ball stays in a cushion; read by "corner": "simultaneous" only.

@@ -29,6 +29,9 @@ constexpr double kMaxRestitutionQuadratic = 1.0;
 /// s: a ball stays in a cushion for milliseconds; 0.1 s, ten times the default, would join
 /// cushions a ball meets a slow roll apart.
 constexpr double kMaxCushionContactTime = 0.1;
+/// m: a struck ball this near a cushion counts as frozen to it at most (a fifth of a pool
+/// ball's radius); further off, the ball travels to the cushion as a contact of its own.
+constexpr double kMaxFrozenTolerance = 0.006;
 
 /// m: twice a 12 ft snooker table; beyond it the float coordinates Box2D keeps lose the
 /// micrometres the contact search works in.

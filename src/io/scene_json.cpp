@@ -237,6 +237,7 @@ nlohmann::ordered_json physicsToJson(const PhysicsParams& p) {
     if (p.*(f.field) != ContactOrder::Sequential) out[f.name] = contactOrderName(p.*(f.field));
   }
   if (p.corner == ContactOrder::Simultaneous) out["cushion_contact_time"] = p.cushion_contact_time;
+  if (p.frozen == ContactOrder::Simultaneous) out["frozen_tolerance"] = p.frozen_tolerance;
   const unsigned cloth = 1u << static_cast<unsigned>(p.cloth);
   for (const ParamField& f : kParamFields) {
     if ((f.used_by & cloth) && !p.cushion.ignores(f.name)) out[f.name] = p.*(f.field);
@@ -294,6 +295,11 @@ PhysicsParams parsePhysics(const json& v) {
                                   "\"sequential\" or \"simultaneous\"");
       continue;
     }
+    if (key == "frozen_tolerance") {
+      p.frozen_tolerance =
+          number(item.value(), field_path, Bounds::nonNegative(limits::kMaxFrozenTolerance));
+      continue;
+    }
     if (key == "cushion_contact_time") {
       p.cushion_contact_time =
           number(item.value(), field_path, Bounds::positive(limits::kMaxCushionContactTime));
@@ -305,7 +311,7 @@ PhysicsParams parsePhysics(const json& v) {
       std::string list = "preset, cloth, ball_ball, ball_friction, cushion";
       for (const CushionParamField& c : kCushionParamFields) list += ", " + std::string(c.name);
       for (const OrderField& o : kOrderFields) list += ", " + std::string(o.name);
-      list += ", cushion_contact_time";
+      list += ", cushion_contact_time, frozen_tolerance";
       for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
@@ -324,6 +330,10 @@ PhysicsParams parsePhysics(const json& v) {
     refuse(member(path, pf.name), std::string("not used by the ") + quote(p.cushion.name()) +
                                       " cushion (its restitution is a function of speed: "
                                       "cushion_restitution_base, _slope, _quadratic, _min)");
+  }
+  if (optional(v, "frozen_tolerance") && p.frozen != ContactOrder::Simultaneous) {
+    refuse(member(path, "frozen_tolerance"),
+           "not used by the \"sequential\" frozen ball (only by \"frozen\": \"simultaneous\")");
   }
   if (optional(v, "cushion_contact_time") && p.corner != ContactOrder::Simultaneous) {
     refuse(member(path, "cushion_contact_time"),

@@ -81,6 +81,11 @@ TEST(SceneJsonContacts, AcceptsTheNamesAndFields) {
   EXPECT_EQ(s.physics.cushion_restitution_quadratic, -0.044);
   EXPECT_EQ(s.physics.cushion_restitution_min, 0.40);
   EXPECT_EQ(s.physics.cushion_contact_time, 0.01);
+  // How near a cushion a struck ball counts as frozen: 0 unless set, printed with the order.
+  EXPECT_EQ(s.physics.frozen_tolerance, 0.0);
+  s = accepted(scene(R"("frozen": "simultaneous", "frozen_tolerance": 0.003)"));
+  EXPECT_EQ(s.physics.frozen_tolerance, 0.003);
+  EXPECT_EQ(physicsToJson(s.physics)["frozen_tolerance"], 0.003);
   // Each order alone.
   s = accepted(scene(R"("frozen": "sequential", "corner": "simultaneous")"));
   EXPECT_EQ(s.physics.frozen, ContactOrder::Sequential);
@@ -106,6 +111,15 @@ TEST(SceneJsonContacts, RefusesBadValuesByName) {
   EXPECT_TRUE(refusedAt(scene(R"("cushion": "mathavan_speed", "cushion_restitution_min": -0.1)"),
                         "physics.cushion_restitution_min", ""));
   EXPECT_TRUE(refusedAt(scene(R"("cushion": "flubber")"), "physics.cushion", "mathavan_speed"));
+}
+
+TEST(SceneJsonContacts, RefusesABadFrozenTolerance) {
+  EXPECT_TRUE(refusedAt(scene(R"("frozen_tolerance": 0.002)"), "physics.frozen_tolerance",
+                        "not used by the \"sequential\" frozen ball"));
+  EXPECT_TRUE(refusedAt(scene(R"("frozen": "simultaneous", "frozen_tolerance": -0.001)"),
+                        "physics.frozen_tolerance", ""));
+  EXPECT_TRUE(refusedAt(scene(R"("frozen": "simultaneous", "frozen_tolerance": 0.05)"),
+                        "physics.frozen_tolerance", ""));
 }
 
 TEST(SceneJsonContacts, RefusesUnusedParametersByName) {

@@ -90,8 +90,9 @@ bool Resolver::frozenContact(double t, EngineBalls& balls, std::size_t i, std::s
   const Vec2 n = normalized(balls.centre(j) - balls.centre(i));
   std::size_t held = 0, other = 0, found = 0;
   Vec2 face;
+  const double reach = p_.ball_radius + p_.frozen_tolerance;
   for (auto [x, y, push] : {std::tuple{i, j, n * -1.0}, std::tuple{j, i, n}}) {
-    for (Vec2 f : faces(balls.centre(x))) {
+    for (Vec2 f : touchingNormals(balls.centre(x), reach, cushions_)) {
       if (dot(push, f) >= -1e-9) continue;  // the strike does not press it into this face
       ++found;
       held = x;
@@ -100,8 +101,11 @@ bool Resolver::frozenContact(double t, EngineBalls& balls, std::size_t i, std::s
     }
   }
   if (found != 1) return false;
-  const Kinematics sh = balls.now(held);
+  Kinematics sh = balls.now(held);
   if (dot(sh.v, face) > kMinClosingSpeed) return false;  // already leaving the cushion
+  // A ball within frozen_tolerance of the cushion is taken as frozen to it: set against it.
+  const double gap = p_.frozen_tolerance - cushionSink(table_, sh.p, reach);
+  if (gap > kTouchTolerance) sh.p -= face * gap;
   const FrozenStrike hit =
       strikeFrozen(balls.now(other), sh, balls.mass(other), balls.mass(held), face, p_);
   const Kinematics si = held == i ? hit.b : hit.a, sj = held == i ? hit.a : hit.b;

@@ -79,14 +79,14 @@ struct Departure {
   std::size_t events;
 };
 
-Departure run(const PhysicsParams& physics, const char* engine, double speed) {
+Departure run(const PhysicsParams& physics, const char* engine, double speed, double gap = 0.0) {
   Scene s;
   s.table = TableDef::carom();
   s.physics = physics;
   s.step.engine = EngineKind::named(engine);
   const double r = physics.ball_radius;
   const Vec2 n{1.0 / std::sqrt(2.0), -1.0 / std::sqrt(2.0)};
-  const Vec2 object{0.0, -s.table.width / 2.0 + r};
+  const Vec2 object{0.0, -s.table.width / 2.0 + r + gap};
   s.balls = {BallState::at(1, object - n * (2.0 * r + 0.01), n * speed), BallState::at(2, object)};
   s.until = 0.3;
   EXPECT_EQ(validateScene(s), std::nullopt);
@@ -133,6 +133,24 @@ TEST(FrozenBall, BothEnginesGiveTheClosedFormAndDifferFromSequential) {
     EXPECT_NEAR(deg(after.object), 0.0, 1e-3);
     EXPECT_NEAR(length(after.object), (1.0 + e) * V / (1.5 * std::sqrt(2.0)), 1e-5);
     EXPECT_NEAR(dot(after.cue, normalized(Vec2{1, -1})), (1.0 - 2.0 * (1.0 + e) / 3.0) * V, 1e-5);
+  }
+}
+
+// A ball 2 mm off the cushion (as a tracker places a frozen one): frozen only within
+// frozen_tolerance; without it, it travels the 2 mm and bounces as a contact of its own.
+TEST(FrozenBall, ABallWithinTheToleranceCountsAsFrozen) {
+  PhysicsParams p = with(frictionless(), ContactOrder::Simultaneous);
+  for (const char* engine : {"box2d", "reference"}) {
+    p.frozen_tolerance = 0.0;
+    const Departure apart = run(p, engine, 2.0, 0.002);
+    p.frozen_tolerance = 0.003;
+    const Departure frozen = run(p, engine, 2.0, 0.002);
+    std::printf(
+        "[ measured ] 2 mm off the cushion, %s: object ball leaves the rail at %.2f deg "
+        "(frozen_tolerance 0) / %.2f deg (3 mm)\n",
+        engine, deg(apart.object), deg(frozen.object));
+    EXPECT_NEAR(deg(apart.object), std::atan(p.cushion_restitution) * 180.0 / kPi, 1e-3);
+    EXPECT_NEAR(deg(frozen.object), 0.0, 1e-3);
   }
 }
 
