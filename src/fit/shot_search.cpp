@@ -151,12 +151,17 @@ int share(int budget, double part) {
 
 }  // namespace
 
-Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitObjective objective,
-                 std::uint64_t seed, const std::atomic<bool>* cancel) {
-  Search search(s, p, evals, cancel);
-  // The first guess from the samples is wrong where the cue ball met a cushion within a frame
-  // or two: headings all round it, at six speeds, judged on the cue ball alone a little past
-  // its first event, and the best few searched there.
+namespace {
+
+void rank(std::vector<Found>& found) {
+  std::stable_sort(found.begin(), found.end(),
+                   [](const Found& a, const Found& b) { return a.error < b.error; });
+}
+
+// The cue ball's heading, speed and strike. The first guess from the samples is wrong where
+// the cue ball met a cushion within a frame or two: headings all round it, at six speeds,
+// judged on the cue ball alone a little past its first event, and the best few searched there.
+Variables cueBallAlone(const RecordedShot& s, Search& search, int evals) {
   Window cue = after(s, kCueWindow);
   cue.cue_only = true;
   std::vector<Found> scanned;
@@ -173,8 +178,7 @@ Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitOb
       scanned.push_back({x, search.error(x, cue), 1});
     }
   }
-  std::stable_sort(scanned.begin(), scanned.end(),
-                   [](const Found& a, const Found& b) { return a.error < b.error; });
+  rank(scanned);
   std::vector<Found> cues;
   for (const Found& f : scanned) {
     bool near = false;
@@ -192,22 +196,23 @@ Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitOb
                                 share(evals, kCueShare) / static_cast<int>(kScanKept));
     if (f.error < guess.error) guess = f;
   }
-  const Variables x = guess.x;
+  return guess.x;
+}
 
+// Nine tips about the cue ball's stroke, each searched over the first second after its first
+// event, then ever longer windows, the leaders kept (keepTheBest); the best of the whole shot.
+Found bestTip(const RecordedShot& s, Search& search, const Variables& cue, int evals,
+              FitObjective objective) {
   std::vector<Found> starts;
   for (double side : {0.0, -kTipStart, kTipStart}) {
     for (double height : {0.0, -kTipStart, kTipStart}) {
-      Variables from = x;
+      Variables from = cue;
       from[kSide] = side;
       from[kHeight] = height;
       starts.push_back(
           search.over(kLevel, from, kCoarseStep, after(s, kFirstWindow), share(evals, kTipShare)));
     }
   }
-  auto rank = [](std::vector<Found>& found) {
-    std::stable_sort(found.begin(), found.end(),
-                     [](const Found& a, const Found& b) { return a.error < b.error; });
-  };
   rank(starts);
   for (double seconds : kLongerWindows) {
     keepTheBest(starts);
@@ -216,10 +221,16 @@ Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitOb
     for (Found& f : starts) f = search.over(kLevel, f.x, kFineStep, w, each);
     rank(starts);
   }
+  return starts.front();
+}
+
+// The balls' places join the shot, and restarts about the best, each from a point a fine step
+// or so away, spend the rest of the budget: most with a level cue, then with the elevation,
+// kept only where it lowers the error by more than kElevationGain.
+Found placesAndRestarts(const RecordedShot& s, const PhysicsParams& p, Search& search, Found best,
+                        FitObjective objective, std::uint64_t seed,
+                        const std::atomic<bool>* cancel) {
   const Window whole = wholeShot(objective);
-  Found best = starts.front();
-  // Then the balls' places with the shot, and restarts about the best, each from a point a
-  // fine step or so away, until the budget ends.
   best.x = withPlaces(s, best.x);
   const Variables steps = stepsFor(best.x, kFineStep);
   std::uint64_t state = seed;
@@ -239,7 +250,17 @@ Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitOb
   };
   best = restarts(best, false, static_cast<int>(kLevelShare * search.left()));
   const Found raised = restarts(best, true, search.left());
-  if (raised.error < (1.0 - kElevationGain) * best.error) best = raised;
+  return raised.error < (1.0 - kElevationGain) * best.error ? raised : best;
+}
+
+}  // namespace
+
+Found searchShot(const RecordedShot& s, const PhysicsParams& p, int evals, FitObjective objective,
+                 std::uint64_t seed, const std::atomic<bool>* cancel) {
+  Search search(s, p, evals, cancel);
+  const Variables cue = cueBallAlone(s, search, evals);
+  const Found tip = bestTip(s, search, cue, evals, objective);
+  Found best = placesAndRestarts(s, p, search, tip, objective, seed, cancel);
   best.evals = search.used();
   return best;
 }
