@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/scene_checks.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_parts.hpp"
 
@@ -17,26 +18,8 @@ std::string scene(const std::string& physics) {
          physics + "}}";
 }
 
-::testing::AssertionResult refusedAt(const std::string& text, const std::string& field,
-                                     const std::string& reason) {
-  const SceneResult r = parseScene(text);
-  const auto* e = std::get_if<ParseError>(&r);
-  if (!e) return ::testing::AssertionFailure() << "accepted: " << text;
-  if (e->message.rfind(field + ": ", 0) != 0 || e->message.find(reason) == std::string::npos) {
-    return ::testing::AssertionFailure() << "message \"" << e->message << "\" does not name \""
-                                         << field << "\" with \"" << reason << "\"";
-  }
-  return ::testing::AssertionSuccess();
-}
-
-Scene accepted(const std::string& text) {
-  SceneResult r = parseScene(text);
-  if (const auto* e = std::get_if<ParseError>(&r)) {
-    ADD_FAILURE() << "refused: " << e->message;
-    return {};
-  }
-  return std::get<Scene>(r);
-}
+using testing::accepted;
+using testing::refusedAt;
 
 TEST(SceneJsonContacts, DefaultsAreSequentialAndPrintNothingNew) {
   for (const char* preset : {"real", "paper", "carom"}) {

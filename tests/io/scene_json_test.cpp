@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/scene_checks.hpp"
+
 namespace nineball::io {
 namespace {
 
@@ -14,27 +16,8 @@ std::string scene(const std::string& extra = "") {
          (extra.empty() ? "" : ", " + extra) + "}";
 }
 
-/// Checks that the text is refused with a message starting "<field>: " and holding `reason`.
-::testing::AssertionResult refusedAt(const std::string& text, const std::string& field,
-                                     const std::string& reason) {
-  const SceneResult r = parseScene(text);
-  const auto* e = std::get_if<ParseError>(&r);
-  if (!e) return ::testing::AssertionFailure() << "accepted: " << text;
-  if (e->message.rfind(field + ": ", 0) != 0 || e->message.find(reason) == std::string::npos) {
-    return ::testing::AssertionFailure() << "message \"" << e->message << "\" does not name \""
-                                         << field << "\" with \"" << reason << "\"";
-  }
-  return ::testing::AssertionSuccess();
-}
-
-Scene accepted(const std::string& text) {
-  SceneResult r = parseScene(text);
-  if (const auto* e = std::get_if<ParseError>(&r)) {
-    ADD_FAILURE() << "refused: " << e->message;
-    return {};
-  }
-  return std::get<Scene>(r);
-}
+using testing::accepted;
+using testing::refusedAt;
 
 TEST(SceneJson, RefusesUnreadableJson) {
   EXPECT_TRUE(refusedAt(R"({"balls": [)", "invalid JSON", "parse error"));
