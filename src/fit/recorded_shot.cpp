@@ -108,6 +108,7 @@ Onset onsetOf(const RecordedPath& b) {
 // any (a slow ball creeps before it reaches kMoved), else all before it.
 Vec2 restOf(const RecordedPath& b, const Onset& o) {
   if (o.index == 0) return at(b, 0);
+  if (o.index >= b.t.size()) return medianOf(b, 0, b.t.size());  // it never moves
   std::size_t last = o.index;
   while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
   return medianOf(b, 0, last);
@@ -162,7 +163,7 @@ std::size_t cueIndex(const Recording& r, const std::vector<Onset>& onsets) {
   for (std::size_t i = 0; i < r.balls.size(); ++i) {
     const RecordedPath& b = r.balls[i];
     if (onsets[i].index >= b.t.size()) continue;
-    // Ties (two balls moving from the first sample) go to the faster.
+    // Ties (two balls moving from the first sample) go to the one listed first.
     const double when = b.t[onsets[i].index];
     if (when < earliest) {
       best = i;
