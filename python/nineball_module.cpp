@@ -589,11 +589,16 @@ std::string recordingsText(py::handle shots) {
   return dumps(shots, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
 }
 
-py::object jsonAnswer(const std::variant<std::string, SceneRefusal>& answer) {
+// The text of a contract's answer; its refusal as a ValueError.
+const std::string& answerText(const std::variant<std::string, SceneRefusal>& answer) {
   if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
     throw py::value_error(refused->message);
   }
-  return py::module_::import("json").attr("loads")(std::get<std::string>(answer));
+  return std::get<std::string>(answer);
+}
+
+py::object jsonAnswer(const std::variant<std::string, SceneRefusal>& answer) {
+  return py::module_::import("json").attr("loads")(answerText(answer));
 }
 
 // What `nineball fit` prints for the shots, a dict per shot.
@@ -616,12 +621,9 @@ py::list fitOf(py::handle shots, int evals, const std::string& objective, std::u
     o.cancel = cancel;
     answer = fitJsonText(text, o);
   });
-  if (const auto* refused = std::get_if<SceneRefusal>(&answer)) {
-    throw py::value_error(refused->message);
-  }
   py::list out;
   const py::object loads = py::module_::import("json").attr("loads");
-  std::istringstream lines(std::get<std::string>(answer));
+  std::istringstream lines(answerText(answer));
   for (std::string line; std::getline(lines, line);) out.append(loads(line));
   return out;
 }
