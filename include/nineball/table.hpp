@@ -11,6 +11,12 @@
 
 namespace nineball {
 
+/// Which lines and spots are drawn on a table's cloth (table_markings.hpp).
+enum class TableMarks {
+  Pool,     ///< the head string and the foot spot
+  Snooker,  ///< the baulk line, the D and the six colour spots
+};
+
 /// Size of a table's playing surface and its pocket mouths, in metres. Origin at the centre,
 /// x along the length, y across. The cushion noses lie on x = +-length/2 and y = +-width/2.
 struct TableDef {
@@ -23,6 +29,7 @@ struct TableDef {
   /// False for a table without pockets (carom): four straight cushions, and the pocket
   /// fields above are not read.
   bool pockets = true;
+  TableMarks marks = TableMarks::Pool;
 
   static TableDef nineFoot() { return {}; }
   static TableDef eightFoot() { return {2.34, 1.17}; }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "nineball/colours.hpp"
+#include "nineball/table_markings.hpp"
 
 namespace nineball::app {
 namespace {
@@ -252,12 +253,13 @@ void drawTable(std::ostringstream& svg, const View& view, const TableGeometry& t
     svg << "<circle cx=\"" << num(c.x) << "\" cy=\"" << num(c.y) << "\" r=\"" << num(view.px(0.008))
         << "\" fill=\"" << hex(kDiamond) << "\"/>\n";
   };
-  for (int k = 1; k < 8; ++k) {
+  const int diamond_rows = table.def.marks == TableMarks::Snooker ? 0 : 8;  // none on snooker
+  for (int k = 1; k < diamond_rows; ++k) {
     if (k == 4) continue;
     diamond({-hx + k * table.def.length / 8.0, hy + mid});
     diamond({-hx + k * table.def.length / 8.0, -hy - mid});
   }
-  for (int k = 1; k < 4; ++k) {
+  for (int k = 1; k < diamond_rows / 2; ++k) {
     diamond({hx + mid, -hy + k * table.def.width / 4.0});
     diamond({-hx - mid, -hy + k * table.def.width / 4.0});
   }
@@ -271,13 +273,28 @@ void drawTable(std::ostringstream& svg, const View& view, const TableGeometry& t
   // The cushion loop the balls bounce off, exactly as the physics builds it.
   svg << "<polygon class=\"cushion-loop\" points=\"" << points(view, table.cushion_loop)
       << "\" fill=\"none\" stroke=\"" << hex(kLoopLine) << "\" stroke-width=\"1.2\"/>\n";
-  const Vec2 h0 = view.at({table.headStringX(), hy}), h1 = view.at({table.headStringX(), -hy});
-  const Vec2 spot = view.at(table.footSpot());
-  svg << "<line x1=\"" << num(h0.x) << "\" y1=\"" << num(h0.y) << "\" x2=\"" << num(h1.x)
-      << "\" y2=\"" << num(h1.y) << "\" stroke=\"" << hex(kMarking)
-      << "\" stroke-opacity=\"0.35\" stroke-width=\"1\"/>\n"
-      << "<circle cx=\"" << num(spot.x) << "\" cy=\"" << num(spot.y) << "\" r=\"2.5\" fill=\""
-      << hex(kMarking) << "\" fill-opacity=\"0.6\"/>\n";
+  const TableMarkings marks = markingsOf(table.def);
+  for (const TableMarkings::Line& l : marks.lines) {
+    const Vec2 a = view.at(l.a), b = view.at(l.b);
+    svg << "<line x1=\"" << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(b.x)
+        << "\" y2=\"" << num(b.y) << "\" stroke=\"" << hex(kMarking)
+        << "\" stroke-opacity=\"0.35\" stroke-width=\"1\"/>\n";
+  }
+  for (const TableMarkings::Arc& arc : marks.arcs) {
+    const Vec2 a = view.at(arc.centre + Vec2{std::cos(arc.from), std::sin(arc.from)} * arc.radius);
+    const Vec2 b = view.at(arc.centre + Vec2{std::cos(arc.to), std::sin(arc.to)} * arc.radius);
+    const double r = length(view.at(arc.centre + Vec2{arc.radius, 0.0}) - view.at(arc.centre));
+    // The y axis points down in the picture, so a counter-clockwise arc on the table is drawn
+    // clockwise: sweep flag 0.
+    svg << "<path d=\"M " << num(a.x) << " " << num(a.y) << " A " << num(r) << " " << num(r)
+        << " 0 0 0 " << num(b.x) << " " << num(b.y) << "\" fill=\"none\" stroke=\"" << hex(kMarking)
+        << "\" stroke-opacity=\"0.35\" stroke-width=\"1\"/>\n";
+  }
+  for (Vec2 at : marks.spots) {
+    const Vec2 spot = view.at(at);
+    svg << "<circle cx=\"" << num(spot.x) << "\" cy=\"" << num(spot.y) << "\" r=\"2.5\" fill=\""
+        << hex(kMarking) << "\" fill-opacity=\"0.6\"/>\n";
+  }
 }
 
 std::string summary(const SimResult& result) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "nineball/table_markings.hpp"
+
 namespace nineball::render {
 namespace {
 
@@ -44,15 +46,17 @@ void TablePainter::build(const TableGeometry& table, const ViewTransform& view) 
   batch_.roundedRect(outer_tl.x + e, outer_tl.y + e, ow - 2 * e, oh - 2 * e, view.px(0.04),
                      toSf(kWood));
 
-  // Diamonds: the long rails in eighths of the length, the short rails in quarters.
+  // Diamonds: the long rails in eighths of the length, the short rails in quarters (a snooker
+  // table has none).
   const double mid = kCushionDepth + (rail - kCushionDepth) / 2.0;
-  for (int k = 1; k < 8; ++k) {
+  const int diamond_rows = table.def.marks == TableMarks::Snooker ? 0 : 8;
+  for (int k = 1; k < diamond_rows; ++k) {
     if (k == 4) continue;  // the side pocket
     const double x = -hx + k * table.def.length / 8.0;
     addDiamond(batch_, view, {x, hy + mid}, true);
     addDiamond(batch_, view, {x, -hy - mid}, true);
   }
-  for (int k = 1; k < 4; ++k) {
+  for (int k = 1; k < diamond_rows / 2; ++k) {
     const double y = -hy + k * table.def.width / 4.0;
     addDiamond(batch_, view, {hx + mid, y}, false);
     addDiamond(batch_, view, {-hx - mid, y}, false);
@@ -85,12 +89,26 @@ void TablePainter::build(const TableGeometry& table, const ViewTransform& view) 
     batch_.line(view.toPixels(a + inward), view.toPixels(b + inward), shade, toSf(kClothShade));
   }
 
-  // Head string and foot spot.
-  const double head = table.headStringX();
-  batch_.line(view.toPixels({head, hy}), view.toPixels({head, -hy}), std::max(1.0, view.px(0.003)),
-              toSf(kMarking, 90));
-  batch_.circle(view.toPixels(table.footSpot()), std::max(1.5, view.px(0.007)),
-                toSf(kMarking, 160));
+  // The lines and spots the game's rules refer to (head string and foot spot, or baulk line,
+  // D and spots).
+  const TableMarkings marks = markingsOf(table.def);
+  const double line_px = std::max(1.0, view.px(0.003));
+  for (const TableMarkings::Line& l : marks.lines) {
+    batch_.line(view.toPixels(l.a), view.toPixels(l.b), line_px, toSf(kMarking, 90));
+  }
+  for (const TableMarkings::Arc& a : marks.arcs) {
+    const int pieces = 48;
+    for (int i = 0; i < pieces; ++i) {
+      const double t0 = a.from + (a.to - a.from) * i / pieces;
+      const double t1 = a.from + (a.to - a.from) * (i + 1) / pieces;
+      const Vec2 p0 = a.centre + Vec2{std::cos(t0), std::sin(t0)} * a.radius;
+      const Vec2 p1 = a.centre + Vec2{std::cos(t1), std::sin(t1)} * a.radius;
+      batch_.line(view.toPixels(p0), view.toPixels(p1), line_px, toSf(kMarking, 90));
+    }
+  }
+  for (Vec2 spot : marks.spots) {
+    batch_.circle(view.toPixels(spot), std::max(1.5, view.px(0.007)), toSf(kMarking, 160));
+  }
 }
 
 }  // namespace nineball::render
