@@ -178,6 +178,8 @@ struct PhysicsParams {
   static PhysicsParams paper();
   /// Carom equipment (UMB balls, a heated carom cloth), the real models.
   static PhysicsParams carom();
+  /// Snooker equipment (WPBSA balls, a napped snooker cloth, snooker cushions), the real models.
+  static PhysicsParams snooker();
   /// A preset by the name scenes give it (presetNames()); nothing for another.
   static std::optional<PhysicsParams> preset(const std::string& name);
   /// Every preset's name: "real", "paper", "carom".

@@ -257,8 +257,8 @@ class Pocket:
 class Table:
     """The table as the physics builds it, for a scene's ``table`` and ``physics``.
 
-    ``table``: a name of TABLES ("9ft", "8ft", "7ft", "carom", "carom-small"; the carom ones
-    have no pockets) or the scene format's table object; ``physics``: the
+    ``table``: a name of TABLES ("9ft", "8ft", "7ft", "carom", "carom-small", "snooker",
+    "snooker-10ft"; the carom ones have no pockets, the snooker ones rounded jaws) or the scene format's table object; ``physics``: the
     scene's physics object (its ball radius sets how deep the pocket cups are). Attributes, SI
     units, the origin at the table's centre, x along its length: ``length``, ``width``,
     ``ball_radius``, ``corner_pocket`` and ``side_pocket`` (mouth widths), ``pockets`` (Pocket,

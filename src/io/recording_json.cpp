@@ -48,7 +48,8 @@ ordered_json tableToJson(const TableDef& t) {
     if (n.length == t.length && n.width == t.width && n.pockets == t.pockets &&
         (!t.pockets ||
          (n.corner_pocket == t.corner_pocket && n.side_pocket == t.side_pocket &&
-          n.corner_jaw_deg == t.corner_jaw_deg && n.side_jaw_deg == t.side_jaw_deg))) {
+          n.corner_jaw_deg == t.corner_jaw_deg && n.side_jaw_deg == t.side_jaw_deg &&
+          n.corner_jaw_radius == t.corner_jaw_radius && n.side_jaw_radius == t.side_jaw_radius))) {
       return name;
     }
   }
@@ -58,6 +59,9 @@ ordered_json tableToJson(const TableDef& t) {
     j["side_pocket"] = t.side_pocket;
     j["corner_jaw_deg"] = t.corner_jaw_deg;
     j["side_jaw_deg"] = t.side_jaw_deg;
+    // Sharp jaws (a pool table's) are written as before: only a rounded jaw adds its radius.
+    if (t.corner_jaw_radius > 0.0) j["corner_jaw_radius"] = t.corner_jaw_radius;
+    if (t.side_jaw_radius > 0.0) j["side_jaw_radius"] = t.side_jaw_radius;
   }
   return j;
 }
@@ -83,8 +87,7 @@ std::variant<std::vector<Recording>, ParseError> shotsOf(const json& doc) {
 
 // Calls `each(number, line)` for every line that holds something, numbered from 1, until it
 // returns false.
-void forEachLine(std::string_view text,
-                 const std::function<bool(int, std::string_view)>& each) {
+void forEachLine(std::string_view text, const std::function<bool(int, std::string_view)>& each) {
   std::size_t start = 0;
   for (int number = 1; start < text.size(); ++number) {
     std::size_t end = text.find('\n', start);

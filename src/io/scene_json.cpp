@@ -53,6 +53,13 @@ void parsePocketFields(const json& v, const std::string& path, TableDef& t) {
   if (const json* p = optional(v, "side_jaw_deg")) {
     t.side_jaw_deg = number(*p, "table.side_jaw_deg", jaw);
   }
+  // A rounded jaw's knuckle: 0 is a sharp jaw point; checkTable refuses one too big to fit.
+  for (auto [key, field] : {std::pair{"corner_jaw_radius", &TableDef::corner_jaw_radius},
+                            std::pair{"side_jaw_radius", &TableDef::side_jaw_radius}}) {
+    if (const json* p = optional(v, key)) {
+      t.*field = number(*p, member(path, key), Bounds{0.0, false, t.width / 2.0, true});
+    }
+  }
 }
 
 }  // namespace
@@ -72,7 +79,7 @@ TableDef parseTable(const json& v) {
   }
   allowOnly(v, path,
             {"length", "width", "pockets", "corner_pocket", "side_pocket", "corner_jaw_deg",
-             "side_jaw_deg"});
+             "side_jaw_deg", "corner_jaw_radius", "side_jaw_radius"});
   TableDef t;
   t.length = number(required(v, path, "length"), "table.length", Bounds::positive(kMaxTableSize));
   t.width = number(required(v, path, "width"), "table.width", Bounds::positive(kMaxTableSize));
@@ -82,7 +89,8 @@ TableDef parseTable(const json& v) {
     t.pockets = p->get<bool>();
   }
   if (!t.pockets) {
-    for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"}) {
+    for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg",
+                            "corner_jaw_radius", "side_jaw_radius"}) {
       if (optional(v, key))
         refuse(member(path, key), "a table without pockets has no pocket mouths or jaws");
     }

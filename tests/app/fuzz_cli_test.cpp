@@ -13,8 +13,8 @@
 
 #include "app/cli_runner.hpp"
 #include "common/limits.hpp"
-#include "nineball/random.hpp"
 #include "nineball/params.hpp"
+#include "nineball/random.hpp"
 #include "nineball/table.hpp"
 
 namespace nineball::testing {
@@ -58,7 +58,12 @@ json generate(std::uint64_t& rng) {
   // other draws stay as they were.
   std::uint64_t carom_draw = rng ^ 0x6361726f6dULL;
   const bool carom = splitmix64(carom_draw) % 4 == 0;
-  const double r = carom ? PhysicsParams::carom().ball_radius
+  // One in four of the others on a snooker table (its rounded jaws) with the snooker preset,
+  // decided the same way.
+  std::uint64_t snooker_draw = rng ^ 0x736e6f6f6b6572ULL;
+  const bool snooker = !carom && splitmix64(snooker_draw) % 4 == 0;
+  const double r = carom     ? PhysicsParams::carom().ball_radius
+                   : snooker ? PhysicsParams::snooker().ball_radius
                    : splitmix64(rng) % 2
                        ? 0.028575
                        : edgy(rng, limits::kMinBallRadius, limits::kMaxBallRadius);
@@ -94,6 +99,11 @@ json generate(std::uint64_t& rng) {
     table = small ? TableDef::caromSmall() : TableDef::carom();
     s["table"] = small ? "carom-small" : "carom";
     s["physics"]["preset"] = "carom";
+  } else if (snooker) {
+    const bool small = splitmix64(snooker_draw) % 2 == 0;
+    table = small ? TableDef::snookerTenFoot() : TableDef::snooker();
+    s["table"] = small ? "snooker-10ft" : "snooker";
+    s["physics"]["preset"] = "snooker";
   } else if (splitmix64(rng) % 3 == 0) {
     s["table"] = "9ft";
   } else {

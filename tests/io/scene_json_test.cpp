@@ -394,7 +394,8 @@ TEST(SceneJson, ReadsTheCaromTablesWithoutPockets) {
 }
 
 TEST(SceneJson, RefusesPocketFieldsOnATableWithoutPockets) {
-  for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg"}) {
+  for (const char* key : {"corner_pocket", "side_pocket", "corner_jaw_deg", "side_jaw_deg",
+                          "corner_jaw_radius", "side_jaw_radius"}) {
     const std::string table =
         std::string(R"("table": {"length": 2.0, "width": 1.0, "pockets": false, ")") + key +
         R"(": 0.1})";
@@ -404,8 +405,9 @@ TEST(SceneJson, RefusesPocketFieldsOnATableWithoutPockets) {
   }
   EXPECT_TRUE(refusedAt(scene(R"("table": {"length": 2.0, "width": 1.0, "pockets": 0})"),
                         "table.pockets", "expected true or false"));
-  EXPECT_TRUE(refusedAt(scene(R"("table": "snooker")"), "table",
-                        R"(expected "9ft", "8ft", "7ft", "carom", "carom-small" or an object)"));
+  EXPECT_TRUE(refusedAt(scene(R"("table": "bar-box")"), "table",
+                        R"(expected "9ft", "8ft", "7ft", "carom", "carom-small", "snooker", )"
+                        R"("snooker-10ft" or an object)"));
 }
 
 TEST(SceneJson, ReadsTheCaromPreset) {
@@ -417,7 +419,24 @@ TEST(SceneJson, ReadsTheCaromPreset) {
   EXPECT_EQ(s.physics.cushion, PhysicsParams::real().cushion);
   EXPECT_EQ(s.physics.ball_ball, PhysicsParams::real().ball_ball);
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"preset": "moon"})"), "physics.preset",
-                        R"(expected "real", "paper" or "carom")"));
+                        R"(expected "real", "paper", "carom" or "snooker")"));
+}
+
+TEST(SceneJson, ReadsTheSnookerPresetAndTables) {
+  const Scene s = accepted(scene(R"("physics": {"preset": "snooker"}, "table": "snooker")"));
+  EXPECT_EQ(s.physics.ball_radius, 0.02625);
+  EXPECT_EQ(s.physics.ball_mass, 0.142);
+  EXPECT_EQ(s.physics.sliding_friction, 0.212);
+  EXPECT_EQ(s.physics.cushion, PhysicsParams::real().cushion);
+  EXPECT_EQ(s.table.length, 3.569);
+  EXPECT_EQ(s.table.corner_jaw_radius, TableDef::snooker().corner_jaw_radius);
+  // A custom table may round its jaws too; a radius below 0 is refused by name.
+  const Scene custom = accepted(scene(
+      R"("table": {"length": 2.54, "width": 1.27, "corner_jaw_radius": 0.01, "side_jaw_radius": 0})"));
+  EXPECT_EQ(custom.table.corner_jaw_radius, 0.01);
+  EXPECT_TRUE(
+      refusedAt(scene(R"("table": {"length": 2.54, "width": 1.27, "corner_jaw_radius": -0.01})"),
+                "table.corner_jaw_radius", ""));
 }
 
 TEST(SceneJson, ReadsASpeedShotWithTip) {

@@ -546,7 +546,8 @@ def test_the_package_works_without_dask():
 def test_a_preset_with_every_parameter_reads_back_as_itself():
     for name in nineball.PRESETS:
         physics = nineball.preset(name)
-        radius = 0.03075 if name == "carom" else 0.028575   # carom's balls are 61.5 mm
+        # carom's balls are 61.5 mm, snooker's 52.5 mm
+        radius = {"carom": 0.03075, "snooker": 0.02625}.get(name, 0.028575)
         assert physics["ball_radius"] == radius and "cloth" in physics, name
         by_name = nineball.simulate(dict(stun(), physics={"preset": name}))
         spelled_out = nineball.simulate(dict(stun(), physics=physics))

@@ -98,16 +98,27 @@ Cushions Cushions::of(const TableGeometry& table) {
   Cushions c;
   const auto& loop = table.cushion_loop;
   const std::size_t n = loop.size();
+  // The chords that stand for a knuckle in the loop (and the vertices between and at their
+  // ends, where the knuckle meets its straight pieces tangentially) give way to its arc.
+  std::vector<bool> in_arc(n, false), on_arc(n, false);
+  for (const CushionArc& arc : table.arcs) {
+    for (std::size_t k = arc.first; k <= arc.last; ++k) {
+      on_arc[k] = true;
+      if (k < arc.last) in_arc[k] = true;
+    }
+    c.arcs.push_back({arc.centre, arc.radius, normalized(arc.start - arc.centre),
+                      normalized(arc.end - arc.centre)});
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = loop[i], b = loop[(i + 1) % n];
     const double len = length(b - a);
-    if (len <= 0.0) continue;
+    if (len <= 0.0 || in_arc[i]) continue;
     const Vec2 along = (b - a) / len;
     // The loop runs clockwise: the table is on the right of each segment.
     c.segments.push_back({a, b, along, {along.y, -along.x}, len});
     // A left turn at b (walking clockwise) points b into the table.
     const Vec2 next = loop[(i + 2) % n];
-    if (cross(b - a, next - b) > 0.0) c.corners.push_back(b);
+    if (cross(b - a, next - b) > 0.0 && !on_arc[(i + 1) % n]) c.corners.push_back(b);
   }
   c.buildGrid();
   return c;
@@ -159,6 +170,10 @@ void Cushions::buildGrid() {
   int item = 0;
   for (const Segment& seg : segments) add(item++, seg.a, seg.b);
   for (Vec2 corner : corners) add(item++, corner, corner);
+  for (const Arc& arc : arcs) {
+    const Vec2 reach{arc.radius, arc.radius};
+    add(item++, arc.centre - reach, arc.centre + reach);
+  }
   cell_start.assign(1, 0);
   for (const auto& cell : cells) {
     items.insert(items.end(), cell.begin(), cell.end());
@@ -239,9 +254,23 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
       consider(*s, normalized(path.at(*s) - c));
     }
   };
-  // Every segment or corner a hit can come from lies within `limit` of the start (the ball
-  // touches it within its reach), so the start's cell lists all of them, in the same order.
+  auto arc = [&](const Cushions::Arc& k) {
+    const Vec2 d = path.p - k.centre;
+    if (!near.overlaps(Box{k.centre.x, k.centre.x, k.centre.y, k.centre.y}.grown(k.radius))) return;
+    const double distance = length(d);
+    if (distance - k.radius > limit) return;
+    // As a corner met at R + rho, kept when the meeting point lies within the arc's span:
+    // outside it, the nose or jaw face the arc runs into tangentially is met instead.
+    const double reach_to_centre = radius + k.radius;
+    if (auto s = cornerContact(d, path, distance - reach_to_centre, reach_to_centre, horizon)) {
+      const Vec2 normal = normalized(path.at(*s) - k.centre);
+      if (k.covers(normal)) consider(*s, normal);
+    }
+  };
+  // Every segment, corner or arc a hit can come from lies within `limit` of the start (the
+  // ball touches it within its reach), so the start's cell lists all of them, in the same order.
   const int n = static_cast<int>(cushions.segments.size());
+  const int corner_end = n + static_cast<int>(cushions.corners.size());
   const auto cell = limit <= Cushions::kGridReach ? cushions.cellOf(path.p) : std::nullopt;
   if (cell) {
     const auto c = static_cast<std::size_t>(*cell);
@@ -249,14 +278,17 @@ std::optional<CushionHit> cushionContact(const Path& path, double radius, const 
       const int item = cushions.items[static_cast<std::size_t>(k)];
       if (item < n) {
         segment(cushions.segments[static_cast<std::size_t>(item)]);
-      } else {
+      } else if (item < corner_end) {
         corner(cushions.corners[static_cast<std::size_t>(item - n)]);
+      } else {
+        arc(cushions.arcs[static_cast<std::size_t>(item - corner_end)]);
       }
     }
     return best;
   }
   for (const Cushions::Segment& seg : cushions.segments) segment(seg);
   for (Vec2 c : cushions.corners) corner(c);
+  for (const Cushions::Arc& k : cushions.arcs) arc(k);
   return best;
 }
 
@@ -271,6 +303,14 @@ std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushion
   }
   for (Vec2 corner : cushions.corners) {
     if (length(p - corner) - radius <= kTouchTolerance) normals.push_back(normalized(p - corner));
+  }
+  for (const Cushions::Arc& arc : cushions.arcs) {
+    const Vec2 d = p - arc.centre;
+    const double distance = length(d);
+    if (distance - arc.radius - radius <= kTouchTolerance && distance >= arc.radius &&
+        arc.covers(d)) {
+      normals.push_back(d / distance);
+    }
   }
   return normals;
 }

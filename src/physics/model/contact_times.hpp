@@ -9,8 +9,9 @@
 
 namespace nineball::physics {
 
-/// The cushion loop as the contact search needs it: each segment with its inward normal, and
-/// the corners that stick out into the table (jaw points), which a ball can meet head on.
+/// The cushion loop as the contact search needs it: each segment with its inward normal, the
+/// corners that stick out into the table (jaw points), which a ball can meet head on, and the
+/// rounded jaws (knuckles) as arcs, in place of the chords that stand for them in the loop.
 struct Cushions {
   struct Segment {
     Vec2 a, b;
@@ -20,9 +21,21 @@ struct Cushions {
   };
   std::vector<Segment> segments;
   std::vector<Vec2> corners;
+  /// A convex arc of the cushion (a knuckle): a ball of radius R touches it when its centre
+  /// is R + radius from the centre, in a direction within the arc's span (a corner is the
+  /// case radius 0, every direction).
+  struct Arc {
+    Vec2 centre;
+    double radius;
+    Vec2 from, to;  ///< unit directions from the centre to its ends, counter-clockwise
+    /// True when the direction d from the centre lies within the span.
+    bool covers(Vec2 d) const { return cross(from, d) >= 0.0 && cross(d, to) >= 0.0; }
+  };
+  std::vector<Arc> arcs;
 
   /// A grid over the loop, so that a search looks only at what is near: each cell lists the
-  /// segments and then the corners (numbered after the segments) whose bounding box, grown by
+  /// segments, then the corners (numbered after the segments), then the arcs (numbered after
+  /// the corners) whose bounding box, grown by
   /// kGridReach, overlaps it, in order. A search that may reach further than kGridReach, or
   /// starts off the grid, looks at everything.
   static constexpr double kGridReach = 0.15;  ///< m: a piece's travel and a ball's radius
@@ -56,14 +69,14 @@ struct CushionHit {
 std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon);
 
 /// The first clock value in [0, horizon] at which a ball of `radius` on the path touches a
-/// cushion segment or corner while moving into it.
+/// cushion segment, corner or arc while moving into it.
 std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,
                                          double horizon);
 
-/// The first clock value in [0, horizon] at which the path's point enters the circle.
-/// The normals (into the table) of every face and corner a ball of `radius` at p touches.
+/// The normals (into the table) of every face, corner and arc a ball of `radius` at p touches.
 std::vector<Vec2> touchingNormals(Vec2 p, double radius, const Cushions& cushions);
 
+/// The first clock value in [0, horizon] at which the path's point enters the circle.
 std::optional<double> circleEntry(const Path& path, Vec2 centre, double radius, double horizon);
 
 /// How far a path can get from its start within the horizon.

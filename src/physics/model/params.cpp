@@ -41,6 +41,30 @@ PhysicsParams PhysicsParams::carom() {
   return p;
 }
 
+PhysicsParams PhysicsParams::snooker() {
+  PhysicsParams p;  // the real models: throw, squirt, swerve, Mathavan's cushion
+  // WPBSA Official Rules, section 2: balls of 52.5 mm (+-0.05 mm), a set equal in weight
+  // within 3 g; a typical set weighs 141-142 g each (shared/physics-models.md: about 142 g).
+  p.ball_radius = 0.0525 / 2.0;
+  p.ball_mass = 0.142;
+  // The cushion's nose at the pool ratio of the ball (1.27 R, 33 mm): no published snooker
+  // figure was found; the cushion is cut to the ball as pool's is.
+  p.cushion_height = 1.27 * p.ball_radius;
+  // Mathavan, Jackson and Parkin, "Application of high-speed imaging to determine the
+  // dynamics of billiards", Am. J. Phys. 77 (2009) 788: snooker balls tracked on a napped
+  // snooker cloth gave a sliding coefficient of 0.212 and a rolling one of 0.0127.
+  p.sliding_friction = 0.212;
+  p.rolling_friction = 0.0127;
+  // Mathavan, Jackson and Parkin 2010 (Proc. IMechE C 224, 1863), measured on a snooker
+  // table: their cushion model fits the rebounds with e 0.98 and a ball-cushion mu of 0.14.
+  p.cushion_restitution = 0.98;
+  p.cushion_friction = 0.14;
+  // Ball-ball: the phenolic balls are the same make as pool's (Aramith); pool's measured
+  // restitution (0.95) and throw friction (Alciatore's fit, the default) stand. The cue's end
+  // mass stays pool's: against the lighter ball the same shaft squirts it more.
+  return p;
+}
+
 namespace {
 
 struct NamedPreset {
@@ -52,7 +76,8 @@ struct NamedPreset {
 const std::vector<NamedPreset>& presets() {
   static const std::vector<NamedPreset> list{{"real", &PhysicsParams::real},
                                              {"paper", &PhysicsParams::paper},
-                                             {"carom", &PhysicsParams::carom}};
+                                             {"carom", &PhysicsParams::carom},
+                                             {"snooker", &PhysicsParams::snooker}};
   return list;
 }
 

@@ -49,14 +49,70 @@ std::vector<Vec2> cornerLoop(const TableDef& d) {
   return {{-hx, hy}, {hx, hy}, {hx, -hy}, {-hx, -hy}};
 }
 
-double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+Vec2 nearestOnSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);
   const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return length(p - (a + ab * t));
+  return a + ab * t;
+}
+
+Vec2 nearestOnArc(Vec2 p, const CushionArc& arc) {
+  const Vec2 d = p - arc.centre;
+  const double distance = length(d);
+  if (distance > 0.0 && arc.covers(d)) return arc.centre + d * (arc.radius / distance);
+  return length(p - arc.start) <= length(p - arc.end) ? arc.start : arc.end;
+}
+
+// Calls visit(nearest point) for every piece of the cushion: each straight edge of the loop,
+// and each knuckle as its arc rather than the chords that stand for it in the loop.
+template <class Visit>
+void forEachPiece(const TableGeometry& t, Vec2 p, Visit visit) {
+  const auto& loop = t.cushion_loop;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    while (k < t.arcs.size() && t.arcs[k].last <= i) ++k;
+    if (k < t.arcs.size() && i >= t.arcs[k].first) continue;  // a chord of arc k
+    visit(nearestOnSegment(p, loop[i], loop[(i + 1) % loop.size()]));
+  }
+  for (const CushionArc& arc : t.arcs) visit(nearestOnArc(p, arc));
+}
+
+Vec2 leftOf(Vec2 v) {
+  return {-v.y, v.x};
+}
+
+// Appends a knuckle to the loop: from `start` counter-clockwise round `centre` through `turn`
+// to `end`, sampled in chords; the arc itself is kept in g.arcs. Its ends are passed as the
+// points the straight pieces on either side end at, so that they are the same vertices.
+void addKnuckle(TableGeometry& g, Vec2 start, Vec2 end, Vec2 centre, double rho, double turn) {
+  CushionArc arc;
+  arc.centre = centre;
+  arc.radius = rho;
+  const Vec2 from = start - centre;
+  const double a0 = std::atan2(from.y, from.x);
+  arc.start = start;
+  arc.end = end;
+  arc.first = g.cushion_loop.size();
+  const int pieces = std::max(2, static_cast<int>(std::ceil(turn / arcChordAngle(rho))));
+  g.cushion_loop.push_back(arc.start);
+  for (int k = 1; k < pieces; ++k) {
+    g.cushion_loop.push_back(centre + fromAngle(a0 + turn * k / pieces) * rho);
+  }
+  g.cushion_loop.push_back(arc.end);
+  arc.last = g.cushion_loop.size() - 1;
+  g.arcs.push_back(arc);
 }
 
 }  // namespace
+
+double arcChordAngle(double radius) {
+  // A chord spanning angle a lies radius (1 - cos(a / 2)) behind the arc at its middle.
+  return 2.0 * std::acos(std::max(-1.0, 1.0 - kArcChordError / radius));
+}
+
+bool CushionArc::covers(Vec2 d) const {
+  return cross(start - centre, d) >= 0.0 && cross(d, end - centre) >= 0.0;
+}
 
 TableDef TableDef::carom() {
   TableDef t;
@@ -73,6 +129,39 @@ TableDef TableDef::caromSmall() {
   return t;
 }
 
+TableDef TableDef::snooker() {
+  TableDef t;
+  // WPBSA Official Rules, section 1 (a): the playing area within the cushion faces measures
+  // 11 ft 8 1/2 in x 5 ft 10 in (3569 x 1778 mm), +-13 mm.
+  t.length = 3.569;
+  t.width = 1.778;
+  // The openings follow the WPBSA's templates, which are not public (rule 1 (c) (ii)). The
+  // published approximations: a corner opening of about 3.5 in (89 mm), a middle one of
+  // about 4.1-4.3 in (here 4.2 in, 107 mm); jaw faces at 142-145 degrees to the nose at the
+  // corners and 100-104 at the middle (polymorvic/deep-peep-snooker src/utils/const.py, which
+  // also gives the corner mouth as 89 mm): the middles of those ranges.
+  t.corner_pocket = 0.0889;
+  t.side_pocket = 0.1067;
+  t.corner_jaw_deg = 143.5;
+  t.side_jaw_deg = 102.0;
+  // The knuckles: tailuge/billiards (src/view/pocketgeometry.ts) rounds its snooker jaws with
+  // radii of 0.62 R at the corners and 0.4 R at the middles; R = 26.25 mm.
+  t.corner_jaw_radius = 0.0163;
+  t.side_jaw_radius = 0.0105;
+  return t;
+}
+
+TableDef TableDef::snookerTenFoot() {
+  TableDef t = snooker();
+  // The same proportions at 10/12 the size: every length, the angles unchanged.
+  constexpr double kScale = 10.0 / 12.0;
+  for (double* v : {&t.length, &t.width, &t.corner_pocket, &t.side_pocket, &t.corner_jaw_radius,
+                    &t.side_jaw_radius}) {
+    *v *= kScale;
+  }
+  return t;
+}
+
 namespace {
 
 struct NamedTable {
@@ -86,7 +175,9 @@ const std::vector<NamedTable>& namedTables() {
                                               {"8ft", &TableDef::eightFoot},
                                               {"7ft", &TableDef::sevenFoot},
                                               {"carom", &TableDef::carom},
-                                              {"carom-small", &TableDef::caromSmall}};
+                                              {"carom-small", &TableDef::caromSmall},
+                                              {"snooker", &TableDef::snooker},
+                                              {"snooker-10ft", &TableDef::snookerTenFoot}};
   return tables;
 }
 
@@ -167,7 +258,19 @@ TableGeometry buildTable(const TableDef& def, double ball_radius) {
     const double shelf = f.corner ? kCornerShelf : kSideShelf;
     p.drop_centre = (f.jaw_a + f.jaw_b) * 0.5 + f.outward * (shelf + p.drop_radius);
 
-    g.cushion_loop.push_back(f.jaw_a);
+    const double rho = f.corner ? def.corner_jaw_radius : def.side_jaw_radius;
+    p.nose_a = f.jaw_a;
+    p.nose_b = f.jaw_b;
+    if (rho > 0.0) {
+      // The knuckle: tangent to the nose and to the jaw face, the nose turning left (clockwise
+      // walk, outside on the left) through `turn` round a centre inside the cushion.
+      const double tangent = rho * std::tan(0.5 * turn);
+      p.nose_a = f.jaw_a - rail_in * tangent;
+      addKnuckle(g, p.nose_a, f.jaw_a + jaw_a_dir * tangent, p.nose_a + leftOf(rail_in) * rho, rho,
+                 turn);
+    } else {
+      g.cushion_loop.push_back(f.jaw_a);
+    }
     g.cushion_loop.push_back(qa);
     // The cup: clockwise round the drop centre from qa to qb, the long way (behind the hole).
     const Vec2 da = qa - p.drop_centre, db = qb - p.drop_centre;
@@ -184,7 +287,15 @@ TableGeometry buildTable(const TableDef& def, double ball_radius) {
       g.cushion_loop.push_back(p.drop_centre + fromAngle(a0 - sweep * u) * radius);
     }
     g.cushion_loop.push_back(qb);
-    g.cushion_loop.push_back(f.jaw_b);
+    if (rho > 0.0) {
+      // Jaw b's knuckle, walked from the jaw face out onto the next rail: again a left turn.
+      const double tangent = rho * std::tan(0.5 * turn);
+      p.nose_b = f.jaw_b + rail_out * tangent;
+      const Vec2 on_jaw = f.jaw_b + jaw_b_dir * tangent;
+      addKnuckle(g, on_jaw, p.nose_b, p.nose_b + leftOf(rail_out) * rho, rho, turn);
+    } else {
+      g.cushion_loop.push_back(f.jaw_b);
+    }
   }
   return g;
 }
@@ -212,7 +323,8 @@ namespace {
 bool sameTable(const TableDef& a, const TableDef& b) {
   return a.length == b.length && a.width == b.width && a.corner_pocket == b.corner_pocket &&
          a.side_pocket == b.side_pocket && a.corner_jaw_deg == b.corner_jaw_deg &&
-         a.side_jaw_deg == b.side_jaw_deg && a.pockets == b.pockets;
+         a.side_jaw_deg == b.side_jaw_deg && a.pockets == b.pockets &&
+         a.corner_jaw_radius == b.corner_jaw_radius && a.side_jaw_radius == b.side_jaw_radius;
 }
 
 std::optional<std::string> checkTableOnce(const TableDef& def, double r);
@@ -241,15 +353,32 @@ namespace {
 
 std::optional<std::string> checkTableOnce(const TableDef& def, double r) {
   if (!def.pockets) return std::nullopt;  // four straight cushions cross nothing
+  for (auto [name, rho] : {std::pair{"corner_jaw_radius", def.corner_jaw_radius},
+                           std::pair{"side_jaw_radius", def.side_jaw_radius}}) {
+    if (!(rho >= 0.0 && rho < def.width / 2.0)) {
+      return std::string("table: ") + name + " is " + metres(rho) +
+             ", not a knuckle radius (0, a sharp jaw, or up to half the width)";
+    }
+  }
+  const double jaw_len = std::max(kJawLength, 1.2 * r);
+  // How far along the nose and along the jaw face a knuckle reaches from where they meet.
+  const double corner_knuckle =
+      def.corner_jaw_radius * std::tan(0.5 * degToRad(180.0 - def.corner_jaw_deg));
+  const double side_knuckle =
+      def.side_jaw_radius * std::tan(0.5 * degToRad(180.0 - def.side_jaw_deg));
+  if (corner_knuckle >= jaw_len || side_knuckle >= jaw_len) {
+    return "table: a knuckle runs past the end of its jaw face (" + metres(jaw_len) +
+           " long): make the jaw radius smaller";
+  }
   const double rail = 2.0 * r * limits::kMinRailInDiameters;
-  const double corner_cut = def.corner_pocket / std::sqrt(2.0);
+  const double corner_cut = def.corner_pocket / std::sqrt(2.0) + corner_knuckle;
   const double short_rail = def.width - 2.0 * corner_cut;
   if (short_rail < rail) {
     return "table: the end rails between the corner pockets are " + metres(short_rail) +
            " long, less than a ball's diameter (" + metres(rail) +
            "): widen the table or narrow the corner pockets";
   }
-  const double long_rail = def.length / 2.0 - corner_cut - def.side_pocket / 2.0;
+  const double long_rail = def.length / 2.0 - corner_cut - def.side_pocket / 2.0 - side_knuckle;
   if (long_rail < rail) {
     return "table: the side rails between a corner and a side pocket are " + metres(long_rail) +
            " long, less than a ball's diameter (" + metres(rail) +
@@ -265,7 +394,7 @@ std::optional<std::string> checkTableOnce(const TableDef& def, double r) {
         return std::string(
                    "table: the pocket jaws and cups cross each other or the rails (jaw "
                    "faces are ") +
-               metres(std::max(kJawLength, 1.2 * r)) +
+               metres(jaw_len) +
                " long): widen the mouths or bring the jaw angles further from 180 degrees";
       }
     }
@@ -291,44 +420,32 @@ bool TableGeometry::ballFits(Vec2 c, double r) const {
   if (!insideLoop(c) || pocketAt(c)) return false;
   // A ball exactly frozen to a cushion is on the table: allow rounding of the input.
   constexpr double kTouchTolerance = 1e-7;
-  const std::size_t n = cushion_loop.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (distanceToSegment(c, cushion_loop[i], cushion_loop[(i + 1) % n]) < r - kTouchTolerance) {
-      return false;
-    }
-  }
-  return true;
+  bool clear = true;
+  forEachPiece(*this, c, [&](Vec2 nearest) {
+    if (length(c - nearest) < r - kTouchTolerance) clear = false;
+  });
+  return clear;
 }
 
 double cushionSink(const TableGeometry& t, Vec2 c, double r) {
   double sink = 0.0;
-  const auto& loop = t.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
-    const Vec2 ab = b - a;
-    const double u = std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
-    sink = std::max(sink, r - length(c - (a + ab * u)));
-  }
+  forEachPiece(t, c, [&](Vec2 nearest) { sink = std::max(sink, r - length(c - nearest)); });
   return sink;
 }
 
 Vec2 outOfCushions(const TableGeometry& t, Vec2 c, double r) {
-  const auto& loop = t.cushion_loop;
   // A ball in a wedge is lifted off one face onto the other: a few passes settle it.
   for (int pass = 0; pass < 4; ++pass) {
     double deepest = 0.0;
     Vec2 lift;
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
-      const Vec2 ab = b - a;
-      const Vec2 nearest = a + ab * std::clamp(dot(c - a, ab) / dot(ab, ab), 0.0, 1.0);
+    forEachPiece(t, c, [&](Vec2 nearest) {
       const double gap = length(c - nearest);
       // A centre on the face itself has no side to be lifted to.
       if (r - gap > deepest && gap > 0.0) {
         deepest = r - gap;
         lift = (c - nearest) * (deepest / gap);
       }
-    }
+    });
     if (deepest <= 0.0) break;
     c += lift;
   }
@@ -353,7 +470,7 @@ std::vector<std::pair<Vec2, Vec2>> cushionNoses(const TableGeometry& table) {
     return noses;
   }
   for (std::size_t i = 0; i < pk.size(); ++i)
-    noses.emplace_back(pk[i].jaw_b, pk[(i + 1) % pk.size()].jaw_a);
+    noses.emplace_back(pk[i].nose_b, pk[(i + 1) % pk.size()].nose_a);
   return noses;
 }
 
@@ -370,10 +487,10 @@ std::vector<Vec2> pocketOutline(const TableGeometry& table, const Pocket& pocket
   std::vector<Vec2> out;
   const auto& loop = table.cushion_loop;
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (loop[i] != pocket.jaw_a) continue;
+    if (loop[i] != pocket.nose_a) continue;
     for (std::size_t k = i; k < i + loop.size(); ++k) {
       out.push_back(loop[k % loop.size()]);
-      if (loop[k % loop.size()] == pocket.jaw_b) break;
+      if (loop[k % loop.size()] == pocket.nose_b) break;
     }
     break;
   }

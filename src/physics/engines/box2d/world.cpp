@@ -294,6 +294,21 @@ struct World::Impl final : physics::EngineBalls {
     if (arc_log) arc_log->pocket(i, time, b.pos);
   }
 
+  // How far (1 - cos) Box2D's normal at a contact may stray from the exact one and still be the
+  // same face: float rounding on a straight face; on a knuckle, which the chain holds as chords,
+  // as far as a chord turns, for Box2D's impulse to be applied along the arc's own normal.
+  double faceAgreement(Vec2 p) const {
+    double agreement = 1e-8;
+    for (const physics::Cushions::Arc& arc : search.cushions.arcs) {
+      const Vec2 d = p - arc.centre;
+      const double gap = length(d) - arc.radius - phys.ball_radius;
+      if (std::abs(gap) <= physics::kTouchTolerance && arc.covers(d)) {
+        agreement = std::max(agreement, 1.0 - std::cos(arcChordAngle(arc.radius)));
+      }
+    }
+    return agreement;
+  }
+
   // The paper's law at a cushion, by Box2D's contact solver.
   physics::CushionRebound restitutionBounce(std::size_t i, const Kinematics& s_in, Vec2 predicted,
                                             const PhysicsParams&) override {
@@ -318,9 +333,17 @@ struct World::Impl final : physics::EngineBalls {
     // sequential solver can push a ball wedged between two faces out faster than it came (each
     // face restores the full approach speed), and then the same law is applied by hand, one
     // face at a time.
-    const bool one_face = dot(normalized(pushed), predicted) > 1.0 - 1e-8;
-    const Vec2 v_box2d = one_face ? v_in + predicted * (length(pushed) / b.mass)
-                                  : fromB2(b.body->GetLinearVelocity());
+    const double agreement = faceAgreement(s_in.p);
+    const bool one_face = dot(normalized(pushed), predicted) > 1.0 - agreement;
+    double along = length(pushed);
+    // On a knuckle Box2D met a chord, and sized its impulse by the approach along the chord's
+    // normal: the restitution it applied is carried over to the approach along the arc's.
+    const double chord_approach = dot(v_in, normalized(pushed));
+    if (one_face && agreement > 1e-8 && chord_approach < 0.0) {
+      along *= dot(v_in, predicted) / chord_approach;
+    }
+    const Vec2 v_box2d =
+        one_face ? v_in + predicted * (along / b.mass) : fromB2(b.body->GetLinearVelocity());
     if (hit.impulse > 0.0 && dot(v_box2d, v_box2d) <= dot(v_in, v_in)) {
       hit.k.v = v_box2d;
       hit.normal = one_face ? predicted : normalized(pushed);

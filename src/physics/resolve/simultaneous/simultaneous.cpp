@@ -182,6 +182,11 @@ std::optional<Vec2> secondFace(const Kinematics& k, Vec2 first, double r, const 
     const double distance = length(d);
     if (distance > 0.0) consider(d / distance, distance - r);
   }
+  for (const Cushions::Arc& arc : cushions.arcs) {
+    const Vec2 d = k.p - arc.centre;
+    const double distance = length(d);
+    if (distance > 0.0 && arc.covers(d)) consider(d / distance, distance - arc.radius - r);
+  }
   return best;
 }
 
