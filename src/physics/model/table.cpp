@@ -148,6 +148,7 @@ TableDef TableDef::snooker() {
   // radii of 0.62 R at the corners and 0.4 R at the middles; R = 26.25 mm.
   t.corner_jaw_radius = 0.0163;
   t.side_jaw_radius = 0.0105;
+  t.marks = TableMarks::Snooker;
   return t;
 }
 
