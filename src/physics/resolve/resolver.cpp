@@ -1,8 +1,10 @@
 #include "physics/resolve/resolver.hpp"
 
+#include <algorithm>
 #include <tuple>
 
 #include "common/log.hpp"
+#include "physics/model/pocket_capture.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 #include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
@@ -218,7 +220,26 @@ void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, V
   logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
 }
 
+// The ball's centre is over the fall edge: with the "fall" model it may yet be thrown back
+// out (fallIntoPocket). The whole flight is decided now, for nothing on the table can reach a
+// ball below the slate; it comes back at its exact time and place. Its contacts with the back
+// and facings are recorded now, at the fall, to keep the events in time order.
 void Resolver::pocket(double t, EngineBalls& balls, std::size_t i, PocketId pocket) {
+  if (p_.pocket == PocketModel::Fall) {
+    const auto hole = std::find_if(table_.pockets.begin(), table_.pockets.end(),
+                                   [&](const Pocket& candidate) { return candidate.id == pocket; });
+    if (hole != table_.pockets.end()) {
+      const PocketFall fall = fallIntoPocket(balls.now(i), *hole, cushions_, p_);
+      if (!fall.caught) {
+        for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v);
+        balls.comeBack(i, t + fall.t_out, fall.out);
+        logger("physics")->debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s)", t,
+                                 balls.id(i), pocketName(pocket), fall.wall_contacts.size(),
+                                 fall.t_out);
+        return;
+      }
+    }
+  }
   balls.drop(i, pocket);
   Event e;
   e.type = EventType::Pocket;
