@@ -42,9 +42,6 @@ class EngineBalls {
   virtual void nextPhase(std::size_t i) = 0;
   /// The ball leaves the table into `pocket` (the resolver records the event).
   virtual void drop(std::size_t i, PocketId pocket) = 0;
-  /// The ball, in the air over a pocket from now on, is thrown back out: it is on the cloth
-  /// again at time t0 (later than now) in state k, and meets nothing before then.
-  virtual void comeBack(std::size_t i, double t0, const Kinematics& k) = 0;
 
   /// An engine with a ball solver of its own resolves the contact of i and j and says true;
   /// false leaves it to the resolver.
@@ -85,6 +82,7 @@ class Resolver {
   void settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k, Vec2 normal,
                        Vec2 predicted, double impulse);
   void pocket(double t, EngineBalls& balls, std::size_t i, PocketId pocket);
+  bool thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId pocket);
   std::vector<Vec2> faces(Vec2 p) const;
 
   const PhysicsParams& p_;

@@ -294,15 +294,6 @@ struct World::Impl final : physics::EngineBalls {
     if (arc_log) arc_log->pocket(i, time, b.pos);
   }
 
-  // Its arc starts at t0: until then it is in the air, and the searches, which start from an
-  // arc's beginning, find nothing for it. Its body stays where it fell until mirrored.
-  void comeBack(std::size_t i, double t0, const Kinematics& s) override {
-    Ball& b = balls[i];
-    b.arc = physics::beginArc(t0, s, phys);
-    logArc(b);
-    queue.changed(i);
-  }
-
   // The paper's law at a cushion, by Box2D's contact solver.
   physics::CushionRebound restitutionBounce(std::size_t i, const Kinematics& s_in, Vec2 predicted,
                                             const PhysicsParams&) override {

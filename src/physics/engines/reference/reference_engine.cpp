@@ -246,15 +246,6 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     if (i < log_.ids().size()) log_.pocket(i, t_, a.state.pos);
   }
 
-  // Its arc starts at t0: until then it is in the air, and the searches, which start from an
-  // arc's beginning, find nothing for it (its state reads as it will come back).
-  void comeBack(std::size_t i, double t0, const physics::Kinematics& k) override {
-    Ball& b = balls_[i];
-    b.arc = physics::beginArc(t0, k, p_);
-    logArc(b);
-    queue_.changed(i);
-  }
-
   PhysicsParams p_;
   StepParams sp_;
   TableGeometry table_;
