@@ -83,6 +83,13 @@ struct BallFriction {
   double at(double sliding) const { return a + b * std::exp(-c * sliding); }
 };
 
+/// What happens once a ball's centre crosses a pocket's fall edge, the edge of the slate
+/// (docs/physics.md, "Pockets: falling, the back and bouncing out").
+enum class PocketModel {
+  Drop,  ///< pocketed at once, whatever its speed (the model before issue 34; the paper's)
+  Fall,  ///< falls as a projectile: caught, or thrown back out by the pocket's back and facings
+};
+
 /// How contacts that meet within one contact are resolved: one after the other, each with its
 /// own model (the paper's way, and the default), or their normal impulses solved together.
 enum class ContactOrder {
@@ -165,6 +172,12 @@ struct PhysicsParams {
   ContactOrder corner = ContactOrder::Sequential;
   /// s, how long a ball stays in a cushion; read by "corner": "simultaneous" only.
   double cushion_contact_time = 0.01;
+  /// What a pocket does with a ball whose centre crosses its fall edge.
+  PocketModel pocket = PocketModel::Fall;
+  /// The normal restitution of a pocket's back and facings met by a falling ball (the liner,
+  /// leather and rubber over wood); read by "pocket": "fall" only. An estimate: see
+  /// docs/physics.md, "Pockets".
+  double pocket_restitution = 0.5;
   double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
   double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
 
@@ -214,6 +227,8 @@ struct StepParams {
 const char* clothModelName(ClothModel m);
 const char* contactModelName(ContactModel m);
 const char* contactOrderName(ContactOrder o);
+const char* pocketModelName(PocketModel m);
+std::optional<PocketModel> pocketModelFromName(const std::string& name);
 std::optional<ContactOrder> contactOrderFromName(const std::string& name);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
 std::optional<ContactModel> contactModelFromName(const std::string& name);

@@ -305,6 +305,10 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
   p.cushion_restitution_quadratic =
       uniform(orders, -limits::kMaxRestitutionQuadratic, limits::kMaxRestitutionQuadratic);
   p.cushion_restitution_min = uniform(orders, 0.0, 1.0);
+  // The pocket model and its back's restitution, from a copy of their own as well.
+  std::uint64_t pockets = rng ^ 0x706f636b657473ULL;
+  p.pocket = splitmix64(pockets) % 2 ? PocketModel::Fall : PocketModel::Drop;
+  p.pocket_restitution = uniform(pockets, 0.0, 1.0);
   return p;
 }
 

@@ -246,6 +246,8 @@ nlohmann::ordered_json physicsToJson(const PhysicsParams& p) {
   }
   if (p.corner == ContactOrder::Simultaneous) out["cushion_contact_time"] = p.cushion_contact_time;
   if (p.frozen == ContactOrder::Simultaneous) out["frozen_tolerance"] = p.frozen_tolerance;
+  out["pocket"] = pocketModelName(p.pocket);
+  if (p.pocket == PocketModel::Fall) out["pocket_restitution"] = p.pocket_restitution;
   const unsigned cloth = 1u << static_cast<unsigned>(p.cloth);
   for (const ParamField& f : kParamFields) {
     if ((f.used_by & cloth) && !p.cushion.ignores(f.name)) out[f.name] = p.*(f.field);
@@ -303,6 +305,15 @@ PhysicsParams parsePhysics(const json& v) {
                                   "\"sequential\" or \"simultaneous\"");
       continue;
     }
+    if (key == "pocket") {
+      p.pocket = modelNamed(item.value(), field_path, pocketModelFromName, "pocket",
+                            "\"fall\" or \"drop\"");
+      continue;
+    }
+    if (key == "pocket_restitution") {
+      p.pocket_restitution = number(item.value(), field_path, Bounds::closed(0.0, 1.0));
+      continue;
+    }
     if (key == "frozen_tolerance") {
       p.frozen_tolerance =
           number(item.value(), field_path, Bounds::nonNegative(limits::kMaxFrozenTolerance));
@@ -319,7 +330,7 @@ PhysicsParams parsePhysics(const json& v) {
       std::string list = "preset, cloth, ball_ball, ball_friction, cushion";
       for (const CushionParamField& c : kCushionParamFields) list += ", " + std::string(c.name);
       for (const OrderField& o : kOrderFields) list += ", " + std::string(o.name);
-      list += ", cushion_contact_time, frozen_tolerance";
+      list += ", cushion_contact_time, frozen_tolerance, pocket, pocket_restitution";
       for (const ParamField& pf : kParamFields) list += ", " + std::string(pf.name);
       refuse(field_path, "unknown parameter (expected one of: " + list + ")");
     }
@@ -346,6 +357,10 @@ PhysicsParams parsePhysics(const json& v) {
   if (optional(v, "cushion_contact_time") && p.corner != ContactOrder::Simultaneous) {
     refuse(member(path, "cushion_contact_time"),
            "not used by the \"sequential\" corner (only by \"corner\": \"simultaneous\")");
+  }
+  if (optional(v, "pocket_restitution") && p.pocket != PocketModel::Fall) {
+    refuse(member(path, "pocket_restitution"),
+           "not used by the \"drop\" pocket (only by \"pocket\": \"fall\")");
   }
   if (!optional(v, "cushion_height") && optional(v, "ball_radius")) {
     p.cushion_height = 1.27 * p.ball_radius;  // 63.5 % of the diameter, as for the default ball

@@ -35,7 +35,11 @@ NextEvent EventSearch::ownEvent(std::size_t i, const Arc& arc, bool may_drop) co
   }
   if (!may_drop && sensor_margin <= 0.0) return best;
   for (const Pocket& pk : table->pockets) {
-    const double radius = pk.drop_radius + (may_drop ? 0.0 : sensor_margin);
+    double radius = pk.drop_radius + (may_drop ? 0.0 : sensor_margin);
+    // An arc that starts within the sensor's reach (a ball thrown back out of a pocket, or set
+    // moving there) is "entering" it from its start, long past once the ball has left and the
+    // sensor has let it go: its sensor event is where it reaches the hole itself.
+    if (!may_drop && length(path.p - pk.drop_centre) < radius) radius = pk.drop_radius;
     if (auto s = circleEntry(path, pk.drop_centre, radius, best_s)) {
       NextEvent e;
       e.kind = may_drop ? NextEvent::Kind::Pocket : NextEvent::Kind::Sensor;

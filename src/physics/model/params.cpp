@@ -16,6 +16,8 @@ PhysicsParams PhysicsParams::paper() {
   p.ball_ball = BallBallModel::named("frictionless");
   p.cue_end_mass = 0.0;
   p.cushion = CushionModel::named("simple");
+  // The paper pockets a ball the moment its centre is over the hole.
+  p.pocket = PocketModel::Drop;
   return p;
 }
 
@@ -119,6 +121,16 @@ const char* contactOrderName(ContactOrder o) {
 std::optional<ContactOrder> contactOrderFromName(const std::string& name) {
   if (name == "sequential") return ContactOrder::Sequential;
   if (name == "simultaneous") return ContactOrder::Simultaneous;
+  return std::nullopt;
+}
+
+const char* pocketModelName(PocketModel m) {
+  return m == PocketModel::Drop ? "drop" : "fall";
+}
+
+std::optional<PocketModel> pocketModelFromName(const std::string& name) {
+  if (name == "drop") return PocketModel::Drop;
+  if (name == "fall") return PocketModel::Fall;
   return std::nullopt;
 }
 

@@ -1,8 +1,10 @@
 #include "physics/resolve/resolver.hpp"
 
+#include <algorithm>
 #include <tuple>
 
 #include "common/log.hpp"
+#include "physics/model/pocket_capture.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 #include "physics/resolve/ball_ball/collide.hpp"
 #include "physics/resolve/cushion/contact.hpp"
@@ -218,7 +220,13 @@ void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, V
   logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
 }
 
+// The ball's centre is over the fall edge. With the "fall" model it may yet be thrown back out
+// (fallIntoPocket): the whole flight is worked out now, for nothing on the table can reach a
+// ball below the slate, and collapsed into this instant (docs/physics.md, "Pockets"): the
+// ball is set on the fall edge where it would come back, moving as it would, its contacts with
+// the back and facings recorded as cushion contacts now.
 void Resolver::pocket(double t, EngineBalls& balls, std::size_t i, PocketId pocket) {
+  if (p_.pocket == PocketModel::Fall && thrownBack(t, balls, i, pocket)) return;
   balls.drop(i, pocket);
   Event e;
   e.type = EventType::Pocket;
@@ -227,6 +235,26 @@ void Resolver::pocket(double t, EngineBalls& balls, std::size_t i, PocketId pock
   e.pocket = pocket;
   events_.push_back(e);
   logger("physics")->debug("t={:.6f} ball {} pocketed in {}", t, e.a, pocketName(pocket));
+}
+
+// True when the ball comes back out (and is set back on the table); false when it is caught.
+bool Resolver::thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId pocket) {
+  const auto hole = std::find_if(table_.pockets.begin(), table_.pockets.end(),
+                                 [&](const Pocket& candidate) { return candidate.id == pocket; });
+  if (hole == table_.pockets.end()) return false;
+  const PocketFall fall = fallIntoPocket(balls.now(i), *hole, cushions_, p_);
+  if (fall.caught) return false;
+  // A ball on the table where it would climb out blocks the way: it falls back in.
+  for (std::size_t m = 0; m < balls.count(); ++m) {
+    if (m == i || !balls.onTable(m)) continue;
+    if (length(balls.centre(m) - fall.out.p) < 2.0 * p_.ball_radius) return false;
+  }
+  for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v);
+  balls.restart(i, fall.out);
+  logger("physics")->debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)",
+                           t, balls.id(i), pocketName(pocket), fall.wall_contacts.size(),
+                           fall.t_out);
+  return true;
 }
 
 std::vector<Vec2> Resolver::faces(Vec2 p) const {

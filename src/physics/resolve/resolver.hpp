@@ -82,6 +82,7 @@ class Resolver {
   void settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k, Vec2 normal,
                        Vec2 predicted, double impulse);
   void pocket(double t, EngineBalls& balls, std::size_t i, PocketId pocket);
+  bool thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId pocket);
   std::vector<Vec2> faces(Vec2 p) const;
 
   const PhysicsParams& p_;
