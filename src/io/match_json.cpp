@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <stdexcept>
 
 #include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
@@ -111,7 +112,11 @@ MatchScript parseDocument(const json& doc) {
       {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
   MatchScript script;
   MatchSetup& setup = script.setup;
-  setup.setGame(gameField(doc));
+  try {
+    setup.setGame(gameField(doc));
+  } catch (const std::invalid_argument& e) {
+    refuse("game", e.what());
+  }
   if (const json* p = optional(doc, "points")) {
     if (gameDef(setup.game).default_points == 0) {
       refuse("points", std::string(rules::gameName(setup.game)) +

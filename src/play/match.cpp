@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
@@ -14,10 +15,19 @@ namespace nineball {
 
 void MatchSetup::setGame(rules::Game g) {
   const GameDef& def = gameDef(g);
+  const std::optional<TableDef> named_table = TableDef::named(def.tables.front());
+  const std::optional<PhysicsParams> preset = PhysicsParams::preset(def.physics);
+  if (!named_table || !preset) {
+    // A game may name equipment that is built on another branch (snooker's, issue 34).
+    throw std::invalid_argument(std::string(def.name) + " is played on the table \"" +
+                                def.tables.front() + "\" with the physics \"" + def.physics +
+                                "\", and this build has " +
+                                (named_table ? "no such physics" : "no such table"));
+  }
   game = g;
   rules = def.rule_sets.front();
-  table = TableDef::named(def.tables.front()).value();
-  physics = PhysicsParams::preset(def.physics).value();
+  table = *named_table;
+  physics = *preset;
   points = def.default_points;
 }
 
