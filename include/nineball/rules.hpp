@@ -140,7 +140,7 @@ struct Verdict {
   /// Three-cushion: the cushions the cue ball met before its second object ball (or in the
   /// whole shot when it did not reach one), the count a point needs three of.
   int cushions = 0;
-  /// Snooker: the foul was also a miss (WPBSA 3.14, in the form docs/rules.md states).
+  /// Snooker: the foul was also a miss (WPBSA 3.14, in the form docs/cli.md, "Snooker", states).
   bool miss = false;
   /// Snooker: the ball nominated as on (the colour after a red, or the free ball); 0 for none.
   int nominated = 0;

@@ -20,16 +20,18 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-// The highest ball number of any game of the registry (snooker's black).
-constexpr int kHighestBall = 21;
+// The highest ball a call may name in a pool game (a game with more balls says so:
+// GameDef::highest_ball, snooker's black 21).
+constexpr int kHighestPoolBall = 15;
 // The longest game played to points a script may ask for (UMB distances reach 50).
 constexpr int kMostPoints = 100;
 
-rules::Call parseCall(const json& v, const std::string& path) {
+rules::Call parseCall(const json& v, const std::string& path, rules::Game game) {
   expectObject(v, path);
   allowOnly(v, path, {"ball", "pocket"});
   rules::Call call;
-  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, kHighestBall);
+  const int highest = std::max(kHighestPoolBall, gameDef(game).highest_ball);
+  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, highest);
   const std::string name = text(required(v, path, "pocket"), member(path, "pocket"));
   const auto pocket = pocketFromName(name);
   if (!pocket) {
@@ -75,7 +77,7 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
     }
     turn.cue = Vec2{number((*c)[0], element(cpath, 0)), number((*c)[1], element(cpath, 1))};
   }
-  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"));
+  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"), game);
   return turn;
 }
 
@@ -112,10 +114,17 @@ MatchScript parseDocument(const json& doc) {
       {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
   MatchScript script;
   MatchSetup& setup = script.setup;
+  const rules::Game game = gameField(doc);
   try {
-    setup.setGame(gameField(doc));
+    setup.setGame(game);
   } catch (const std::invalid_argument& e) {
-    refuse("game", e.what());
+    // The game's own equipment is missing from this build: a script may still bring its own.
+    if (!optional(doc, "table") || !optional(doc, "physics")) {
+      refuse("game", std::string(e.what()) + "; give the script \"table\" and \"physics\"");
+    }
+    setup.game = game;
+    setup.rules = gameDef(game).rule_sets.front();
+    setup.points = gameDef(game).default_points;
   }
   if (const json* p = optional(doc, "points")) {
     if (gameDef(setup.game).default_points == 0) {

@@ -102,7 +102,7 @@ int penaltyOf(const Aim& aim, std::optional<int> first, const std::vector<int>& 
 }
 
 // 3.14: a foul in which the cue ball does not first hit a ball on is a miss, unless the striker
-// was snookered before the stroke or needed snookers then (docs/rules.md: nineball's form).
+// was snookered before the stroke or needed snookers then (docs/cli.md, "Snooker": nineball's form).
 bool isMiss(const RackState& s, const ShotSummary& shot, Foul foul, bool needed_snookers) {
   if (foul != Foul::NoContact && foul != Foul::WrongBallFirst) return false;
   if (s.snooker.respotted_black) return false;  // the frame ends on the foul
@@ -120,7 +120,7 @@ void blackDecides(RackState& s, Verdict& v) {
   }
   // Level: the black goes back on its spot and the cue ball in hand in the D. WPBSA has the
   // players draw lots for who plays first; nineball gives it to the player who did not play
-  // the last stroke (deterministic; docs/rules.md).
+  // the last stroke (deterministic; docs/cli.md, "Snooker").
   v.black_respotted = true;
   s.snooker.respotted_black = true;
   if (!contains(v.to_spot, kBlack)) v.to_spot.push_back(kBlack);

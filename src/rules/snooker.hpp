@@ -5,7 +5,7 @@
 namespace nineball::rules {
 
 /// Snooker under the WPBSA's Official Rules of the Games of Snooker and English Billiards
-/// (section 3), as a pure state machine (docs/rules.md, "Snooker", says what is judged and how):
+/// (section 3), as a pure state machine (docs/cli.md, "Snooker", says what is judged and how):
 /// a red, then a colour of the striker's nomination while reds remain, then the colours in
 /// ascending order; colours potted while reds remain (and the colour after the last red) are
 /// re-spotted; fouls give the opponent the value of the ball on or of the highest ball
