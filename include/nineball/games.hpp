@@ -38,7 +38,7 @@ enum class CueArea {
 /// clear of the other balls is checked apart).
 bool inCueArea(CueArea area, const TableDef& table, Vec2 c);
 /// The area in words for a message: "behind the head string (x <= -0.635)", "in the D
-/// (x <= -1.048, within 0.292 m of (-1.048, 0))"; empty for Anywhere.
+/// (x <= -1.0475, within 0.2920 m of (-1.0475, 0))"; empty for Anywhere.
 std::string cueAreaText(CueArea area, const TableDef& table);
 
 /// Where a ball the rules put back on the table goes: `balls` are every ball as they lie.

@@ -70,7 +70,7 @@ bool inCueArea(CueArea area, const TableDef& table, Vec2 c) {
 std::string cueAreaText(CueArea area, const TableDef& table) {
   const auto metres = [](double x) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3f", x);
+    std::snprintf(text, sizeof text, "%.4f", x);
     return std::string(text);
   };
   switch (area) {

@@ -78,6 +78,10 @@ void Rack::decide(bool shoot_now) {
   if (!awaitingDecision()) throw std::logic_error("no push-out is waiting for a decision");
   const Decision d = s_.decision;
   s_.decision = Decision::None;
+  if (d == Decision::PlayOrPutBack || d == Decision::PlayPutBackOrReplace) {
+    // Snooker's misses count in a row only while the balls are replaced (WPBSA 3.14(h)).
+    s_.snooker.misses[s_.shooter == Player::A ? 1 : 0] = 0;
+  }
   if (shoot_now) return;
   if (d != Decision::RerackOrPlayOn) {
     // Passed back (or the offender put back in): a free ball stated for the other is void

@@ -325,6 +325,13 @@ TEST(SnookerRules, ThreeMissesInARowLoseTheFrame) {
   EXPECT_EQ(v.foul, Foul::ThreeMisses);
   EXPECT_EQ(v.winner, Player::B);
   EXPECT_TRUE(r.over());
+  // Played on or put back in between, the misses do not add up.
+  Rack played_on = frame();
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(played_on.shoot(hit(kPink)).miss);
+    played_on.decide(false);
+  }
+  EXPECT_FALSE(played_on.over());
   // A stroke that is not a miss starts the count again.
   Rack again = frame();
   again.shoot(hit(kPink));
