@@ -87,6 +87,8 @@ Foul foulOf(const ShotSummary& shot, const Aim& aim, std::optional<int> first,
   if (shot.cue_pocketed) return Foul::Scratch;
   if (!first) return Foul::NoContact;
   if (!aim.isOn(*first)) return Foul::WrongBallFirst;
+  // 3.12: a free ball nominated must be hit first (a ball on potted after it still scores).
+  if (aim.free_ball != 0 && *first != aim.free_ball) return Foul::WrongBallFirst;
   for (int b : pocketed) {
     if (!aim.isOn(b)) return Foul::PottedNotOn;
   }

@@ -229,6 +229,21 @@ TEST(SnookerRules, AFreeBallCountsAsTheBallOnAndIsRespotted) {
   EXPECT_FALSE(r.freeBall());
 }
 
+// 3.12(b): the free ball nominated must be hit first; a red potted after it still scores.
+TEST(SnookerRules, TheNominatedFreeBallMustBeHitFirst) {
+  Rack r = frame();
+  r.shoot(nothingHit());
+  r.stateFreeBall(true);
+  r.decide(true);
+  Rack after = r;
+  Verdict v = r.shoot(called(kBlack, hit(2)));
+  EXPECT_EQ(v.foul, Foul::WrongBallFirst);
+  EXPECT_EQ(v.points[0], 4);  // the free ball is worth the ball on's value
+  v = after.shoot(called(kBlack, hit(kBlack, {2})));
+  EXPECT_TRUE(v.legal());
+  EXPECT_EQ(v.points[1], 1);
+}
+
 // 3.12: a free ball in the colours' order scores the ball on's value; a foul on it costs the
 // ball on's value, not the nominated ball's.
 TEST(SnookerRules, AFreeBallInTheColoursTakesTheBallOnsValue) {
