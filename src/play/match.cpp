@@ -220,6 +220,12 @@ void Match::beginShot(const TurnInput& turn) {
   if (rack_.pendingDecision() == rules::Decision::RerackOrPlayOn) {
     throw IllegalAction("the illegal break waits for the opponent's decision (play on or rerack)");
   }
+  if (rack_.pendingDecision() == rules::Decision::PlayOrPutBack ||
+      rack_.pendingDecision() == rules::Decision::PlayPutBackOrReplace) {
+    throw IllegalAction(
+        "the foul waits for the opponent's decision (play or put-back, after a miss also "
+        "replace)");
+  }
   if (rack_.awaitingDecision()) {
     throw IllegalAction(gameDef(rack_.game()).pot_not_as_called_passes
                             ? "the turn waits for the opponent's decision (shoot or pass)"

@@ -104,7 +104,8 @@ int penaltyOf(const Aim& aim, std::optional<int> first, const std::vector<int>& 
 }
 
 // 3.14: a foul in which the cue ball does not first hit a ball on is a miss, unless the striker
-// was snookered before the stroke or needed snookers then (docs/cli.md, "Snooker": nineball's form).
+// was snookered before the stroke or needed snookers then (docs/cli.md, "Snooker": nineball's
+// form).
 bool isMiss(const RackState& s, const ShotSummary& shot, Foul foul, bool needed_snookers) {
   if (foul != Foul::NoContact && foul != Foul::WrongBallFirst) return false;
   if (s.snooker.respotted_black) return false;  // the frame ends on the foul

@@ -90,11 +90,15 @@ TEST(MatchSnookerCli, BadSnookerTurnsAreRefusedByName) {
       {script(R"("turns": [{"heading_deg": 0, "speed": 6}])"),
        "turns[0]: the cue ball is in hand in the D"},
       {script(R"("turns": [{"heading_deg": 0, "speed": 6, "cue": [-0.5, 0.0]}])"),
-       "turns[0]: the cue ball in hand goes in the D (x <= -1.0475, within 0.2920 m of (-1.0475, 0))"},
+       "turns[0]: the cue ball in hand goes in the D (x <= -1.0475, within 0.2920 m of (-1.0475, "
+       "0))"},
       {script(
            R"("turns": [{"heading_deg": 0, "speed": 6, "cue": [-1.1, 0.1]}, {"decision": "shoot"}])"),
        "turns[1].decision: expected \"play\" or \"put-back\""},
       {script(R"("points": 50, "turns": [])"), "points: snooker"},
+      {script(R"("turns": [{"heading_deg": 0, "speed": 6, "cue": [-1.1, 0.1]},
+                           {"heading_deg": 90, "speed": 0.2}, {"heading_deg": 0, "speed": 1}])"),
+       "turns[2]: the foul waits for the opponent's decision"},
       {script(
            R"("turns": [{"heading_deg": 0, "speed": 6, "cue": [-1.1, 0.1], "call": {"ball": 22, "pocket": "top-left"}}])"),
        "turns[0].call.ball"},
