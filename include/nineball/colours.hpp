@@ -76,6 +76,23 @@ inline const char* caromBallName(int id) {
   return id >= 0 && id <= 2 ? kNames[id] : nullptr;
 }
 
+/// Snooker balls (ids of the issue 34 contract): the cue ball white and plain, reds 1-15,
+/// then yellow, green, brown, blue, pink and black (16-21); no numbers or stripes.
+inline BallLook snookerBallLook(int id) {
+  constexpr Rgb kColours[7] = {
+      {200, 22, 30},    // red
+      {246, 210, 30},   // yellow
+      {0, 120, 56},     // green (darker than the cloth's, lighter than pool's 6)
+      {120, 70, 30},    // brown
+      {30, 80, 200},    // blue
+      {240, 130, 170},  // pink
+      {18, 18, 18},     // black
+  };
+  if (id >= 1 && id <= 15) return {kColours[0], false, false, false};
+  if (id >= 16 && id <= 21) return {kColours[id - 15], false, false, false};
+  return {kCueBallColour, false, false, false};
+}
+
 /// The stripe's half height as a fraction of the radius.
 constexpr double kStripeHalfHeight = 0.55;
 /// The white disc that carries the number, as a fraction of the radius.

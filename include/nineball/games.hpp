@@ -22,7 +22,28 @@ struct DecisionWords {
   const char* yes = "shoot";  ///< play from here (on)
   const char* no = "pass";    ///< pass back (re-rack)
   const char* about = "the choice after a push-out";
+  /// A third answer where the game has one (snooker after a miss: the balls replaced and the
+  /// offender plays again); null for none.
+  const char* replace = nullptr;
 };
+
+/// Where a cue ball in hand may be placed.
+enum class CueArea {
+  Anywhere,          ///< anywhere it fits (pool's ball in hand)
+  BehindHeadString,  ///< at or behind the head string, x <= -length/4 (pool's break)
+  TheD,              ///< in snooker's D (games/snooker/spots.hpp): the break and after an in-off
+};
+
+/// True when a cue ball centred at `c` lies in `area` of `table` (fitting on the table and
+/// clear of the other balls is checked apart).
+bool inCueArea(CueArea area, const TableDef& table, Vec2 c);
+/// The area in words for a message: "behind the head string (x <= -0.635)", "in the D
+/// (x <= -1.0475, within 0.2920 m of (-1.0475, 0))"; empty for Anywhere.
+std::string cueAreaText(CueArea area, const TableDef& table);
+
+/// Where a ball the rules put back on the table goes: `balls` are every ball as they lie.
+using SpotFinder = Vec2 (*)(int ball, const TableGeometry& table, double ball_radius,
+                            const std::vector<BallState>& balls);
 
 /// The kind of cue sport a game is: pool's games pocket object balls with one cue ball; carom's
 /// score with each player's own ball on a table without pockets. The computer plans each kind
@@ -72,6 +93,17 @@ struct GameDef {
   const char* physics = "real";
   /// The cue ball is ever placed by hand (the break, ball in hand); carom never.
   bool cue_in_hand = true;
+  /// Where the cue ball is placed for the break, and in hand after a foul. In the D the turn
+  /// must place it ("cue"): it is not on the table until then.
+  CueArea break_area = CueArea::BehindHeadString;
+  CueArea in_hand_area = CueArea::Anywhere;
+  /// Where a ball the rules spot goes; null for pool's foot spot (or behind it on the long
+  /// axis).
+  SpotFinder spot = nullptr;
+  /// The rules ask whether the striker is snookered (snooker: the free ball after a foul and
+  /// the miss): the match judges it from the balls' places (play/snookered.hpp) and tells the
+  /// rules (ShotSummary::snookered_before, Rack::stateFreeBall).
+  bool snookers = false;
   /// Played to a number of points (three-cushion): the default distance and the menu's
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;

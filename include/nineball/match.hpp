@@ -58,6 +58,9 @@ struct TurnInput {
   std::optional<rules::Call> call;
   /// Decision: shoot / play on (true), or pass the shot back / re-rack (false).
   bool shoot = true;
+  /// Decision, snooker after a miss: the balls replaced and the offender plays again
+  /// (GameDef::decision's `replace` word); `shoot` is then false.
+  bool replace = false;
 };
 
 /// One player's standing in a game played to points.
@@ -84,8 +87,13 @@ struct TurnRecord {
   int ball_on = 0;                  ///< the ball on after the turn
   std::optional<rules::Call> call;  ///< the shot's call, when it had one
   rules::Decision answered = rules::Decision::None;  ///< for a decision: the choice it made
-  bool shoot = true;  ///< for a decision: shoot / play on (true), or pass / rerack (false)
-  Score score;        ///< after the turn, for games played to points
+  bool shoot = true;     ///< for a decision: shoot / play on (true), or pass / rerack (false)
+  bool replace = false;  ///< for a decision: the balls replaced (snooker after a miss)
+  Score score;           ///< after the turn, for games played to points and snooker
+  /// Snooker, after the turn: the points the balls left can give, and the next stroke is a
+  /// free ball (the match judged the incoming striker snookered after a foul).
+  int points_remaining = 0;
+  bool free_ball_next = false;
 };
 
 /// A rack of any game of the registry (nineball/games.hpp) played through the real physics: the
@@ -117,6 +125,10 @@ class Match {
   bool cueInHand() const;
   /// True when placement is limited to behind the head string (the break).
   bool cueBehindHeadString() const;
+  /// Where the cue ball in hand may go now (GameDef::break_area or in_hand_area).
+  CueArea cueArea() const;
+  /// True when the coming turn must place the cue ball (off the table, or in hand in the D).
+  bool cueMustBePlaced() const;
 
   const rules::Rack& rack() const { return rack_; }
   Engine& world() { return *world_; }
@@ -130,6 +142,8 @@ class Match {
   void returnCueToHeadSpot();
   void setUpFrozenBalls();
   Vec2 freeSpotOnLine(Vec2 from, Vec2 step_dir) const;
+  bool cueSnookered() const;
+  void replaceBalls();
 
   MatchSetup setup_;
   std::unique_ptr<Engine> world_;
@@ -138,9 +152,12 @@ class Match {
   bool push_out_ = false;
   bool cue_pocketed_ = false;  // the cue ball is off the table, waiting to be placed
   int ball_on_at_start_ = 0;
-  int cue_ = kCueBall;               // the ball the shot rolling was struck on
-  double shot_deadline_ = 0.0;       // the world's time at which the shot rolling is cut off
-  std::optional<rules::Call> call_;  // of the shot rolling
+  int cue_ = kCueBall;                  // the ball the shot rolling was struck on
+  double shot_deadline_ = 0.0;          // the world's time at which the shot rolling is cut off
+  std::optional<rules::Call> call_;     // of the shot rolling
+  std::vector<BallState> before_shot_;  // the balls before the last shot (snooker's replace)
+  bool snookered_before_ = false;       // the striker of the shot rolling was snookered
+  std::vector<int> touching_before_;    // the balls the cue ball rested against
 };
 
 }  // namespace nineball

@@ -129,8 +129,9 @@ struct PlanInput {
   std::vector<BallState> balls;
   /// Whose turn, the ball on, the break, push-out and foul counts. A rack still in play.
   rules::Rack rack{rules::RuleSet::Wpa, {}, false};
-  bool cue_in_hand = false;         ///< the shooter places the cue ball first
-  bool behind_head_string = false;  ///< ... and only behind the head string (the break)
+  bool cue_in_hand = false;              ///< the shooter places the cue ball first
+  bool behind_head_string = false;       ///< ... and only behind the head string (the break)
+  CueArea cue_area = CueArea::Anywhere;  ///< ... in this area (snooker: the D)
 };
 
 /// The position a match is in, for the player to move.

@@ -9,9 +9,9 @@
 namespace nineball::rules {
 
 /// Which game is played.
-enum class Game { NineBall, EightBall, TenBall, ThreeCushion };
+enum class Game { NineBall, EightBall, TenBall, ThreeCushion, Snooker };
 
-/// "nine-ball", "eight-ball", "ten-ball", "three-cushion".
+/// "nine-ball", "eight-ball", "ten-ball", "three-cushion", "snooker".
 const char* gameName(Game g);
 std::optional<Game> gameFromName(const std::string& name);
 
@@ -20,6 +20,7 @@ enum class RuleSet {
   Wpa,    ///< World Pool-Billiard Association rules (every game)
   Paper,  ///< the seed paper's finite state machine ("The UseFSM method"); nine-ball only
   Umb,    ///< Union Mondiale de Billard's world rules of carom billiard (three-cushion)
+  Wpbsa,  ///< the World Professional Billiards and Snooker Association's rules (snooker)
 };
 
 const char* ruleSetName(RuleSet r);
@@ -37,10 +38,13 @@ enum class Foul {
   WrongGroupFirst,  ///< eight-ball: the first ball hit is not one the shooter may hit
   WrongPocket,      ///< the called ball dropped in another pocket
   NoCall,           ///< a ball dropped that was not called (or nothing was called)
+  PottedNotOn,      ///< snooker: a ball not on went down
+  ThreeMisses,      ///< snooker: a third miss in a row with a ball on in view (frame lost)
 };
 
 /// "scratch", "wrong-ball-first", "no-contact", "no-rail", "bad-break", "three-fouls",
-/// "eight-early", "wrong-group-first", "wrong-pocket", "no-call".
+/// "eight-early", "wrong-group-first", "wrong-pocket", "no-call", "potted-not-on",
+/// "three-misses".
 const char* foulName(Foul f);
 
 enum class Player { A, B };
@@ -89,6 +93,12 @@ struct ShotSummary {
   std::vector<int> cue_cushions_before;
   int cue_cushions = 0;  ///< cushions the cue ball met in the whole shot
   bool miscue = false;   ///< the tip slipped off the cue ball
+  /// Snooker: the striker was snookered before the stroke (WPBSA's definition, judged by the
+  /// match on the balls' places before it: play/snookered.hpp). A miss needs it false.
+  bool snookered_before = false;
+  /// Snooker: the balls the cue ball rested against before the stroke (a touching ball,
+  /// WPBSA 3.13): one of them that is on counts as hit when the cue ball plays away.
+  std::vector<int> touching_before;
 
   /// Where `ball` dropped; nothing when it did not drop or the pocket is unknown.
   std::optional<PocketId> pocketOf(int ball) const;
@@ -99,6 +109,10 @@ enum class Decision {
   None,
   PlayOrPass,      ///< after a push-out or a ten-ball pot not as called: shoot, or pass back
   RerackOrPlayOn,  ///< after an illegal eight-ball break: play the table as it lies, or re-rack
+  PlayOrPutBack,   ///< snooker, after a foul (WPBSA 3.15): play from there, or the offender again
+  /// Snooker, after a foul and a miss (WPBSA 3.14): also the balls replaced where they were
+  /// before the stroke and the offender plays it again.
+  PlayPutBackOrReplace,
 };
 
 /// The rules' answer to a shot.
@@ -126,6 +140,31 @@ struct Verdict {
   /// Three-cushion: the cushions the cue ball met before its second object ball (or in the
   /// whole shot when it did not reach one), the count a point needs three of.
   int cushions = 0;
+  /// Snooker: the foul was also a miss (WPBSA 3.14, in the form docs/cli.md, "Snooker", states).
+  bool miss = false;
+  /// Snooker: the ball nominated as on (the colour after a red, or the free ball); 0 for none.
+  int nominated = 0;
+  /// Snooker: the stroke was played as a free ball.
+  bool free_ball = false;
+  /// Snooker: the frame ended level on the black, which is re-spotted (WPBSA 3.4).
+  bool black_respotted = false;
+};
+
+/// Snooker's part of a frame's state (WPBSA): what the RackState of pool does not hold.
+struct SnookerState {
+  /// The striker potted a red and is on a colour (of his nomination).
+  bool colour_on = false;
+  /// A free ball was stated for the coming stroke (WPBSA 3.12): the match judged the incoming
+  /// striker snookered after a foul; void when the offender is put back in.
+  bool free_ball = false;
+  /// The frame ended level on the black, which was re-spotted: the first score or foul wins.
+  bool respotted_black = false;
+  /// Misses in a row of A and B (WPBSA 3.14(h): the third with a ball on in view loses).
+  int misses[2] = {0, 0};
+  /// The stroke before the last foul, for a put-back with the balls replaced (after a miss).
+  bool colour_on_before = false;
+  bool free_ball_before = false;
+  std::vector<int> on_table_before;
 };
 
 /// Everything a rack remembers between shots. The rule books read and update it.
@@ -149,6 +188,7 @@ struct RackState {
   int high_run[2] = {0, 0};  ///< the best inning of A and B
   bool equalising = false;   ///< the opener reached the distance: the other's last inning
   bool draw = false;
+  SnookerState snooker;  ///< snooker's own state
 
   bool has(int ball) const;
   void remove(const std::vector<int>& balls);
@@ -175,6 +215,9 @@ class RuleBook {
   virtual bool callRequired(const RackState& s) const = 0;
   /// Judges one shot; `push_out` only when s.push_out_available.
   virtual Verdict judge(RackState& s, const ShotSummary& shot, bool push_out) const = 0;
+  /// Points the balls left can still give (snooker's "points remaining"); 0 for a game won
+  /// on a ball or played to a distance.
+  virtual int pointsRemaining(const RackState&) const { return 0; }
 };
 
 /// The rule book of a game. Throws std::invalid_argument for a pair that does not exist (the
@@ -213,6 +256,20 @@ class Rack {
   int highRun(Player p) const { return s_.high_run[p == Player::A ? 0 : 1]; }
   /// The game ended level (no winner).
   bool drawn() const { return s_.draw; }
+  /// Snooker: the points the balls left can still give (RuleBook::pointsRemaining), and
+  /// whether `p` needs snookers (his deficit is more than that).
+  int pointsRemaining() const { return book_->pointsRemaining(s_); }
+  bool snookersRequired(Player p) const;
+  /// Snooker: the coming stroke is a free ball (stateFreeBall), the balls on of a foul's
+  /// free ball included in legalFirstBalls().
+  bool freeBall() const { return s_.snooker.free_ball; }
+  /// Snooker: after a foul the match states whether the incoming striker is snookered (WPBSA
+  /// 3.12): a free ball. Ignored after a legal stroke.
+  void stateFreeBall(bool snookered);
+  /// Snooker: a frame ended level on the black and is decided on the re-spotted black.
+  bool respottedBlack() const { return s_.snooker.respotted_black; }
+  /// The state the rule book keeps (snooker's nomination, misses, the state before a foul).
+  const RackState& state() const { return s_; }
   const std::vector<int>& ballsOnTable() const { return s_.on_table; }
   bool isBreak() const { return s_.break_next; }
   bool ballInHand() const { return s_.ball_in_hand; }
@@ -237,6 +294,10 @@ class Rack {
   /// true again, every racked ball is back and the chooser breaks. Throws std::logic_error
   /// when no decision is pending.
   void decide(bool shoot);
+  /// Snooker, after a foul and a miss (Decision::PlayPutBackOrReplace): the balls go back
+  /// where they were before the stroke (the caller puts them there) and the offender plays
+  /// it again; the penalty stays scored. Throws std::logic_error when not offered.
+  void replaceAfterMiss();
 
   /// Puts a spotted ball back on the table (the caller found the spot).
   void respot(int ball);

@@ -181,6 +181,7 @@ PlanInput planInputFrom(const Match& match) {
   in.rack = match.rack();
   in.cue_in_hand = match.cueInHand();
   in.behind_head_string = match.cueBehindHeadString();
+  in.cue_area = match.cueArea();
   return in;
 }
 

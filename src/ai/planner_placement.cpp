@@ -42,6 +42,7 @@ struct Placement {
 bool legalSpot(const SearchContext& ctx, Vec2 c) {
   if (!ctx.table.ballFits(c, ctx.radius)) return false;
   if (ctx.in.behind_head_string && c.x > ctx.table.headStringX()) return false;
+  if (!inCueArea(ctx.in.cue_area, ctx.table.def, c)) return false;
   for (const BallState& b : ctx.in.balls) {
     if (b.pocket || b.id == kCueBall) continue;
     if (length(b.pos - c) < 2.0 * ctx.radius + kPlacementGap) return false;

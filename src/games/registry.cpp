@@ -1,6 +1,10 @@
+#include <cstdio>
+
 #include "common/named.hpp"
 #include "games/eight_ball/eight_ball.hpp"
 #include "games/nine_ball/nine_ball.hpp"
+#include "games/snooker/snooker.hpp"
+#include "games/snooker/spots.hpp"
 #include "games/ten_ball/ten_ball.hpp"
 #include "games/three_cushion/three_cushion.hpp"
 #include "nineball/games.hpp"
@@ -9,10 +13,8 @@ namespace nineball {
 
 const std::vector<GameDef>& allGames() {
   static const std::vector<GameDef> all{
-      games::nineBall(),
-      games::eightBall(),
-      games::tenBall(),
-      games::threeCushion(),
+      games::nineBall(),     games::eightBall(), games::tenBall(),
+      games::threeCushion(), games::snooker(),
   };
   return all;
 }
@@ -46,10 +48,43 @@ std::string gamesPlayedBy(rules::RuleSet rules) {
 }
 
 std::string rulesOnlyFor(rules::RuleSet rules) {
-  const char* whose = rules == rules::RuleSet::Paper ? "the paper's"
-                      : rules == rules::RuleSet::Umb ? "the UMB"
-                                                     : "the WPA";
+  const char* whose = rules == rules::RuleSet::Paper   ? "the paper's"
+                      : rules == rules::RuleSet::Umb   ? "the UMB"
+                      : rules == rules::RuleSet::Wpbsa ? "the WPBSA"
+                                                       : "the WPA";
   return std::string(whose) + " rules are " + gamesPlayedBy(rules) + "'s only";
+}
+
+bool inCueArea(CueArea area, const TableDef& table, Vec2 c) {
+  switch (area) {
+    case CueArea::Anywhere:
+      return true;
+    case CueArea::BehindHeadString:
+      return c.x <= -table.length / 4.0 + 1e-9;  // on the line counts as behind it
+    case CueArea::TheD:
+      return snooker::inTheD(table, c);
+  }
+  return false;
+}
+
+std::string cueAreaText(CueArea area, const TableDef& table) {
+  const auto metres = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f", x);
+    return std::string(text);
+  };
+  switch (area) {
+    case CueArea::Anywhere:
+      return "";
+    case CueArea::BehindHeadString:
+      return "behind the head string (x <= " + metres(-table.length / 4.0) + ")";
+    case CueArea::TheD: {
+      const std::string xb = metres(snooker::baulkLineX(table));
+      return "in the D (x <= " + xb + ", within " + metres(snooker::dRadius(table)) + " m of (" +
+             xb + ", 0))";
+    }
+  }
+  return "";
 }
 
 bool GameDef::playedBy(rules::RuleSet r) const {

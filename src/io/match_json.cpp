@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <stdexcept>
 
 #include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
@@ -19,16 +20,18 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-// The highest ball number of any game of the registry.
-constexpr int kHighestBall = 15;
+// The highest ball a call may name in a pool game (a game with more balls says so:
+// GameDef::highest_ball, snooker's black 21).
+constexpr int kHighestPoolBall = 15;
 // The longest game played to points a script may ask for (UMB distances reach 50).
 constexpr int kMostPoints = 100;
 
-rules::Call parseCall(const json& v, const std::string& path) {
+rules::Call parseCall(const json& v, const std::string& path, rules::Game game) {
   expectObject(v, path);
   allowOnly(v, path, {"ball", "pocket"});
   rules::Call call;
-  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, kHighestBall);
+  const int highest = std::max(kHighestPoolBall, gameDef(game).highest_ball);
+  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, highest);
   const std::string name = text(required(v, path, "pocket"), member(path, "pocket"));
   const auto pocket = pocketFromName(name);
   if (!pocket) {
@@ -48,7 +51,14 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
     allowOnly(v, path, {"decision"});
     const std::string where = member(path, "decision");
     turn.kind = TurnInput::Kind::Decision;
-    turn.shoot = decisionField(text(*d, where), game, where);
+    const std::string word = text(*d, where);
+    const char* replace = gameDef(game).decision.replace;
+    if (replace && word == replace) {
+      turn.replace = true;
+      turn.shoot = false;
+      return turn;
+    }
+    turn.shoot = decisionField(word, game, where);
     return turn;
   }
   allowOnly(v, path,
@@ -67,7 +77,7 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
     }
     turn.cue = Vec2{number((*c)[0], element(cpath, 0)), number((*c)[1], element(cpath, 1))};
   }
-  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"));
+  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"), game);
   return turn;
 }
 
@@ -104,7 +114,18 @@ MatchScript parseDocument(const json& doc) {
       {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
   MatchScript script;
   MatchSetup& setup = script.setup;
-  setup.setGame(gameField(doc));
+  const rules::Game game = gameField(doc);
+  try {
+    setup.setGame(game);
+  } catch (const std::invalid_argument& e) {
+    // The game's own equipment is missing from this build: a script may still bring its own.
+    if (!optional(doc, "table") || !optional(doc, "physics")) {
+      refuse("game", std::string(e.what()) + "; give the script \"table\" and \"physics\"");
+    }
+    setup.game = game;
+    setup.rules = gameDef(game).rule_sets.front();
+    setup.points = gameDef(game).default_points;
+  }
   if (const json* p = optional(doc, "points")) {
     if (gameDef(setup.game).default_points == 0) {
       refuse("points", std::string(rules::gameName(setup.game)) +
@@ -172,9 +193,50 @@ ordered_json scoreJson(const Score& s) {
   return {{"A", playerScoreJson(s.a)}, {"B", playerScoreJson(s.b)}};
 }
 
-const char* decisionWord(const TurnRecord& t) {
+const char* decisionWord(const TurnRecord& t, const GameDef& def) {
   if (t.answered == rules::Decision::RerackOrPlayOn) return t.shoot ? "play-on" : "rerack";
+  if (t.replace) return def.decision.replace;
+  if (t.answered == rules::Decision::PlayOrPutBack ||
+      t.answered == rules::Decision::PlayPutBackOrReplace) {
+    return t.shoot ? def.decision.yes : def.decision.no;
+  }
   return t.shoot ? "shoot" : "pass";
+}
+
+ordered_json snookerScoreJson(const Score& s) {
+  auto one = [](const PlayerScore& p) {
+    return ordered_json{{"points", p.points}, {"break", p.run}, {"high_break", p.high_run}};
+  };
+  return {{"A", one(s.a)}, {"B", one(s.b)}};
+}
+
+// The words the player to move may answer with now, or null when no choice waits.
+ordered_json choicesJson(const rules::Verdict& v, const GameDef& def) {
+  if (v.decision == rules::Decision::PlayOrPutBack) return {def.decision.yes, def.decision.no};
+  if (v.decision == rules::Decision::PlayPutBackOrReplace) {
+    return {def.decision.yes, def.decision.no, def.decision.replace};
+  }
+  return nullptr;
+}
+
+// Snooker's part of a turn (docs/cli.md, "nineball match", snooker).
+void describeSnookerTurn(const TurnRecord& t, ordered_json& turn) {
+  const rules::Verdict& v = t.verdict;
+  const GameDef& def = gameDef(rules::Game::Snooker);
+  if (t.kind != TurnInput::Kind::Decision) {
+    turn["nominated"] = v.nominated == 0 ? ordered_json(nullptr) : ordered_json(v.nominated);
+    turn["free_ball"] = v.free_ball;
+    turn["miss"] = v.miss;
+    turn["points"] = v.legal() ? v.points[0] + v.points[1] : 0;
+    turn["penalty"] = v.legal() ? 0 : v.points[0] + v.points[1];
+    turn["choices"] = choicesJson(v, def);
+    turn["black_respotted"] = v.black_respotted;
+  }
+  const PlayerScore& striker = t.verdict.next == rules::Player::A ? t.score.a : t.score.b;
+  turn["break"] = striker.run;
+  turn["score"] = snookerScoreJson(t.score);
+  turn["points_remaining"] = t.points_remaining;
+  turn["free_ball_next"] = t.free_ball_next;
 }
 
 }  // namespace
@@ -201,7 +263,7 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
     turn["shooter"] = rules::playerName(t.shooter);
     if (i < computer.size() && computer[i]) describeComputerTurn(*computer[i], turn);
     if (t.kind == TurnInput::Kind::Decision) {
-      turn["decision"] = decisionWord(t);
+      turn["decision"] = decisionWord(t, gameDef(rack.game()));
     } else if (t.kind == TurnInput::Kind::PushOut) {
       turn["push_out"] = true;
     }
@@ -225,6 +287,7 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
       turn["cushions"] = v.cushions;
       turn["score"] = scoreJson(t.score);
     }
+    if (gameDef(rack.game()).snookers) describeSnookerTurn(t, turn);
     if (gameDef(rack.game()).groups) {
       // A decision changes no group: it shows those of the shot before.
       if (t.kind != TurnInput::Kind::Decision) groups = v.groups;
@@ -238,6 +301,12 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
     doc["points"] = rack.targetPoints();
     doc["draw"] = rack.drawn();
     doc["score"] = scoreJson(scoreOf(rack));
+  }
+  if (gameDef(rack.game()).snookers) {
+    doc["score"] = snookerScoreJson(scoreOf(rack));
+    doc["points_remaining"] = rack.pointsRemaining();
+    doc["snookers_required"] = {{"A", rack.snookersRequired(rules::Player::A)},
+                                {"B", rack.snookersRequired(rules::Player::B)}};
   }
   ordered_json ball_list = ordered_json::array();
   for (const BallState& b : balls) ball_list.push_back(ballToJson(b));

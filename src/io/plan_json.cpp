@@ -7,6 +7,7 @@
 #include "io/json_fields.hpp"
 #include "io/json_reader.hpp"
 #include "io/scene_json.hpp"
+#include "nineball/games.hpp"
 
 namespace nineball::io {
 namespace {
@@ -60,6 +61,7 @@ PlanScene parseDocument(json doc) {
   in.balls = scene.balls;
   in.rack = rules::Rack(game, rule_set, object_balls, false);
   in.cue_in_hand = in_hand;
+  in.cue_area = gameDef(game).in_hand_area;
   return plan;
 }
 

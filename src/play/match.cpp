@@ -3,20 +3,31 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "play/shot_summary.hpp"
+#include "play/snookered.hpp"
 
 namespace nineball {
 
 void MatchSetup::setGame(rules::Game g) {
   const GameDef& def = gameDef(g);
+  const std::optional<TableDef> named_table = TableDef::named(def.tables.front());
+  const std::optional<PhysicsParams> preset = PhysicsParams::preset(def.physics);
+  if (!named_table || !preset) {
+    // A game may name equipment that is built on another branch (snooker's, issue 34).
+    throw std::invalid_argument(std::string(def.name) + " is played on the table \"" +
+                                def.tables.front() + "\" with the physics \"" + def.physics +
+                                "\", and this build has " +
+                                (named_table ? "no such physics" : "no such table"));
+  }
   game = g;
   rules = def.rule_sets.front();
-  table = TableDef::named(def.tables.front()).value();
-  physics = PhysicsParams::preset(def.physics).value();
+  table = *named_table;
+  physics = *preset;
   points = def.default_points;
 }
 
@@ -112,7 +123,24 @@ bool Match::cueInHand() const {
 }
 
 bool Match::cueBehindHeadString() const {
-  return rack_.isBreak();
+  return rack_.isBreak() && gameDef(rack_.game()).break_area == CueArea::BehindHeadString;
+}
+
+CueArea Match::cueArea() const {
+  const GameDef& def = gameDef(rack_.game());
+  return rack_.isBreak() ? def.break_area : def.in_hand_area;
+}
+
+bool Match::cueMustBePlaced() const {
+  return cue_pocketed_ || (cueInHand() && cueArea() == CueArea::TheD);
+}
+
+bool Match::cueSnookered() const {
+  const std::vector<BallState> balls = world_->balls();
+  const auto cue =
+      std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
+  if (cue == balls.end() || cue->pocket) return false;
+  return play::snookered(cue->pos, rack_.legalFirstBalls(), balls, world_->physics().ball_radius);
 }
 
 std::optional<std::string> Match::cuePlacementProblem(Vec2 pos) const {
@@ -122,6 +150,9 @@ std::optional<std::string> Match::cuePlacementProblem(Vec2 pos) const {
   if (cueBehindHeadString() && pos.x > world_->table().headStringX() + kLineTolerance) {
     return "on the break the cue ball goes behind the head string (x <= " +
            std::to_string(world_->table().headStringX()) + ")";
+  }
+  if (cueArea() == CueArea::TheD && !inCueArea(CueArea::TheD, world_->table().def, pos)) {
+    return "the cue ball in hand goes " + cueAreaText(CueArea::TheD, world_->table().def);
   }
   for (const BallState& b : world_->balls()) {
     if (b.id == kCueBall || b.pocket) continue;
@@ -154,6 +185,12 @@ Vec2 Match::freeSpotOnLine(Vec2 from, Vec2 step_dir) const {
 }
 
 void Match::spot(int ball) {
+  if (const SpotFinder finder = gameDef(rack_.game()).spot) {
+    world_->placeBall(
+        ball, finder(ball, world_->table(), world_->physics().ball_radius, world_->balls()));
+    rack_.respot(ball);
+    return;
+  }
   // WPA: on the foot spot, or as close behind it on the long axis as it fits.
   const Vec2 p = freeSpotOnLine(world_->table().footSpot(), {1.0, 0.0});
   world_->placeBall(ball, p);
@@ -183,6 +220,12 @@ void Match::beginShot(const TurnInput& turn) {
   if (rack_.pendingDecision() == rules::Decision::RerackOrPlayOn) {
     throw IllegalAction("the illegal break waits for the opponent's decision (play on or rerack)");
   }
+  if (rack_.pendingDecision() == rules::Decision::PlayOrPutBack ||
+      rack_.pendingDecision() == rules::Decision::PlayPutBackOrReplace) {
+    throw IllegalAction(
+        "the foul waits for the opponent's decision (play or put-back, after a miss also "
+        "replace)");
+  }
   if (rack_.awaitingDecision()) {
     throw IllegalAction(gameDef(rack_.game()).pot_not_as_called_passes
                             ? "the turn waits for the opponent's decision (shoot or pass)"
@@ -206,8 +249,22 @@ void Match::beginShot(const TurnInput& turn) {
     if (!cueInHand()) throw IllegalAction("the cue ball is not in hand");
     if (auto problem = cuePlacementProblem(*turn.cue)) throw IllegalAction(*problem);
     placeCue(*turn.cue);
-  } else if (cue_pocketed_) {
+  } else if (cue_pocketed_ && cueArea() != CueArea::TheD) {
     throw IllegalAction("ball in hand after a scratch: the turn must place the cue ball (\"cue\")");
+  } else if (cueMustBePlaced()) {
+    throw IllegalAction("the cue ball is in hand " + cueAreaText(cueArea(), world_->table().def) +
+                        ": the turn must place it (\"cue\")");
+  }
+  if (gameDef(rack_.game()).snookers) {
+    // Snooker's miss and touching ball are judged on the balls as they lie before the stroke,
+    // and a miss may have them put back there.
+    before_shot_ = world_->balls();
+    snookered_before_ = cueSnookered();
+    for (const BallState& b : before_shot_) {
+      if (b.id == kCueBall) {
+        touching_before_ = play::touchingBalls(b.pos, before_shot_, world_->physics().ball_radius);
+      }
+    }
   }
   ball_on_at_start_ = rack_.ballOn();
   push_out_ = push_out;
@@ -231,12 +288,17 @@ TurnRecord Match::finishShot() {
   in_progress_ = false;
   rules::ShotSummary summary = play::summarize(world_->events(), cue_);
   summary.call = call_;
+  summary.snookered_before = snookered_before_;
+  summary.touching_before = touching_before_;
   TurnRecord rec;
   rec.call = call_;
   rec.shooter = rack_.shooter();
   rec.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
   rec.verdict = rack_.shoot(summary, push_out_);
-  for (int b : rec.verdict.to_spot) spot(b);
+  // WPBSA 3.7(b): when several colours are spotted the highest value takes precedence.
+  std::vector<int> to_spot = rec.verdict.to_spot;
+  std::sort(to_spot.rbegin(), to_spot.rend());
+  for (int b : to_spot) spot(b);
   if (summary.cue_pocketed) {
     if (rec.verdict.cue_to_head_spot) {
       returnCueToHeadSpot();
@@ -247,9 +309,23 @@ TurnRecord Match::finishShot() {
   if (!rack_.over() && !gameDef(rack_.game()).cue_in_hand && frozenTo(*world_, rack_.cueBall())) {
     setUpFrozenBalls();
   }
+  if (gameDef(rack_.game()).snookers && rack_.awaitingDecision()) {
+    // WPBSA 3.12: after a foul the incoming striker snookered on every ball on gets a free
+    // ball. With the cue ball in hand (in the D) nineball never states one.
+    rack_.stateFreeBall(!cue_pocketed_ && cueSnookered());
+  }
   rec.ball_on = rack_.ballOn();
   rec.score = scoreOf(rack_);
+  rec.points_remaining = rack_.pointsRemaining();
+  rec.free_ball_next = rack_.freeBall();
   return rec;
+}
+
+void Match::replaceBalls() {
+  for (const BallState& b : before_shot_) {
+    if (!b.pocket) world_->placeBall(b.id, b.pos);
+  }
+  cue_pocketed_ = false;
 }
 
 void Match::setUpFrozenBalls() {
@@ -275,12 +351,24 @@ TurnRecord Match::play(const TurnInput& turn) {
     rec.kind = TurnInput::Kind::Decision;
     rec.shooter = rack_.shooter();
     rec.answered = rack_.pendingDecision();
-    rec.shoot = turn.shoot;
-    rack_.decide(turn.shoot);
+    rec.shoot = turn.shoot && !turn.replace;
+    rec.replace = turn.replace;
+    if (turn.replace) {
+      if (rack_.pendingDecision() != rules::Decision::PlayPutBackOrReplace) {
+        throw IllegalAction("only a miss lets the balls be replaced");
+      }
+      replaceBalls();
+      rack_.replaceAfterMiss();
+    } else {
+      rack_.decide(turn.shoot);
+    }
     if (rack_.isBreak()) rerack();
     rec.verdict.shooter = rec.shooter;
     rec.verdict.next = rack_.shooter();
     rec.ball_on = rack_.ballOn();
+    rec.score = scoreOf(rack_);
+    rec.points_remaining = rack_.pointsRemaining();
+    rec.free_ball_next = rack_.freeBall();
     return rec;
   }
   beginShot(turn);

@@ -7,6 +7,7 @@
 #include "nineball/rules.hpp"
 #include "rules/eight_ball.hpp"
 #include "rules/nine_ball.hpp"
+#include "rules/snooker.hpp"
 #include "rules/ten_ball.hpp"
 #include "rules/three_cushion.hpp"
 
@@ -25,11 +26,13 @@ const std::vector<GameBooks>& books() {
   static const EightBallRules eight;
   static const TenBallRules ten;
   static const ThreeCushionRules three_cushion;
+  static const SnookerRules snooker;
   static const std::vector<GameBooks> all{
       {Game::NineBall, "nine-ball", {&nine_wpa, &nine_paper}},
       {Game::EightBall, "eight-ball", {&eight}},
       {Game::TenBall, "ten-ball", {&ten}},
       {Game::ThreeCushion, "three-cushion", {&three_cushion}},
+      {Game::Snooker, "snooker", {&snooker}},
   };
   return all;
 }

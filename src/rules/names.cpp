@@ -10,12 +10,14 @@ const char* ruleSetName(RuleSet r) {
       return "paper";
     case RuleSet::Umb:
       return "umb";
+    case RuleSet::Wpbsa:
+      return "wpbsa";
   }
   return "?";
 }
 
 std::optional<RuleSet> ruleSetFromName(const std::string& name) {
-  for (RuleSet r : {RuleSet::Wpa, RuleSet::Paper, RuleSet::Umb}) {
+  for (RuleSet r : {RuleSet::Wpa, RuleSet::Paper, RuleSet::Umb, RuleSet::Wpbsa}) {
     if (name == ruleSetName(r)) return r;
   }
   return std::nullopt;
@@ -45,6 +47,10 @@ const char* foulName(Foul f) {
       return "wrong-pocket";
     case Foul::NoCall:
       return "no-call";
+    case Foul::PottedNotOn:
+      return "potted-not-on";
+    case Foul::ThreeMisses:
+      return "three-misses";
   }
   return "?";
 }

@@ -40,7 +40,9 @@ Verdict Rack::shoot(const ShotSummary& shot, bool push_out) {
   if (awaitingDecision()) {
     throw std::logic_error(s_.decision == Decision::RerackOrPlayOn
                                ? "the illegal break waits for re-rack or play on"
-                               : "a push-out is waiting for shoot or pass");
+                           : s_.decision == Decision::PlayOrPass
+                               ? "a push-out is waiting for shoot or pass"
+                               : "the foul waits for the opponent's choice (play or put back)");
   }
   if (push_out && !s_.push_out_available) {
     throw std::logic_error("no push-out is allowed on this shot");
@@ -60,13 +62,32 @@ Verdict Rack::shoot(const ShotSummary& shot, bool push_out) {
   return v;
 }
 
+bool Rack::snookersRequired(Player p) const {
+  const int me = s_.score[p == Player::A ? 0 : 1];
+  const int them = s_.score[p == Player::A ? 1 : 0];
+  return them - me > pointsRemaining();
+}
+
+void Rack::stateFreeBall(bool snookered) {
+  const bool after_foul =
+      s_.decision == Decision::PlayOrPutBack || s_.decision == Decision::PlayPutBackOrReplace;
+  s_.snooker.free_ball = after_foul && snookered && !over();
+}
+
 void Rack::decide(bool shoot_now) {
   if (!awaitingDecision()) throw std::logic_error("no push-out is waiting for a decision");
   const Decision d = s_.decision;
   s_.decision = Decision::None;
+  if (d == Decision::PlayOrPutBack || d == Decision::PlayPutBackOrReplace) {
+    // Snooker's misses count in a row only while the balls are replaced (WPBSA 3.14(h)).
+    s_.snooker.misses[s_.shooter == Player::A ? 1 : 0] = 0;
+  }
   if (shoot_now) return;
-  if (d == Decision::PlayOrPass) {
+  if (d != Decision::RerackOrPlayOn) {
+    // Passed back (or the offender put back in): a free ball stated for the other is void
+    // (WPBSA 3.12(f)).
     s_.shooter = other(s_.shooter);
+    s_.snooker.free_ball = false;
     return;
   }
   // A re-rack starts the rack over; the player who chose it breaks.
@@ -76,6 +97,18 @@ void Rack::decide(bool shoot_now) {
   s_.push_out_available = false;
   s_.groups = Groups{};
   s_.fouls[0] = s_.fouls[1] = 0;
+}
+
+void Rack::replaceAfterMiss() {
+  if (s_.decision != Decision::PlayPutBackOrReplace) {
+    throw std::logic_error("no miss is waiting for the balls to be replaced");
+  }
+  s_.decision = Decision::None;
+  s_.shooter = other(s_.shooter);
+  s_.on_table = s_.snooker.on_table_before;
+  s_.snooker.colour_on = s_.snooker.colour_on_before;
+  s_.snooker.free_ball = s_.snooker.free_ball_before;
+  s_.ball_in_hand = false;
 }
 
 }  // namespace nineball::rules

@@ -16,6 +16,8 @@ const char* rulesLabel(rules::RuleSet r) {
       return "Paper (the seed paper's)";
     case rules::RuleSet::Umb:
       return "UMB (the world rules of carom)";
+    case rules::RuleSet::Wpbsa:
+      return "WPBSA (the official rules of snooker)";
   }
   return "?";
 }

@@ -35,6 +35,10 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
       return "the called ball dropped in another pocket than the one called";
     case rules::Foul::NoCall:
       return "a ball dropped that was not called";
+    case rules::Foul::PottedNotOn:
+      return "a ball not on went into a pocket";
+    case rules::Foul::ThreeMisses:
+      return "a third miss in a row";
     case rules::Foul::None:
       break;
   }

@@ -67,7 +67,7 @@ TEST(MatchCliGames, TenBallRacksTenAndWantsACallAfterTheBreak) {
 
 TEST(MatchCliGames, BadGameFieldsAreRefused) {
   const std::pair<const char*, const char*> cases[] = {
-      {R"({"game": "snooker", "turns": []})", "game: unknown game \"snooker\""},
+      {R"({"game": "crokinole", "turns": []})", "game: unknown game \"crokinole\""},
       {R"({"game": "eight-ball", "rules": "paper", "turns": []})", "rules: the paper's rules"},
       {R"({"game": "ten-ball", "players": {"A": "ai:grandmaster"}})", "players.A: unknown player"},
       {R"({"turns": [{"heading_deg": 0, "speed": 1, "call": {"ball": 1, "pocket": "middle"}}]})",

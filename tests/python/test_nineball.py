@@ -503,7 +503,7 @@ def test_a_standard_rack_fits_the_table_and_repeats_by_seed():
         assert nineball.simulate(scene)["end"] == "rest", game  # a valid scene, at rest
     assert nineball.rack("nine-ball", 1)[0] == {"id": 1, "x": t.foot_spot[0], "y": 0.0}
     with pytest.raises(ValueError, match="unknown game"):
-        nineball.rack("snooker")
+        nineball.rack("crokinole")
 
 
 def test_plan_is_what_the_command_line_plans():

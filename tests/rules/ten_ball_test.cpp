@@ -53,7 +53,7 @@ Rack afterBreak(std::vector<int> balls) {
 TEST(TenBallRules, NameAndBook) {
   EXPECT_STREQ(gameName(Game::TenBall), "ten-ball");
   EXPECT_EQ(nineball::rules::gameFromName("ten-ball"), Game::TenBall);
-  EXPECT_FALSE(nineball::rules::gameFromName("snooker"));
+  EXPECT_FALSE(nineball::rules::gameFromName("crokinole"));
   EXPECT_THROW(Rack(Game::TenBall, RuleSet::Paper, kFullRack), std::invalid_argument);
 }
 

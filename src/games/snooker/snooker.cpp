@@ -1,0 +1,64 @@
+#include "games/snooker/snooker.hpp"
+
+#include "games/snooker/respot.hpp"
+#include "games/snooker/spots.hpp"
+#include "games/triangle.hpp"
+
+namespace nineball {
+namespace {
+
+// The apex red sits this far (m) beyond touching the pink: "as near as possible without
+// touching" (WPBSA 3.2), kept measurable for the engines' contact tests.
+constexpr double kApexClearance = 0.0002;
+constexpr int kReds = 15;
+constexpr int kRows = 5;
+
+}  // namespace
+
+std::vector<BallState> rackSnooker(const TableDef& table, double ball_radius, std::uint64_t,
+                                   double gap) {
+  std::vector<BallState> balls;
+  const double shift = 2.0 * ball_radius + kApexClearance;
+  const std::vector<Vec2> reds = games::triangleSpots(table, ball_radius, gap, kRows);
+  const Vec2 pink = snooker::colourSpot(table, 20);
+  for (int i = 0; i < kReds; ++i) {
+    // triangleSpots puts the apex on the foot spot, which is the pink's spot.
+    const Vec2 p =
+        reds[static_cast<std::size_t>(i)] + Vec2{pink.x - table.length / 4.0 + shift, 0.0};
+    games::put(balls, i + 1, p);
+  }
+  for (int colour = 16; colour <= 21; ++colour) {
+    games::put(balls, colour, snooker::colourSpot(table, colour));
+  }
+  return balls;
+}
+
+namespace games {
+
+GameDef snooker() {
+  GameDef g;
+  g.id = rules::Game::Snooker;
+  g.name = "snooker";
+  for (int b = 1; b <= 21; ++b) g.balls.push_back(b);
+  g.highest_ball = 21;
+  g.rule_sets = {rules::RuleSet::Wpbsa};
+  g.rack = rackSnooker;
+  g.looks = snookerBallLook;
+  g.tables = {"snooker", "snooker-10ft"};
+  g.help = {"Snooker: pot a red (1), then a colour (its value: yellow 2 ... black 7), while reds",
+            "  remain; colours are re-spotted. Then the colours from yellow to black.",
+            "A foul gives the opponent 4-7 points; they play on or put you back in.",
+            "Snookered after a foul: a free ball. The cue ball is in hand in the D."};
+  g.made = "potted the ball on";
+  g.physics = "snooker";
+  g.decision = {"play", "put-back", "the choice after a foul (\"replace\" too after a miss)",
+                "replace"};
+  g.break_area = CueArea::TheD;
+  g.in_hand_area = CueArea::TheD;
+  g.spot = snooker::respotPlace;
+  g.snookers = true;
+  return g;
+}
+
+}  // namespace games
+}  // namespace nineball
