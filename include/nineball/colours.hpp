@@ -93,6 +93,16 @@ inline BallLook snookerBallLook(int id) {
   return {kCueBallColour, false, false, false};
 }
 
+/// A snooker ball's name as players say it ("red", "yellow" ... "black"); null for another id.
+inline const char* snookerBallName(int id) {
+  constexpr const char* kColours[] = {"yellow", "green", "brown", "blue", "pink", "black"};
+  if (id >= 1 && id <= 15) return "red";
+  return id >= 16 && id <= 21 ? kColours[id - 16] : nullptr;
+}
+
+/// A game's ball names (GameDef::ball_name): null for a ball known by its number.
+using BallNames = const char* (*)(int id);
+
 /// The stripe's half height as a fraction of the radius.
 constexpr double kStripeHalfHeight = 0.55;
 /// The white disc that carries the number, as a fraction of the radius.

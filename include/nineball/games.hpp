@@ -70,6 +70,8 @@ struct GameDef {
   RackMaker rack = nullptr;
   /// Its set of balls: how each is drawn (colours, stripes, numbers).
   BallLooks looks = poolBallLook;
+  /// Its balls' names ("the blue"), or null where players call a ball by its number.
+  BallNames ball_name = nullptr;
   /// The tables it is played on (TableDef::named), the first by default.
   std::vector<std::string> tables{"9ft", "8ft", "7ft"};
   /// The help screen's lines on its rules.
@@ -108,6 +110,9 @@ struct GameDef {
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;
   std::vector<int> points_choices;
+
+  /// "the 9", "the blue", "the white": a ball as messages name it.
+  std::string theBall(int ball) const;
 
   /// True when it is played by `rules`.
   bool playedBy(rules::RuleSet rules) const;

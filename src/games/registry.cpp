@@ -87,6 +87,11 @@ std::string cueAreaText(CueArea area, const TableDef& table) {
   return "";
 }
 
+std::string GameDef::theBall(int ball) const {
+  const char* word = ball_name ? ball_name(ball) : nullptr;
+  return "the " + (word ? std::string(word) : std::to_string(ball));
+}
+
 bool GameDef::playedBy(rules::RuleSet r) const {
   for (rules::RuleSet s : rule_sets) {
     if (s == r) return true;

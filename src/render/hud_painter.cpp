@@ -163,6 +163,11 @@ void HudPainter::drawPlayers(sf::RenderTarget& target, const ViewTransform& view
          row2, Align::Centre, true);
     return;
   }
+  if (!hud.score_line.empty()) {
+    text(target, hud.score_line, {mid, row2.top + row2.height * 0.08}, layout.text_px * 0.95,
+         hud.score_call ? kAccent : kText, row2, Align::Centre, true);
+    return;
+  }
   drawTray(target, hud, row2, r * 0.8);
 }
 

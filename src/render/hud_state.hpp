@@ -53,6 +53,10 @@ struct HudState {
   /// Carom, while a shot rolls and just after: the cushions the shooter's ball has met before
   /// its second ball, and "point" / "no point" once that is decided (empty: not shown).
   std::string carom_count;
+  /// Snooker: the break and the points remaining, and the referee's calls ("FREE BALL",
+  /// "snookers required"), in the tray's place (empty: the tray).
+  std::string score_line;
+  bool score_call = false;  ///< the line carries a call: drawn in the accent colour
 };
 
 }  // namespace nineball::render

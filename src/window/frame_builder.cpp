@@ -30,7 +30,7 @@ std::string guideFoul(const GameSession& session, const AimGuide& guide) {
   if (session.practice() || session.pushOutDeclared() || guide.target != AimTarget::Ball) return "";
   const std::vector<int> legal = session.match().rack().legalFirstBalls();
   if (legal.empty() || std::find(legal.begin(), legal.end(), guide.ball) != legal.end()) return "";
-  const std::string ball = "foul: the " + std::to_string(guide.ball);
+  const std::string ball = "foul: " + gameDef(session.match().rack().game()).theBall(guide.ball);
   return legal.size() == 1 ? ball + " is not the ball on" : ball + " may not be hit first";
 }
 
@@ -79,6 +79,21 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
         hud.overlay_lines = {"Play the table as it lies, or re-rack and break."};
         hud.button_left = "Play on (S)";
         hud.button_right = "Re-rack (P)";
+        break;
+      }
+      if (rack.pendingDecision() == rules::Decision::PlayOrPutBack ||
+          rack.pendingDecision() == rules::Decision::PlayPutBackOrReplace) {
+        const bool miss = rack.pendingDecision() == rules::Decision::PlayPutBackOrReplace;
+        const std::string offender = session.seatName(1 - session.seatToMove());
+        hud.overlay_title = (miss ? "Foul and a miss: " : "Foul: ") + name + " chooses";
+        if (computer_decides) {
+          hud.overlay_lines = {"Thinking: play from here, or put " + offender + " back in?"};
+          break;
+        }
+        hud.overlay_lines = {"Play from here, or put " + offender + " back in to play again."};
+        if (miss) hud.overlay_lines.push_back("R: the balls replaced, and " + offender + " again.");
+        hud.button_left = "Play (S)";
+        hud.button_right = "Put back (P)";
         break;
       }
       // Ten-ball: a pot not as called gives the same choice as a push-out.
@@ -189,6 +204,41 @@ void fillCaromHud(render::HudState& hud, const GameSession& session) {
   if (const auto count = session.caromCount()) hud.carom_count = *count;
 }
 
+// Snooker's HUD: each player's points in the frame, frames won and highest break; the ball on
+// (a red, a named colour, or "any colour" after a red); the current break, the points remaining
+// and the referee's calls in the tray's place.
+void fillSnookerHud(render::HudState& hud, const GameSession& session) {
+  const rules::Rack& rack = session.match().rack();
+  const Score score = scoreOf(rack);
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    const PlayerScore& ps = p == rules::Player::A ? score.a : score.b;
+    render::PlayerPanel& panel = hud.players[session.seatOf(p)];
+    panel.detail = std::to_string(ps.points) + " pts   frames " + std::to_string(panel.racks) +
+                   "   high " + std::to_string(ps.high_run);
+  }
+  const std::vector<int> on = rack.legalFirstBalls();
+  const bool reds_on =
+      !on.empty() && std::all_of(on.begin(), on.end(), [](int b) { return b >= 1 && b <= 15; });
+  hud.ball_on = rack.over() || on.empty() ? 0 : reds_on ? on.front() : on.size() == 1 ? on[0] : 0;
+  std::string line;
+  if (!rack.over() && !on.empty() && hud.ball_on == 0) line = "on: any colour   ";
+  line += "break " + std::to_string(rack.over() ? 0 : rack.currentRun()) + "   remaining " +
+          std::to_string(rack.pointsRemaining());
+  hud.score_call = false;
+  if (!rack.over() && rack.freeBall()) {
+    line += "   FREE BALL";
+    hud.score_call = true;
+  }
+  for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+    if (rack.over() || !rack.snookersRequired(p)) continue;
+    line += "   " + session.seatName(session.seatOf(p)) + ": snookers required";
+    hud.score_call = true;
+  }
+  hud.score_line = line;
+  hud.on_table.clear();
+  hud.pocketed.clear();
+}
+
 }  // namespace
 
 render::Frame buildFrame(const GameSession& session, const UiState& ui,
@@ -260,7 +310,9 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   }
   std::sort(hud.on_table.begin(), hud.on_table.end());
   hud.pocketed = session.pocketedThisRack();
-  hud.rules = rack.rules() == rules::RuleSet::Wpa ? "WPA rules" : "Paper rules";
+  hud.rules = rack.rules() == rules::RuleSet::Wpa     ? "WPA rules"
+              : rack.rules() == rules::RuleSet::Wpbsa ? "WPBSA rules"
+                                                      : "Paper rules";
   const GameDef& game = gameDef(rack.game());
   if (&game != &defaultGame()) hud.rules = std::string(game.name) + ", " + hud.rules;
   if (game.groups) {
@@ -271,6 +323,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     }
   }
   if (game.family == GameFamily::Carom) fillCaromHud(hud, session);
+  if (game.snookers) fillSnookerHud(hud, session);
   hud.mode = opponentModeLabel(computer.opponent());
   if (session.practice()) {
     const std::size_t steps = session.practiceSteps();

@@ -160,6 +160,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   if (overlay == Overlay::PushOutChoice) {
     if (key.code == Key::S) session_.decide(true);
     if (key.code == Key::P) session_.decide(false);
+    if (key.code == Key::R) session_.decide(false, true);
     return;
   }
   if (overlay == Overlay::GameOver) {

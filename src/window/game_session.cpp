@@ -12,6 +12,7 @@
 #include "play/shot_summary.hpp"
 #include "rules/three_cushion.hpp"
 #include "window/shot_call.hpp"
+#include "window/snooker_turn_message.hpp"
 #include "window/turn_message.hpp"
 
 namespace nineball::window {
@@ -549,10 +550,12 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   }
   const std::string shooter = seatName(seatOf(record.shooter));
   const std::string opponent = seatName(seatOf(rules::other(record.shooter)));
-  TurnMessage m =
-      gameDef(match_->rack().game()).family == GameFamily::Carom
-          ? describeCaromTurn(record, match_->rack(), shooter, opponent)
-          : describeTurn(record, summary, ball_on_before, shooter, opponent, groups_at_shot_);
+  const GameDef& game = gameDef(match_->rack().game());
+  TurnMessage m = game.family == GameFamily::Carom
+                      ? describeCaromTurn(record, match_->rack(), shooter, opponent)
+                  : game.snookers ? describeSnookerTurn(record, match_->rack(), shooter, opponent)
+                                  : describeTurn(record, summary, ball_on_before, shooter, opponent,
+                                                 groups_at_shot_);
   const bool miscue = record.kind != TurnInput::Kind::Decision &&
                       std::any_of(events.begin(), events.end(),
                                   [](const Event& e) { return e.type == EventType::Miscue; });
@@ -569,11 +572,13 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   startTurn();
 }
 
-void GameSession::decide(bool shoot_now) {
+void GameSession::decide(bool shoot_now, bool replace) {
   if (phase_ != Phase::PushOutChoice) return;
+  if (replace && match_->rack().pendingDecision() != rules::Decision::PlayPutBackOrReplace) return;
   TurnInput turn;
   turn.kind = TurnInput::Kind::Decision;
-  turn.shoot = shoot_now;
+  turn.shoot = shoot_now && !replace;
+  turn.replace = replace;
   groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
@@ -656,6 +661,13 @@ std::string GameSession::status() const {
       if (match_->rack().pendingDecision() == rules::Decision::RerackOrPlayOn) {
         return name + ": play on as it lies (S) or re-rack and break (P)?";
       }
+      if (match_->rack().pendingDecision() == rules::Decision::PlayOrPutBack) {
+        return name + ": play from here (S) or put " + seatName(1 - seatToMove()) + " back in (P)?";
+      }
+      if (match_->rack().pendingDecision() == rules::Decision::PlayPutBackOrReplace) {
+        return name + ": play from here (S), put " + seatName(1 - seatToMove()) +
+               " back in (P), or replace the balls (R)?";
+      }
       return name + ": play from here (S) or pass it back (P)?";
     case Phase::GameOver: {
       const auto winner = match_->rack().winner();
@@ -674,10 +686,13 @@ std::string GameSession::status() const {
     if (match_->rack().isBreak()) s += ": the opening shot, straight onto the red";
     return s;
   }
+  const GameDef& game = gameDef(match_->rack().game());
   if (match_->rack().isBreak()) {
-    s += "break (cue ball behind the head string)";
+    s += game.break_area == CueArea::TheD ? "break off (cue ball in hand in the D)"
+                                          : "break (cue ball behind the head string)";
   } else if (cueInHand()) {
-    s += "shoot: ball in hand, drag the cue ball";
+    s += game.in_hand_area == CueArea::TheD ? "shoot: cue ball in hand in the D, drag it"
+                                            : "shoot: ball in hand, drag the cue ball";
   } else {
     s += "shoot";
   }

@@ -160,8 +160,9 @@ class GameSession {
   /// show it. False (and a message) when refused.
   bool shoot(const TurnInput& turn);
   /// After the opponent's push-out (or a pot not as called): shoot from there (true) or pass
-  /// the shot back. After an illegal break: play on (true) or re-rack.
-  void decide(bool shoot_now);
+  /// the shot back. After an illegal break: play on (true) or re-rack. After a snooker foul:
+  /// play on (true) or put the offender back in; after a miss also `replace` the balls.
+  void decide(bool shoot_now, bool replace = false);
   /// Racks again after a game over; the other player breaks.
   void rematch();
   /// Plays a whole turn at once, as `nineball match` does (a script before the window opens).

@@ -44,6 +44,7 @@ GameDef snooker() {
   g.rule_sets = {rules::RuleSet::Wpbsa};
   g.rack = rackSnooker;
   g.looks = snookerBallLook;
+  g.ball_name = snookerBallName;
   g.tables = {"snooker", "snooker-10ft"};
   g.help = {"Snooker: pot a red (1), then a colour (its value: yellow 2 ... black 7), while reds",
             "  remain; colours are re-spotted. Then the colours from yellow to black.",

@@ -38,6 +38,7 @@ GameDef threeCushion() {
   g.rule_sets = {rules::RuleSet::Umb};
   g.rack = rackThreeCushion;
   g.looks = caromBallLook;
+  g.ball_name = caromBallName;
   g.tables = {"carom", "carom-small"};
   g.help = {"Three-cushion: your ball (white opens, yellow for the other) must touch both",
             "  other balls and meet three cushions before the second; a point plays on.",
