@@ -65,10 +65,10 @@ ComputerMove fallbackMove(const GameSession& session) {
   return m;
 }
 
-std::string planText(const ai::Plan& plan, int ball_on) {
+std::string planText(const ai::Plan& plan, int ball_on, const GameDef& game) {
   // Eight-ball has no single ball on: the plan names the ball it hits first.
-  const std::string on = "the " + std::to_string(plan.first > 0 ? plan.first : ball_on);
-  const std::string target = "the " + std::to_string(plan.target);
+  const std::string on = game.theBall(plan.first > 0 ? plan.first : ball_on);
+  const std::string target = game.theBall(plan.target);
   const std::string pocket =
       plan.pocket ? std::string(" in the ") + pocketName(*plan.pocket) + " pocket" : "";
   switch (plan.kind) {
@@ -99,15 +99,16 @@ std::string planText(const ai::Plan& plan, int ball_on) {
 
 }  // namespace
 
-std::string describePlan(const ai::Plan& plan, int ball_on) {
-  std::string text = planText(plan, ball_on);
+std::string describePlan(const ai::Plan& plan, int ball_on, const GameDef& game) {
+  std::string text = planText(plan, ball_on, game);
   const auto& call = plan.turn.call;
   if (!call || plan.kind == ai::ShotKind::PushOut) return text;
   if (call->ball == plan.target && plan.pocket && call->pocket == *plan.pocket) {
     return text + " (called)";
   }
-  return text + " (called: the " + std::to_string(call->ball) + " in the " +
-         pocketName(call->pocket) + " pocket)";
+  if (game.snookers) return text + " (nominated: " + game.theBall(call->ball) + ")";
+  return text + " (called: " + game.theBall(call->ball) + " in the " + pocketName(call->pocket) +
+         " pocket)";
 }
 
 ComputerMove planMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding) {
@@ -173,7 +174,9 @@ std::string ComputerPlayer::status(const GameSession& session) const {
     case Stage::Striking:
       if (move_ && move_->turn.kind == TurnInput::Kind::PushOut) return name + " pushes out";
       if (move_ && move_->plan) {
-        return name + ": " + describePlan(*move_->plan, session.match().rack().ballOn());
+        return name + ": " +
+               describePlan(*move_->plan, session.match().rack().ballOn(),
+                            gameDef(session.match().rack().game()));
       }
       return name + " shoots at the " + std::to_string(session.match().rack().ballOn());
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "nineball/games.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/seat.hpp"
 #include "window/game_session.hpp"
@@ -112,6 +113,6 @@ class ComputerPlayer {
 
 /// What a plan means to do, for the status line: "pot the 3 in the top-right pocket", with
 /// "(called)" when the rules want a call (another call is named).
-std::string describePlan(const ai::Plan& plan, int ball_on);
+std::string describePlan(const ai::Plan& plan, int ball_on, const GameDef& game = defaultGame());
 
 }  // namespace nineball::window
