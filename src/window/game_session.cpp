@@ -9,6 +9,7 @@
 
 #include "common/log.hpp"
 #include "nineball/games.hpp"
+#include "nineball/table_markings.hpp"
 #include "play/shot_summary.hpp"
 #include "rules/three_cushion.hpp"
 #include "window/shot_call.hpp"
@@ -282,7 +283,8 @@ void GameSession::startRack() {
   // Carom's opening is an ordinary stroke, not a break.
   const bool pool_break =
       match_->rack().isBreak() && gameDef(match_->rack().game()).family == GameFamily::Pool;
-  speed_ = pool_break ? kBreakSpeed : speed_;
+  const bool snooker = gameDef(match_->rack().game()).snookers;
+  speed_ = pool_break ? (snooker ? kBreakOffSpeed : kBreakSpeed) : speed_;
   message_.clear();
   tone_ = render::Tone::Info;
   startTurn();
@@ -312,7 +314,12 @@ void GameSession::startTurn() {
 
 Vec2 GameSession::freeCueSpot() const {
   const TableGeometry& t = match_->world().table();
-  const Vec2 head{t.headStringX(), 0.0};
+  Vec2 head{t.headStringX(), 0.0};
+  // Snooker breaks off from between the brown and the yellow, as players usually do.
+  if (match_->cueArea() == CueArea::TheD) {
+    const SnookerLayout l = SnookerLayout::of(t.def);
+    head = (l.brown + l.yellow) * 0.5;
+  }
   if (!match_->cuePlacementProblem(head)) return head;
   // Rings of growing radius round the head spot, then anywhere it fits.
   for (double radius = kSpotSearchStep; radius < t.def.length; radius += kSpotSearchStep) {
@@ -328,11 +335,61 @@ Vec2 GameSession::freeCueSpot() const {
 void GameSession::aimAtBallOn() {
   const int on = match_->rack().ballOn();
   const Vec2 cue = cuePosition();
+  // Snooker has many balls on, and the lowest-numbered red often stands behind the pink.
+  if (gameDef(match_->rack().game()).snookers) {
+    if (const auto heading = clearHeadingToBallOn(cue)) {
+      heading_ = *heading;
+      return;
+    }
+  }
   for (const BallState& b : shot_.current) {
     if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
       heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
     }
   }
+}
+
+std::optional<double> GameSession::clearHeadingToBallOn(Vec2 cue) const {
+  const double r = match_->world().physics().ball_radius;
+  // The cue ball sent at `aim` (a ghost ball's place) meets `on` before any other ball.
+  auto reaches = [&](int on, Vec2 aim) {
+    const double d = length(aim - cue);
+    if (d <= 0.0) return false;
+    const Vec2 dir = (aim - cue) / d;
+    double first = d + 1.0;
+    int first_ball = -1;
+    for (const BallState& o : shot_.current) {
+      if (o.pocket || o.id == kCueBall) continue;
+      const double along = dot(o.pos - cue, dir);
+      const double side = std::abs(cross(dir, o.pos - cue));
+      if (along <= 0.0 || side >= 2.0 * r) continue;
+      const double touch = along - std::sqrt(4.0 * r * r - side * side);
+      if (touch < first) {
+        first = touch;
+        first_ball = o.id;
+      }
+    }
+    return first_ball == on;
+  };
+  // The nearest ball on straight at its centre, else the nearest a thin contact reaches (snooker's
+  // break-off clips the end red of the triangle).
+  for (double offset : {0.0, 1.9, -1.9}) {
+    std::optional<double> best;
+    double best_distance = 0.0;
+    for (int on : match_->rack().legalFirstBalls()) {
+      for (const BallState& b : shot_.current) {
+        if (b.id != on || b.pocket) continue;
+        const double d = length(b.pos - cue);
+        if (d <= 0.0 || (best && d >= best_distance)) continue;
+        const Vec2 aim = b.pos + perp((b.pos - cue) / d) * (offset * r);
+        if (!reaches(on, aim)) continue;
+        best = std::atan2(aim.y - cue.y, aim.x - cue.x);
+        best_distance = d;
+      }
+    }
+    if (best) return best;
+  }
+  return std::nullopt;
 }
 
 bool GameSession::shoot() {

@@ -36,6 +36,9 @@ class GameSession {
   static constexpr double kMaxTip = 0.5;            ///< the tip's useful range, fraction of R
   static constexpr double kMaxElevationDeg = 60.0;  ///< the cue's tilt: swerve up to a masse
   static constexpr double kBreakSpeed = 10.0;       ///< m/s the break starts with
+  /// m/s snooker's break-off starts with: a thin contact on the reds that brings the cue ball
+  /// back to baulk, not a pool break.
+  static constexpr double kBreakOffSpeed = 4.0;
   static constexpr double kShotSpeed = 3.0;    ///< m/s the first shot after the break starts with
   static constexpr double kSlowReplay = 0.25;  ///< play time per real second in a slow replay
 
@@ -129,6 +132,9 @@ class GameSession {
   bool placeCue(Vec2 pos);
   /// Turns the aim at the ball on (a rack, a turn, a cue ball just dropped start this way).
   void aimAtBallOn();
+  // A heading from `cue` that meets a ball on before any other ball: at the nearest ball on's
+  // centre, else a thin contact on the nearest; nothing when every ball on is hidden.
+  std::optional<double> clearHeadingToBallOn(Vec2 cue) const;
 
   /// The aim guide from the cue ball along the current heading.
   AimGuide aimGuide() const;
