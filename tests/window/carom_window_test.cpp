@@ -8,13 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "nineball/match.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
-#include "window/xvfb_run.hpp"
+#include "window/script_screenshot.hpp"
 
 namespace nineball::window {
 namespace {
@@ -31,30 +31,21 @@ TurnInput scoringOpening() {
   return t;
 }
 
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
-
 TEST(CaromWindow, ShowsTheCaromTableTheThreeBallsAndAScoredPoint) {
   ASSERT_TRUE(testing::haveXvfbRun())
       << "xvfb-run not found: install xvfb and xauth (bash scripts/setup.sh)";
-  const std::string stem = "/tmp/nineball-test-carom-" + std::to_string(getpid());
+  std::ostringstream script;
   {
     const TurnInput t = scoringOpening();
-    std::ofstream script(stem + ".json");
     script.precision(17);
     script << R"({"game": "three-cushion", "seed": 1, "turns": [{"heading_deg": )"
            << radToDeg(t.shot.heading_rad) << R"(, "speed": )" << t.shot.speed << R"(, "tip": [)"
            << t.shot.tip.x << ", " << t.shot.tip.y << "]}]}";
   }
-  const testing::XvfbRun run = testing::runGameUnderXvfb(
-      "--script " + quoted(stem + ".json") + " --screenshot " + quoted(stem + ".png"), kWidth,
-      kHeight);
-  ASSERT_EQ(run.status, 0) << run.err;
   sf::Image image;
-  ASSERT_TRUE(image.loadFromFile(stem + ".png"));
-  std::remove((stem + ".png").c_str());
-  std::remove((stem + ".json").c_str());
+  const testing::XvfbRun run =
+      testing::screenshotOfScript(script.str(), "carom", kWidth, kHeight, image);
+  ASSERT_EQ(run.status, 0) << run.err;
   ASSERT_EQ(image.getSize(), sf::Vector2u(kWidth, kHeight));
 
   // The same turn headless: where the balls stopped, and that it scored.

@@ -14,17 +14,13 @@
 #include "nineball/match.hpp"
 #include "nineball/table_markings.hpp"
 #include "render/view_transform.hpp"
-#include "window/xvfb_run.hpp"
+#include "window/script_screenshot.hpp"
 
 namespace nineball::window {
 namespace {
 
 constexpr unsigned kWidth = 1280;
 constexpr unsigned kHeight = 800;
-
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
 
 // The colour a snooker ball of this id must read as, by its dominant channels.
 bool looksLike(int id, const sf::Color& c) {
@@ -51,19 +47,10 @@ bool looksLike(int id, const sf::Color& c) {
 TEST(SnookerWindow, ShowsTheSnookerTableTheBallsOnTheirSpotsAndTheScoreboard) {
   ASSERT_TRUE(testing::haveXvfbRun())
       << "xvfb-run not found: install xvfb and xauth (bash scripts/setup.sh)";
-  const std::string stem = "/tmp/nineball-test-snooker-" + std::to_string(getpid());
-  {
-    std::ofstream script(stem + ".json");
-    script << R"({"game": "snooker", "seed": 1, "turns": []})";
-  }
-  const testing::XvfbRun run = testing::runGameUnderXvfb(
-      "--script " + quoted(stem + ".json") + " --screenshot " + quoted(stem + ".png"), kWidth,
-      kHeight);
-  ASSERT_EQ(run.status, 0) << run.err;
   sf::Image image;
-  ASSERT_TRUE(image.loadFromFile(stem + ".png"));
-  std::remove((stem + ".png").c_str());
-  std::remove((stem + ".json").c_str());
+  const testing::XvfbRun run = testing::screenshotOfScript(
+      R"({"game": "snooker", "seed": 1, "turns": []})", "snooker", kWidth, kHeight, image);
+  ASSERT_EQ(run.status, 0) << run.err;
   ASSERT_EQ(image.getSize(), sf::Vector2u(kWidth, kHeight));
 
   MatchSetup setup;
