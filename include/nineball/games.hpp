@@ -31,7 +31,7 @@ struct DecisionWords {
 enum class CueArea {
   Anywhere,          ///< anywhere it fits (pool's ball in hand)
   BehindHeadString,  ///< at or behind the head string, x <= -length/4 (pool's break)
-  TheD,              ///< in snooker's D (games/snooker/spots.hpp): the break and after an in-off
+  TheD,              ///< in snooker's D (SnookerLayout::inD): the break and after an in-off
 };
 
 /// True when a cue ball centred at `c` lies in `area` of `table` (fitting on the table and
