@@ -108,6 +108,10 @@ struct GameDef {
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;
   std::vector<int> points_choices;
+  /// A match of several frames (snooker): the window's match lengths, best of N (the first to
+  /// win ceil(N/2) frames wins the match), the first the default; none for a game whose racks
+  /// simply follow one another.
+  std::vector<int> best_of_choices;
 
   /// True when it is played by `rules`.
   bool playedBy(rules::RuleSet rules) const;
