@@ -31,7 +31,7 @@ struct DecisionWords {
 enum class CueArea {
   Anywhere,          ///< anywhere it fits (pool's ball in hand)
   BehindHeadString,  ///< at or behind the head string, x <= -length/4 (pool's break)
-  TheD,              ///< in snooker's D (games/snooker/spots.hpp): the break and after an in-off
+  TheD,              ///< in snooker's D (SnookerLayout::inD): the break and after an in-off
 };
 
 /// True when a cue ball centred at `c` lies in `area` of `table` (fitting on the table and
@@ -110,6 +110,10 @@ struct GameDef {
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;
   std::vector<int> points_choices;
+  /// A match of several frames (snooker): the window's match lengths, best of N (the first to
+  /// win ceil(N/2) frames wins the match), the first the default; none for a game whose racks
+  /// simply follow one another.
+  std::vector<int> best_of_choices;
 
   /// "the 9", "the blue", "the white": a ball as messages name it.
   std::string theBall(int ball) const;

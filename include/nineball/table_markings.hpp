@@ -36,7 +36,8 @@ struct SnookerLayout {
   static SnookerLayout of(const TableDef& table);
   /// The colour spots from the highest value (black) to the lowest (yellow).
   std::vector<Vec2> spotsHighestFirst() const;
-  /// True when p is inside the D (on or behind the baulk line, within the radius).
+  /// True when p is inside the D (on or behind the baulk line, within the radius; a point on
+  /// the line or the arc is in).
   bool inD(Vec2 p) const;
 };
 

@@ -4,10 +4,10 @@
 #include "games/eight_ball/eight_ball.hpp"
 #include "games/nine_ball/nine_ball.hpp"
 #include "games/snooker/snooker.hpp"
-#include "games/snooker/spots.hpp"
 #include "games/ten_ball/ten_ball.hpp"
 #include "games/three_cushion/three_cushion.hpp"
 #include "nineball/games.hpp"
+#include "nineball/table_markings.hpp"
 
 namespace nineball {
 
@@ -62,7 +62,7 @@ bool inCueArea(CueArea area, const TableDef& table, Vec2 c) {
     case CueArea::BehindHeadString:
       return c.x <= -table.length / 4.0 + 1e-9;  // on the line counts as behind it
     case CueArea::TheD:
-      return snooker::inTheD(table, c);
+      return SnookerLayout::of(table).inD(c);
   }
   return false;
 }
@@ -79,9 +79,9 @@ std::string cueAreaText(CueArea area, const TableDef& table) {
     case CueArea::BehindHeadString:
       return "behind the head string (x <= " + metres(-table.length / 4.0) + ")";
     case CueArea::TheD: {
-      const std::string xb = metres(snooker::baulkLineX(table));
-      return "in the D (x <= " + xb + ", within " + metres(snooker::dRadius(table)) + " m of (" +
-             xb + ", 0))";
+      const SnookerLayout l = SnookerLayout::of(table);
+      const std::string xb = metres(l.baulk_x);
+      return "in the D (x <= " + xb + ", within " + metres(l.d_radius) + " m of (" + xb + ", 0))";
     }
   }
   return "";

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <stdexcept>
 
 #include "io/game_fields.hpp"
 #include "io/json_fields.hpp"
@@ -114,18 +113,7 @@ MatchScript parseDocument(const json& doc) {
       {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
   MatchScript script;
   MatchSetup& setup = script.setup;
-  const rules::Game game = gameField(doc);
-  try {
-    setup.setGame(game);
-  } catch (const std::invalid_argument& e) {
-    // The game's own equipment is missing from this build: a script may still bring its own.
-    if (!optional(doc, "table") || !optional(doc, "physics")) {
-      refuse("game", std::string(e.what()) + "; give the script \"table\" and \"physics\"");
-    }
-    setup.game = game;
-    setup.rules = gameDef(game).rule_sets.front();
-    setup.points = gameDef(game).default_points;
-  }
+  setup.setGame(gameField(doc));
   if (const json* p = optional(doc, "points")) {
     if (gameDef(setup.game).default_points == 0) {
       refuse("points", std::string(rules::gameName(setup.game)) +

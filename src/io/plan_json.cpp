@@ -36,6 +36,9 @@ PlanScene parseDocument(json doc) {
     }
     plan.level = *found;
   }
+  // The game's own equipment unless the scene brings its own, as a match script gets it.
+  if (!optional(doc, "table")) doc["table"] = gameDef(game).tables.front();
+  if (!optional(doc, "physics")) doc["physics"] = {{"preset", gameDef(game).physics}};
   for (const char* key : {"game", "rules", "ball_in_hand", "level"}) doc.erase(key);
   SceneResult parsed = sceneFromJson(doc);
   if (const auto* refused = std::get_if<ParseError>(&parsed)) throw *refused;

@@ -644,8 +644,17 @@ void GameSession::decide(bool shoot_now, bool replace) {
   afterTurn(record, match_->rack().ballOn());
 }
 
+std::optional<int> GameSession::matchWinner() const {
+  const int needed = framesToWinMatch(best_of_);
+  for (int seat = 0; seat < 2; ++seat) {
+    if (needed > 0 && racks_won_[seat] >= needed) return seat;
+  }
+  return std::nullopt;
+}
+
 void GameSession::rematch() {
   if (practice_) return;
+  if (matchWinner()) racks_won_[0] = racks_won_[1] = 0;
   ++rack_;
   startRack();
 }
@@ -729,9 +738,22 @@ std::string GameSession::status() const {
     case Phase::GameOver: {
       const auto winner = match_->rack().winner();
       if (!winner) return "A draw in game " + std::to_string(rackNumber()) + ". R: rematch";
+      if (const auto seat = matchWinner()) {
+        return seatName(*seat) + " wins the match " + std::to_string(racks_won_[*seat]) + "-" +
+               std::to_string(racks_won_[1 - *seat]) + " (best of " + std::to_string(best_of_) +
+               "). R: new match";
+      }
+      const std::string winner_name = seatName(seatOf(*winner));
+      if (best_of_ > 0) {
+        // Frames are never drawn (a tie re-spots the black): those won are those played.
+        const int frame = racks_won_[0] + racks_won_[1];
+        return winner_name + " wins frame " + std::to_string(frame) + " (frames " +
+               std::to_string(racks_won_[0]) + "-" + std::to_string(racks_won_[1]) + ", best of " +
+               std::to_string(best_of_) + "). R: next frame";
+      }
       const bool carom = gameDef(match_->rack().game()).family == GameFamily::Carom;
-      return seatName(seatOf(*winner)) + (carom ? " wins game " : " wins rack ") +
-             std::to_string(rackNumber()) + ". R: rematch";
+      return winner_name + (carom ? " wins game " : " wins rack ") + std::to_string(rackNumber()) +
+             ". R: rematch";
     }
     case Phase::Aiming:
       break;

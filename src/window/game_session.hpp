@@ -11,6 +11,7 @@
 #include "play/aim_guide.hpp"
 #include "render/hud_state.hpp"
 #include "window/fixed_step_clock.hpp"
+#include "window/menu_choice.hpp"
 #include "window/practice_table.hpp"
 #include "window/shot_replay.hpp"
 #include "window/shot_steps.hpp"
@@ -91,6 +92,13 @@ class GameSession {
   int seatToMove() const { return seatOf(match_->rack().shooter()); }
   int racksWon(int seat) const { return racks_won_[seat]; }
   int rackNumber() const { return rack_ + 1; }
+  /// A match of `best_of` frames (GameDef::best_of_choices): the first seat to win
+  /// framesToWinMatch(best_of) of them wins it, and the next rematch starts a new match at
+  /// 0-0. 0 (the default): racks simply follow one another, counted without an end.
+  void setBestOf(int best_of) { best_of_ = best_of; }
+  int bestOf() const { return best_of_; }
+  /// The seat that has won the match of bestOf() frames, once one has.
+  std::optional<int> matchWinner() const;
 
   double heading() const { return heading_; }
   void setHeading(double radians) { heading_ = radians; }
@@ -169,7 +177,8 @@ class GameSession {
   /// the shot back. After an illegal break: play on (true) or re-rack. After a snooker foul:
   /// play on (true) or put the offender back in; after a miss also `replace` the balls.
   void decide(bool shoot_now, bool replace = false);
-  /// Racks again after a game over; the other player breaks.
+  /// Racks again after a game over; the other player breaks. After a match won (bestOf()), a
+  /// new match: the racks won go back to 0-0.
   void rematch();
   /// Plays a whole turn at once, as `nineball match` does (a script before the window opens).
   /// Throws IllegalAction.
@@ -236,6 +245,7 @@ class GameSession {
   std::string names_[2] = {"Player 1", "Player 2"};
   int racks_won_[2] = {0, 0};
   int rack_ = 0;
+  int best_of_ = 0;
   double heading_ = 0.0;
   double speed_ = kShotSpeed;
   Vec2 tip_;

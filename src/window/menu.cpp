@@ -87,8 +87,11 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   }
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
-  for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
-                 Item::Points, Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
+  for (Item i :
+       {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
+        Item::Points, Item::Frames, Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
+    // Only a game played in frames has a match length to choose.
+    if (i == Item::Frames && bestOf() == 0) continue;
     v.push_back(i);
   }
   return v;
@@ -149,6 +152,12 @@ MenuRow MenuModel::row(Item item) const {
       r = {Kind::Choice, "Points to win",
            r.enabled ? std::to_string(pointsToWin()) : std::string("(a game won on a ball)"),
            r.enabled, false};
+      break;
+    case Item::Frames:
+      r = {Kind::Choice, "Frames",
+           "Best of " + std::to_string(bestOf()) + " (first to " +
+               std::to_string(framesToWinMatch(bestOf())) + ")",
+           true, false};
       break;
     case Item::Name1:
     case Item::Name2: {
@@ -252,6 +261,14 @@ void MenuModel::change(Item item, int step) {
         if (choices[i] == pointsToWin()) at = i;
       }
       settings_.last.points = choices[((at + step) % n + n) % n];
+      break;
+    }
+    case Item::Frames: {
+      const std::vector<int>& choices = gameDef(settings_.last.game).best_of_choices;
+      const int n = static_cast<int>(choices.size());
+      const int at =
+          static_cast<int>(std::find(choices.begin(), choices.end(), bestOf()) - choices.begin());
+      settings_.last.best_of = choices[((at + step) % n + n) % n];
       break;
     }
     case Item::Rules:
@@ -396,11 +413,20 @@ int MenuModel::pointsToWin() const {
   return offered ? settings_.last.points : g.default_points;
 }
 
+int MenuModel::bestOf() const {
+  const auto& choices = gameDef(settings_.last.game).best_of_choices;
+  if (choices.empty()) return 0;
+  const bool offered =
+      std::find(choices.begin(), choices.end(), settings_.last.best_of) != choices.end();
+  return offered ? settings_.last.best_of : choices.front();
+}
+
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
   c.opponent = computer_ ? Seat(ComputerSeat{level_}) : Seat(HumanSeat{});
   if (!gameDef(c.game).playedBy(c.rules)) c.rules = gameDef(c.game).rule_sets.front();
   c.points = pointsToWin();
+  c.best_of = bestOf();
   c.resume = outcome_ == Outcome::Resume;
   return c;
 }

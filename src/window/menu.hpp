@@ -55,6 +55,9 @@ class MenuModel {
   MenuChoice choice() const;
   /// The distance chosen for a game played to points (its default until one is chosen).
   int pointsToWin() const;
+  /// The match length chosen for a game played in frames, best of N (its first choice until
+  /// one is chosen); 0 for a game whose racks simply follow one another.
+  int bestOf() const;
   /// The settings as edited (the last choice included once Play was chosen).
   const Settings& settings() const { return settings_; }
 
@@ -68,6 +71,7 @@ class MenuModel {
     Game,
     Rules,
     Points,
+    Frames,
     Name1,
     Name2,
     OpenSettings,

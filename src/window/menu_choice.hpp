@@ -24,10 +24,15 @@ struct MenuChoice {
   rules::RuleSet rules = rules::RuleSet::Wpa;
   /// The distance of a game played to points (GameDef::points_choices; 0: the game's default).
   int points = 0;
+  /// A match of frames: best of N (GameDef::best_of_choices; 0: the game's first choice).
+  int best_of = 0;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)
 };
 
-/// a game's name, or "practice".
+/// The frames that win a match of best of `best_of`: ceil(N/2); 0 for no match length.
+constexpr int framesToWinMatch(int best_of) {
+  return (best_of + 1) / 2;
+}
 
 }  // namespace nineball::window

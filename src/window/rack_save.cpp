@@ -98,6 +98,7 @@ SavedRack saveOf(const GameSession& session, const Seat& opponent) {
   r.seed = session.setup().seed;
   r.rack_index = session.rackNumber() - 1;
   r.racks_won = {session.racksWon(0), session.racksWon(1)};
+  r.best_of = session.bestOf();
   r.names = {session.seatName(0), session.seatName(1)};
   r.opponent = opponent;
   r.turns = session.rackTurns();
@@ -112,6 +113,7 @@ nlohmann::ordered_json rackToJson(const SavedRack& rack) {
   j["seed"] = rack.seed;
   j["rack"] = rack.rack_index;
   j["racks_won"] = {rack.racks_won[0], rack.racks_won[1]};
+  if (rack.best_of > 0) j["best_of"] = rack.best_of;
   j["names"] = {rack.names[0], rack.names[1]};
   j["opponent"] = seatName(rack.opponent);
   // Radians as doubles: JSON numbers keep every bit, degrees would round.
@@ -169,6 +171,9 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
       expect(name.has_value(), "names: empty or not valid UTF-8");
       r.names[i] = *name;
     }
+    // Saves from before matches of frames have none.
+    r.best_of = j.value("best_of", 0);
+    expect(r.best_of >= 0 && r.best_of <= kMaxRackIndex, "best_of: not a match length");
     const auto& turns = j.at("turns");
     expect(turns.is_array() && turns.size() <= kMaxSavedTurns, "turns: not a rack's turns");
     for (const auto& t : turns) {
@@ -211,6 +216,7 @@ void forgetRack(const std::string& path) {
 }
 
 void replayRack(GameSession& session, const SavedRack& rack) {
+  session.setBestOf(rack.best_of);
   session.resumeRack(rack.rack_index, rack.racks_won[0], rack.racks_won[1]);
   for (int seat = 0; seat < 2; ++seat) session.setSeatName(seat, rack.names[seat]);
   for (const TurnInput& t : rack.turns) session.playTurn(t);

@@ -23,6 +23,7 @@ struct SavedRack {
   std::uint64_t seed = 1;  ///< the session's seed (rack n racks with seed + n)
   int rack_index = 0;      ///< 0 for the session's first rack
   std::array<int, 2> racks_won{};
+  int best_of = 0;  ///< the match's length in frames (GameSession::bestOf); 0: none
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   Seat opponent;  ///< who played Player 2
   std::vector<TurnInput> turns;

@@ -15,6 +15,8 @@ namespace nineball::window {
 namespace {
 
 constexpr GuideLength kGuides[] = {GuideLength::Short, GuideLength::Normal, GuideLength::Long};
+// A match length past any the menu offers is refused as a typo (the menu keeps to its own).
+constexpr int kMostFramesInAMatch = 99;
 
 void warn(std::string& warnings, const std::string& what) {
   if (!warnings.empty()) warnings += "; ";
@@ -51,6 +53,7 @@ bool Settings::operator==(const Settings& o) const {
   return volume == o.volume && muted == o.muted && guide == o.guide && bank_line == o.bank_line &&
          frame_cap == o.frame_cap && last.mode == o.last.mode && last.game == o.last.game &&
          last.opponent == o.last.opponent && last.rules == o.last.rules &&
+         last.points == o.last.points && last.best_of == o.last.best_of &&
          last.names == o.last.names;
 }
 
@@ -78,6 +81,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
                {"opponent", seatName(s.last.opponent)},
                {"rules", rules::ruleSetName(s.last.rules)},
                {"points", s.last.points},
+               {"best_of", s.last.best_of},
                {"names", {s.last.names[0], s.last.names[1]}}};
   return j;
 }
@@ -162,6 +166,14 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
       s.last.points = v->get<int>();
     } else {
       warn(warnings, "last.points: expected a whole number from 0 to 100");
+    }
+  }
+  if (const auto* v = field(*last, "best_of")) {
+    if (v->is_number_integer() && *v >= 0 && *v <= kMostFramesInAMatch) {
+      s.last.best_of = v->get<int>();
+    } else {
+      warn(warnings, "last.best_of: expected a whole number from 0 to " +
+                         std::to_string(kMostFramesInAMatch));
     }
   }
   if (const auto* v = field(*last, "names")) {

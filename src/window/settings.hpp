@@ -36,7 +36,7 @@ struct Settings {
 std::string settingsPath();
 
 /// The settings as JSON: {"volume", "muted", "aim_guide", "bank_line", "frame_cap", "last":
-/// {"game", "opponent", "rules", "names"}}.
+/// {"game", "opponent", "rules", "points", "best_of", "names"}}.
 nlohmann::ordered_json settingsToJson(const Settings& s);
 /// Reads what it can: a missing or wrong field keeps its default, with a warning in `warnings`.
 Settings settingsFromJson(const nlohmann::json& j, std::string& warnings);

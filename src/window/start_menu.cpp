@@ -105,6 +105,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     return true;
   }
   session = GameSession(setup);
+  session.setBestOf(choice.best_of);
   session.setTurnObserver(observer);
   computer.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);

@@ -7,18 +7,10 @@
 #include <string>
 
 #include "nineball/games.hpp"
+#include "nineball/params.hpp"
 
 namespace nineball {
 namespace {
-
-// TEMPORARY until the snooker tables land (issue 34, the table helper's branch): the official
-// table's playing area, 3.569 x 1.778 m, and the 10 ft table at 10/12 of it.
-std::optional<TableDef> tableNamed(const std::string& name) {
-  if (auto t = TableDef::named(name)) return t;
-  if (name == "snooker") return TableDef{3.569, 1.778};
-  if (name == "snooker-10ft") return TableDef{3.569 * 10.0 / 12.0, 1.778 * 10.0 / 12.0};
-  return std::nullopt;
-}
 
 TEST(GameRegistry, NamesAreUniqueAndEachIsFoundByItsName) {
   std::set<std::string> seen;
@@ -38,7 +30,7 @@ TEST(GameRegistry, EveryGameRacksItsOwnBallsOnEachOfItsTables) {
     ASSERT_FALSE(g.tables.empty()) << g.name;
     ASSERT_FALSE(g.rule_sets.empty()) << g.name;
     for (const std::string& name : g.tables) {
-      const auto table = tableNamed(name);
+      const auto table = TableDef::named(name);
       ASSERT_TRUE(table) << g.name << ": " << name;
       std::set<int> racked;
       for (const BallState& b : g.rack(*table, 0.028575, 1, 0.0)) racked.insert(b.id);
@@ -47,6 +39,15 @@ TEST(GameRegistry, EveryGameRacksItsOwnBallsOnEachOfItsTables) {
       if (!g.cue_in_hand) expected.insert(kCueBall);
       EXPECT_EQ(racked, expected) << g.name << " " << name;
     }
+  }
+}
+
+// MatchSetup::setGame takes the game's first table and its preset by name: each must exist.
+TEST(GameRegistry, EveryGamesEquipmentIsBuiltIn) {
+  for (const GameDef& g : allGames()) {
+    EXPECT_TRUE(PhysicsParams::preset(g.physics)) << g.name << ": " << g.physics;
+    for (const std::string& name : g.tables)
+      EXPECT_TRUE(TableDef::named(name)) << g.name << ": " << name;
   }
 }
 

@@ -1,6 +1,6 @@
-// Snooker's table markings, opening position and re-spotting (WPBSA 3.2, 3.7; the contract of
-// issue 34), on the official table's playing area (3.569 x 1.778 m) until the named snooker
-// tables land.
+// Snooker's opening position, spots by ball id and re-spotting (WPBSA 3.2, 3.7; the contract of
+// issue 34), on the "snooker" table (3.569 x 1.778 m). The spots' distances themselves are
+// tested with SnookerLayout (tests/physics/model/table_markings_test.cpp).
 #include "games/snooker/snooker.hpp"
 
 #include <gtest/gtest.h>
@@ -9,28 +9,39 @@
 
 #include "games/snooker/respot.hpp"
 #include "games/snooker/spots.hpp"
+#include "nineball/games.hpp"
+#include "nineball/table_markings.hpp"
 
 namespace nineball {
 namespace {
 
-constexpr double kR = 0.02625;
-const TableDef kTable{3.569, 1.778};
+constexpr double kR = 0.02625;  // WPBSA section 1 rule 2: 52.5 mm
+const TableDef kTable = TableDef::snooker();
 
-TEST(SnookerTable, SpotsAndTheDFollowTheContract) {
-  EXPECT_NEAR(snooker::baulkLineX(kTable), -1.7845 + 0.737, 1e-12);
-  EXPECT_NEAR(snooker::dRadius(kTable), 0.292, 1e-12);
+TEST(SnookerTable, EachColourHasItsOwnSpotAndTheBlueTheCentre) {
+  const SnookerLayout l = SnookerLayout::of(kTable);
+  const std::pair<int, Vec2> spots[] = {{16, l.yellow}, {17, l.green}, {18, l.brown},
+                                        {19, l.blue},   {20, l.pink},  {21, l.black}};
+  for (const auto& [ball, spot] : spots) {
+    EXPECT_EQ(snooker::colourSpot(kTable, ball).x, spot.x) << ball;
+    EXPECT_EQ(snooker::colourSpot(kTable, ball).y, spot.y) << ball;
+  }
   EXPECT_NEAR(snooker::colourSpot(kTable, 16).y, -0.292, 1e-12);  // yellow on the right
-  EXPECT_NEAR(snooker::colourSpot(kTable, 17).y, 0.292, 1e-12);
-  EXPECT_NEAR(snooker::colourSpot(kTable, 20).x, 3.569 / 4.0, 1e-12);
   EXPECT_NEAR(snooker::colourSpot(kTable, 21).x, 1.7845 - 0.324, 1e-12);
-  EXPECT_EQ(snooker::colourSpot(kTable, 19).x, 0.0);
-  const double xb = snooker::baulkLineX(kTable);
-  EXPECT_TRUE(snooker::inTheD(kTable, {xb, 0.292}));
-  EXPECT_TRUE(snooker::inTheD(kTable, {xb - 0.2, 0.0}));
-  EXPECT_FALSE(snooker::inTheD(kTable, {xb + 0.01, 0.0}));  // the wrong side of the baulk line
-  EXPECT_FALSE(snooker::inTheD(kTable, {xb - 0.25, 0.2}));  // outside the semicircle
-  const TableDef ten{3.569 * 10.0 / 12.0, 1.778 * 10.0 / 12.0};
-  EXPECT_NEAR(snooker::dRadius(ten), 0.292 * 10.0 / 12.0, 1e-12);
+  const TableDef ten = TableDef::snookerTenFoot();
+  EXPECT_NEAR(snooker::colourSpot(ten, 17).y, 0.292 * 10.0 / 12.0, 1e-12);
+}
+
+TEST(SnookerTable, TheCueBallInHandGoesInTheDItsLineAndArcIncluded) {
+  const SnookerLayout l = SnookerLayout::of(kTable);
+  const double xb = l.baulk_x;
+  EXPECT_NEAR(xb, -1.7845 + 0.737, 1e-12);
+  EXPECT_TRUE(inCueArea(CueArea::TheD, kTable, {xb, 0.292}));  // on the line and the arc
+  EXPECT_TRUE(inCueArea(CueArea::TheD, kTable, {xb - 0.2, 0.0}));
+  EXPECT_FALSE(inCueArea(CueArea::TheD, kTable, {xb + 0.01, 0.0}));  // the wrong side of the line
+  EXPECT_FALSE(inCueArea(CueArea::TheD, kTable, {xb - 0.25, 0.2}));  // outside the semicircle
+  EXPECT_EQ(cueAreaText(CueArea::TheD, kTable),
+            "in the D (x <= -1.0475, within 0.2920 m of (-1.0475, 0))");
 }
 
 TEST(SnookerTable, TheRackPutsTheColoursOnTheirSpotsAndTheRedsBehindThePink) {

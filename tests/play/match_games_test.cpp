@@ -8,10 +8,13 @@
 
 #include "nineball/match.hpp"
 #include "nineball/scenes.hpp"
+#include "play/match_turns.hpp"
 
 namespace nineball {
 namespace {
 
+using play_test::decision;
+using play_test::shot;
 using rules::Decision;
 using rules::Foul;
 using rules::Game;
@@ -20,21 +23,8 @@ using rules::Player;
 
 constexpr double kR = 0.028575;
 
-TurnInput shot(double heading_deg, double speed) {
-  TurnInput t;
-  t.shot = Shot::withSpeed(heading_deg, speed);
-  return t;
-}
-
 TurnInput called(TurnInput t, int ball, PocketId pocket) {
   t.call = rules::Call{ball, pocket};
-  return t;
-}
-
-TurnInput decision(bool shoot) {
-  TurnInput t;
-  t.kind = TurnInput::Kind::Decision;
-  t.shoot = shoot;
   return t;
 }
 

@@ -1,52 +1,37 @@
 // Snooker played through the real physics: the cue ball in hand in the D, colours re-spotted
 // by the match, the free ball judged from the balls' rest positions, a miss replaced. On the
-// official table's playing area with 52.5 mm balls and the "real" preset until the snooker
-// table and physics preset land (TEMPORARY, issue 34).
+// game's own equipment: the "snooker" table and physics preset.
 #include <gtest/gtest.h>
 
 #include "games/snooker/spots.hpp"
 #include "nineball/match.hpp"
+#include "nineball/table_markings.hpp"
+#include "play/match_turns.hpp"
 
 namespace nineball {
 namespace {
 
+using play_test::decision;
+using play_test::shot;
+using play_test::where;
 using rules::Game;
 using rules::Player;
 
-constexpr double kR = 0.02625;  // WPBSA section 1 rule 2: 52.5 mm
-const TableDef kTable{3.569, 1.778};
+const TableDef kTable = TableDef::snooker();
 
 MatchSetup snookerSetup(std::optional<std::vector<BallState>> balls = std::nullopt) {
   MatchSetup s;
-  s.game = Game::Snooker;
-  s.rules = rules::RuleSet::Wpbsa;
-  s.table = kTable;
-  s.physics = PhysicsParams::preset("real").value();
-  s.physics.ball_radius = kR;
+  s.setGame(Game::Snooker);
   s.balls = std::move(balls);
   return s;
 }
 
-TurnInput shot(double heading_deg, double speed) {
-  TurnInput t;
-  t.shot = Shot::withSpeed(heading_deg, speed);
-  return t;
-}
-
-TurnInput decision(bool shoot, bool replace = false) {
-  TurnInput t;
-  t.kind = TurnInput::Kind::Decision;
-  t.shoot = shoot;
-  t.replace = replace;
-  return t;
-}
-
-Vec2 where(const Match& m, int id) {
-  for (const BallState& b : m.balls()) {
-    if (b.id == id) return b.pos;
-  }
-  ADD_FAILURE() << "no ball " << id;
-  return {};
+TEST(MatchSnooker, TheGameBringsItsOwnTableAndPreset) {
+  const MatchSetup s = snookerSetup();
+  EXPECT_EQ(s.rules, rules::RuleSet::Wpbsa);
+  EXPECT_EQ(s.table.length, 3.569);
+  EXPECT_EQ(s.table.marks, TableMarks::Snooker);
+  EXPECT_EQ(s.physics.ball_radius, PhysicsParams::preset("snooker")->ball_radius);
 }
 
 TEST(MatchSnooker, TheOpeningStrokeIsPlayedFromHandInTheD) {
@@ -54,7 +39,7 @@ TEST(MatchSnooker, TheOpeningStrokeIsPlayedFromHandInTheD) {
   EXPECT_TRUE(m.cueInHand());
   EXPECT_EQ(m.cueArea(), CueArea::TheD);
   EXPECT_FALSE(m.cueBehindHeadString());
-  const double xb = snooker::baulkLineX(kTable);
+  const double xb = SnookerLayout::of(kTable).baulk_x;
   try {
     m.play(shot(0.0, 3.0));
     FAIL() << "a stroke without placing the cue ball";

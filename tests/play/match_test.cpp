@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "play/match_turns.hpp"
+
 using nineball::BallState;
 using nineball::IllegalAction;
 using nineball::Match;
@@ -13,6 +15,7 @@ using nineball::Shot;
 using nineball::TurnInput;
 using nineball::TurnRecord;
 using nineball::Vec2;
+using nineball::play_test::shot;
 using nineball::rules::Foul;
 using nineball::rules::Player;
 using nineball::rules::RuleSet;
@@ -20,13 +23,6 @@ using nineball::rules::RuleSet;
 namespace {
 
 constexpr double kR = 0.028575;
-
-TurnInput shot(double heading_deg, double speed, std::optional<Vec2> cue = std::nullopt) {
-  TurnInput t;
-  t.shot = Shot::withSpeed(heading_deg, speed);
-  t.cue = cue;
-  return t;
-}
 
 double headingTo(Vec2 from, Vec2 to) {
   return nineball::radToDeg(std::atan2(to.y - from.y, to.x - from.x));

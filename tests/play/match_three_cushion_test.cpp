@@ -5,10 +5,13 @@
 #include <cmath>
 
 #include "nineball/match.hpp"
+#include "play/match_turns.hpp"
 
 namespace nineball {
 namespace {
 
+using play_test::shot;
+using play_test::where;
 using rules::Game;
 using rules::Player;
 
@@ -21,20 +24,6 @@ MatchSetup threeCushion(std::uint64_t seed = 1) {
   s.setGame(Game::ThreeCushion);
   s.seed = seed;
   return s;
-}
-
-TurnInput shot(double heading_deg, double speed) {
-  TurnInput t;
-  t.shot = Shot::withSpeed(heading_deg, speed);
-  return t;
-}
-
-Vec2 where(const Match& m, int id) {
-  for (const BallState& b : m.balls()) {
-    if (b.id == id) return b.pos;
-  }
-  ADD_FAILURE() << "no ball " << id;
-  return {};
 }
 
 TEST(MatchThreeCushion, StartsFromTheUmbOpeningPositionWithCaromEquipment) {

@@ -222,3 +222,50 @@ TEST(GameSession, AScriptCannotGiveASpeedTheCueCannot) {
   turn.shot.speed = GameSession::kMaxSpeed;
   EXPECT_NO_THROW(s.playTurn(turn));
 }
+
+// Snooker's frames follow one another as racks do, counted per player; in a match of best of
+// N the first to ceil(N/2) frames wins it, and the next rematch starts a new match at 0-0.
+namespace {
+
+GameSession snookerFrameWonOnTheBlack(int best_of, int won0, int won1) {
+  MatchSetup setup;
+  setup.setGame(nineball::rules::Game::Snooker);
+  // The black alone, straight at the top-right pocket: its pot ends the frame, 7-0.
+  setup.balls = {BallState::at(0, {1.40, 0.505}), BallState::at(21, {1.60, 0.705})};
+  GameSession s(setup);
+  s.setBestOf(best_of);
+  s.resumeRack(0, won0, won1);
+  s.setHeading(nineball::degToRad(45.0));
+  s.setSpeed(2.5);
+  EXPECT_TRUE(s.shoot());
+  EXPECT_TRUE(roll(s));
+  EXPECT_EQ(s.phase(), Phase::GameOver);
+  return s;
+}
+
+}  // namespace
+
+TEST(GameSession, SnookerFramesCountTowardsAMatchOfBestOfN) {
+  GameSession s = snookerFrameWonOnTheBlack(3, 0, 0);
+  EXPECT_EQ(s.racksWon(0), 1);
+  EXPECT_FALSE(s.matchWinner());
+  EXPECT_EQ(s.status(), "Player 1 wins frame 1 (frames 1-0, best of 3). R: next frame");
+  s.rematch();
+  EXPECT_EQ(s.phase(), Phase::Aiming);
+  EXPECT_EQ(s.racksWon(0), 1);               // the match goes on
+  EXPECT_GE(s.match().balls().size(), 21u);  // the next frame racked in full
+
+  GameSession won = snookerFrameWonOnTheBlack(3, 1, 1);
+  ASSERT_TRUE(won.matchWinner());
+  EXPECT_EQ(*won.matchWinner(), 0);
+  EXPECT_EQ(won.status(), "Player 1 wins the match 2-1 (best of 3). R: new match");
+  won.rematch();
+  EXPECT_EQ(won.racksWon(0), 0);  // a new match
+  EXPECT_EQ(won.racksWon(1), 0);
+  EXPECT_FALSE(won.matchWinner());
+
+  // Without a match length the frames simply add up.
+  GameSession open = snookerFrameWonOnTheBlack(0, 4, 0);
+  EXPECT_EQ(open.racksWon(0), 5);
+  EXPECT_FALSE(open.matchWinner());
+}

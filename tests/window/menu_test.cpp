@@ -189,5 +189,39 @@ TEST(Menu, TheSoundRowSaysOffWhenStartedWithMute) {
   EXPECT_FALSE(sound.enabled);
 }
 
+// Snooker is played in frames: a Frames row sets the match's length, best of 1 to 11, kept in
+// the settings; a game without frames has no such row.
+TEST(Menu, SnookerChoosesTheMatchLengthInFrames) {
+  MenuModel m(Settings{}, std::nullopt);
+  EXPECT_EQ(rowNamed(m, "Frames"), -1);
+  EXPECT_EQ(m.choice().best_of, 0);
+  selectRow(m, "Game");
+  for (int i = 0; i < 10 && m.rows()[m.selected()].value != "Snooker"; ++i) m.key(MenuKey::Right);
+  ASSERT_EQ(m.rows()[m.selected()].value, "Snooker");
+  ASSERT_GE(rowNamed(m, "Frames"), 0);
+  EXPECT_EQ(m.rows()[rowNamed(m, "Frames")].value, "Best of 1 (first to 1)");
+  selectRow(m, "Frames");
+  m.key(MenuKey::Right);
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Best of 5 (first to 3)");
+  m.key(MenuKey::Left);
+  m.key(MenuKey::Left);
+  m.key(MenuKey::Left);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Best of 11 (first to 6)") << "the lengths go round";
+  m.key(MenuKey::Enter);  // a choice moves on with Enter too
+  EXPECT_EQ(m.rows()[m.selected()].value, "Best of 1 (first to 1)");
+  m.key(MenuKey::Right);
+  selectRow(m, "Play snooker");
+  m.key(MenuKey::Enter);
+  ASSERT_EQ(m.outcome(), MenuModel::Outcome::Play);
+  EXPECT_EQ(m.choice().best_of, 3);
+  EXPECT_EQ(m.settings().last.best_of, 3);
+  // The next start offers the length chosen last; a saved length no longer offered is not.
+  EXPECT_EQ(MenuModel(m.settings(), std::nullopt).choice().best_of, 3);
+  Settings odd = m.settings();
+  odd.last.best_of = 4;
+  EXPECT_EQ(MenuModel(odd, std::nullopt).choice().best_of, 1);
+}
+
 }  // namespace
 }  // namespace nineball::window

@@ -100,6 +100,7 @@ TEST_F(RackFiles, SaveLoadReplayGivesTheSameBalls) {
 
 TEST_F(RackFiles, ALaterRackResumesWithItsSeedBreakerAndScore) {
   GameSession played(MatchSetup{});
+  played.setBestOf(7);         // a match of frames keeps its length through the save
   played.resumeRack(3, 2, 1);  // as after three racks
   EXPECT_EQ(played.rackNumber(), 4);
   EXPECT_EQ(played.seatToMove(), 1);  // the seats take turns to break
@@ -114,6 +115,7 @@ TEST_F(RackFiles, ALaterRackResumesWithItsSeedBreakerAndScore) {
   EXPECT_EQ(resumed.rackNumber(), 4);
   EXPECT_EQ(resumed.racksWon(0), 2);
   EXPECT_EQ(resumed.racksWon(1), 1);
+  EXPECT_EQ(resumed.bestOf(), 7);
   const auto a = played.match().balls();
   const auto b = resumed.match().balls();
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].pos, b[i].pos);

@@ -73,6 +73,8 @@ TEST_F(SettingsFiles, SaveThenLoadGivesTheSameSettings) {
   s.last.mode = GameMode::Practice;
   s.last.opponent = ComputerSeat{ai::Level::Master};
   s.last.rules = rules::RuleSet::Paper;
+  s.last.points = 40;
+  s.last.best_of = 9;
   s.last.names = {"Ann \u00e9", "Bob"};
   std::string why;
   ASSERT_TRUE(saveSettings(s, settingsPath(), why)) << why;

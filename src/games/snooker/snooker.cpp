@@ -58,6 +58,10 @@ GameDef snooker() {
   g.in_hand_area = CueArea::TheD;
   g.spot = snooker::respotPlace;
   g.snookers = true;
+  // A snooker match is the best of an agreed odd number of frames, odd so that it cannot be tied
+  // (professional ones from best of 9 to the world final's 35: sportsdefinitions.com/snooker/
+  // frame, liquisearch.com/rules_of_snooker); up to 11 here, a single frame the quick game.
+  g.best_of_choices = {1, 3, 5, 7, 9, 11};
   return g;
 }
 

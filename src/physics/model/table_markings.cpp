@@ -13,6 +13,9 @@ constexpr double kFullLength = 3.569;
 constexpr double kBaulkFromCushion = 0.737;
 constexpr double kDRadius = 0.292;
 constexpr double kBlackFromCushion = 0.324;
+// A point exactly on the baulk line or the D's arc counts as in the D (a cue ball placed on
+// the line is in hand legally).
+constexpr double kOnTheLine = 1e-9;
 
 }  // namespace
 
@@ -38,7 +41,7 @@ std::vector<Vec2> SnookerLayout::spotsHighestFirst() const {
 }
 
 bool SnookerLayout::inD(Vec2 p) const {
-  return p.x <= baulk_x && length(p - brown) <= d_radius;
+  return p.x <= baulk_x + kOnTheLine && length(p - brown) <= d_radius + kOnTheLine;
 }
 
 TableMarkings markingsOf(const TableDef& table) {
