@@ -113,12 +113,22 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
     case Overlay::GameOver: {
       const auto winner = session.match().rack().winner();
       const std::string name = winner ? session.seatName(session.seatOf(*winner)) : "";
-      hud.overlay_title = name + " wins rack " + std::to_string(session.rackNumber()) + "!";
-      hud.overlay_lines = {session.message(), "Racks: " + session.seatName(0) + " " +
-                                                  std::to_string(session.racksWon(0)) + " - " +
-                                                  std::to_string(session.racksWon(1)) + " " +
-                                                  session.seatName(1)};
-      hud.button_left = "Rematch (R)";
+      // Snooker's frames make a match of bestOf() frames; pool's racks simply add up.
+      const bool frames = gameDef(session.match().rack().game()).snookers;
+      const std::string unit = frames ? "frame" : "rack";
+      const std::string tally = session.seatName(0) + " " + std::to_string(session.racksWon(0)) +
+                                " - " + std::to_string(session.racksWon(1)) + " " +
+                                session.seatName(1);
+      hud.overlay_title = name + " wins " + unit + " " + std::to_string(session.rackNumber()) + "!";
+      hud.overlay_lines = {session.message(), (frames ? "Frames: " : "Racks: ") + tally};
+      hud.button_left = frames ? "Next frame (R)" : "Rematch (R)";
+      if (frames && session.bestOf() > 0) {
+        hud.overlay_lines.back() += " (best of " + std::to_string(session.bestOf()) + ")";
+        if (const auto champion = session.matchWinner()) {
+          hud.overlay_title = session.seatName(*champion) + " wins the match!";
+          hud.button_left = "New match (R)";
+        }
+      }
       hud.button_right = "Quit";
       break;
     }
