@@ -337,6 +337,30 @@ int safetyAnglesEach(const LevelSettings& level, std::size_t targets) {
   return std::max(kMinSafetyAnglesEach, each | 1);
 }
 
+// Snooker: up to `count` lines, the best of each ball and pocket first (one line each, in the
+// order of their priors), then the next best aims across the same mouths. With fifteen reds,
+// or six colours after a red, keeping the easiest lines alone spent the budget on three aims
+// at one pocket; a break is built by choosing among balls.
+void keepBestOfEachPot(std::vector<Line>& lines, int count) {
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const Line& a, const Line& b) { return a.prior > b.prior; });
+  std::vector<Line> first;
+  std::vector<Line> rest;
+  for (const Line& line : lines) {
+    const bool seen = std::any_of(first.begin(), first.end(), [&](const Line& f) {
+      return f.target == line.target && f.pocket == line.pocket;
+    });
+    (seen ? rest : first).push_back(line);
+  }
+  first.insert(first.end(), rest.begin(), rest.end());
+  if (static_cast<int>(first.size()) > count) first.resize(static_cast<std::size_t>(count));
+  lines = first;
+}
+
+bool isSnooker(const SearchContext& ctx) {
+  return ctx.in.rack.game() == rules::Game::Snooker;
+}
+
 // Lines of one generator for every ball in `ons`, in that order.
 template <typename Generate>
 std::vector<Line> allLinesFor(const std::vector<const BallState*>& ons, Generate generate) {
@@ -366,9 +390,13 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
   const LevelSettings& level = ctx.level;
   const std::vector<Vec2> centre{Vec2{}};
   if (!ons.empty()) {
-    const auto pots = linesFor(ons, potLineCount(level, ons.size()), [&](const BallState& on) {
-      return potLines(ctx, balls, cue, on, std::nullopt);
-    });
+    auto pots = allLinesFor(
+        ons, [&](const BallState& on) { return potLines(ctx, balls, cue, on, std::nullopt); });
+    if (isSnooker(ctx)) {
+      keepBestOfEachPot(pots, potLineCount(level, ons.size()));
+    } else {
+      keepBest(pots, potLineCount(level, ons.size()));
+    }
     expand(ctx, cue, pots, level.pot_speeds, usableTips(ctx), placed, out);
     if (level.combinations) {
       const auto combinations = linesFor(ons, kMaxCombinationLines, [&](const BallState& on) {
@@ -444,14 +472,28 @@ std::vector<Candidate> pushOutShots(const SearchContext& ctx, int headings) {
   return out;
 }
 
+namespace {
+
+// Snooker: the striker nominates the colour after a red, and the ball he plays as a free ball
+// (WPBSA 3.6, 3.12); the rules take the first colour hit when none is stated, which a kiss
+// on the way could make another.
+bool nominates(const rules::Rack& rack) {
+  return rack.game() == rules::Game::Snooker && (rack.state().snooker.colour_on || rack.freeBall());
+}
+
+}  // namespace
+
 void assignCalls(const SearchContext& ctx, std::vector<Candidate>& cands) {
-  if (!ctx.in.rack.callRequired()) return;
+  if (!ctx.in.rack.callRequired() && !nominates(ctx.in.rack)) return;
   for (Candidate& c : cands) {
     if (c.kind == ShotKind::PushOut) continue;
     if (c.pocket && c.target > 0) {
       c.call = rules::Call{c.target, *c.pocket};
       continue;
     }
+    // A snooker stroke in no particular direction leaves the nomination to the first colour
+    // it hits.
+    if (c.first <= 0 && !ctx.in.rack.callRequired()) continue;
     const int ball = c.first > 0 ? c.first : ctx.firstTarget();
     const BallState* b = objectBall(ctx.in.balls, ball);
     if (!b) continue;
