@@ -41,7 +41,7 @@ std::string story(const nlohmann::json& turns) {
 }
 
 // A whole frame between two computers, pinned turn by turn: who played, the fouls, what went
-// down, the decisions after fouls; and the final score. Played by "advanced" (41 turns, about 7
+// down, the decisions after fouls; and the final score. Played by "advanced" (58 turns, about 10
 // s; the frame changes whenever the computer's snooker does: src/ai/snooker_value.cpp):
 // "beginner" does not finish a frame in 500 turns (it misses the reds on the long table).
 TEST(MatchSnookerCli, GoldenFrameBetweenTwoComputers) {
@@ -49,16 +49,19 @@ TEST(MatchSnookerCli, GoldenFrameBetweenTwoComputers) {
   const CliOutcome first = runOnDocument("match", s);
   ASSERT_EQ(first.status, 0) << first.err;
   const auto doc = nlohmann::json::parse(first.out);
-  EXPECT_EQ(story(doc["turns"]),
-            "A B A:4 A B:9 B A B:2 B:21 B:13.8 B:18 B:1 B:19 B:7 B:19 B A:6 A!potted-not-on:20 "
-            "B?play B:14 B:21 B:10 B A:12 A:19 A B A:5 A B:3 B:18 B:15 B:16 B:11 B:18 B:16 B:17 "
-            "B:18 B:19 B:20 B:21");
-  EXPECT_EQ(doc["winner"], "B");
-  const nlohmann::json a = {{"points", 9}, {"break", 0}, {"high_break", 6}};
-  const nlohmann::json b = {{"points", 82}, {"break", 0}, {"high_break", 40}};
+  EXPECT_EQ(
+      story(doc["turns"]),
+      "A B A B:11 B:18 B:10 B A B A:14 A:21 A:15 A:21 A:12 A B A:6 A!scratch B?play B:1 B A B "
+      "A:4 A:20 A:5 A:21 A B A B:2 B:18 B:13 B:21 B:8 B!scratch A?play A:9 A:19 A:7 A!scratch "
+      "B?play B A B:3 B!potted-not-on:21 A?play A:18 A:16 A:17 A B A B:18 B:19 B:20 B "
+      "A!no-contact");
+  // A, 58-47 ahead with the black alone left, fouls it: the first foul ends the frame (WPBSA 3.4).
+  EXPECT_EQ(doc["winner"], "A");
+  const nlohmann::json a = {{"points", 58}, {"break", 0}, {"high_break", 17}};
+  const nlohmann::json b = {{"points", 54}, {"break", 0}, {"high_break", 15}};
   EXPECT_EQ(doc["score"]["A"], a);
   EXPECT_EQ(doc["score"]["B"], b);
-  EXPECT_EQ(doc["points_remaining"], 0);
+  EXPECT_EQ(doc["points_remaining"], 7);
   EXPECT_EQ(doc["turns"][0]["cue"].size(), 2u);  // the opening stroke placed the cue ball
   for (const auto& t : doc["turns"]) {
     EXPECT_TRUE(t.contains("score") && t.contains("points_remaining") && t.contains("break"));
