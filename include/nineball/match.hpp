@@ -134,6 +134,9 @@ class Match {
   Engine& world() { return *world_; }
   const Engine& world() const { return *world_; }
   std::vector<BallState> balls() const { return world_->balls(); }
+  /// Snooker: the balls as they lay before the last shot, where a replace after a miss puts
+  /// them (empty before the first shot).
+  const std::vector<BallState>& ballsBeforeShot() const { return before_shot_; }
 
  private:
   void placeCue(Vec2 pos);

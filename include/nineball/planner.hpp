@@ -220,6 +220,9 @@ class Planner {
 
  private:
   Plan planCaromShot(const PlanInput& in);
+  /// Snooker after a foul (Decision::PlayOrPutBack, PlayPutBackOrReplace): the choice worth
+  /// most to the chooser, each judged by planning the stroke that follows it.
+  TurnInput decideAfterFoul(const Match& match);
 
   Level level_;
   LevelSettings settings_;

@@ -354,6 +354,11 @@ TurnInput Planner::execute(const Plan& plan) {
 
 TurnInput Planner::turnFor(const Match& match) {
   const PlanInput in = planInputFrom(match);
+  const rules::Decision pending = match.rack().pendingDecision();
+  if (pending == rules::Decision::PlayOrPutBack ||
+      pending == rules::Decision::PlayPutBackOrReplace) {
+    return decideAfterFoul(match);
+  }
   if (match.rack().awaitingDecision()) {
     TurnInput turn;
     turn.kind = TurnInput::Kind::Decision;

@@ -10,6 +10,7 @@
 #include "ai/planner_geometry.hpp"
 #include "ai/thread_world.hpp"
 #include "nineball/engine.hpp"
+#include "nineball/games.hpp"
 #include "play/shot_summary.hpp"
 
 namespace nineball::ai {
@@ -127,14 +128,25 @@ std::optional<Outcome> Evaluator::outcome(const Candidate& c, const Shot& shot) 
     return std::nullopt;
   }
   o.balls = world.balls();
-  for (int spotted : o.verdict.to_spot) {
+  respotBalls(o);
+  return o;
+}
+
+void Evaluator::respotBalls(Outcome& o) const {
+  const SpotFinder finder = gameDef(in_.rack.game()).spot;
+  std::vector<int> to_spot = o.verdict.to_spot;
+  // WPBSA 3.7(b): when several colours are spotted the highest value takes precedence (the
+  // order src/play/match.cpp spots them in).
+  if (finder) std::sort(to_spot.rbegin(), to_spot.rend());
+  for (int spotted : to_spot) {
+    const Vec2 place =
+        finder ? finder(spotted, table_, in_.physics.ball_radius, o.balls) : table_.footSpot();
     for (BallState& b : o.balls) {
       if (b.id != spotted) continue;
       b.pocket.reset();
-      b.pos = table_.footSpot();
+      b.pos = place;
     }
   }
-  return o;
 }
 
 double Evaluator::value(const Candidate& c, const Shot& shot) const {
@@ -169,6 +181,7 @@ double Evaluator::groupBalance(const Outcome& o) const {
 }
 
 double Evaluator::score(const Outcome& o) const {
+  if (in_.rack.game() == rules::Game::Snooker) return snookerScore(o);
   const rules::Verdict& verdict = o.verdict;
   const rules::Player me = in_.rack.shooter();
   if (verdict.winner) return *verdict.winner == me ? 1.0 : 0.0;

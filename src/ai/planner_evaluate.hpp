@@ -77,6 +77,18 @@ class Evaluator {
   double groupBalance(const Outcome& o) const;
   // The best chance of potting any ball `rack` allows first, from a cue ball at `cue`.
   double chanceFrom(const std::vector<BallState>& after, const rules::Rack& rack, Vec2 cue) const;
+  // Puts the balls the verdict spots back: where the game's GameDef::spot says (snooker's
+  // colours, the highest first, as the match does), else on the foot spot.
+  void respotBalls(Outcome& o) const;
+
+  // Snooker (snooker_value.cpp): points, position on the next ball on, the reds' spread,
+  // safeties judged by what they leave, fouls by the penalty and the leave.
+  double snookerScore(const Outcome& o) const;
+  // The chance of the player to move in `o`: from where the cue ball stopped, or with it in
+  // hand the best of a few places in the D.
+  double snookerChance(const Outcome& o) const;
+  // The best chance with the cue ball in hand in the D: a few places on its line and arc.
+  double chanceFromTheD(const std::vector<BallState>& after, const rules::Rack& rack) const;
 
   const PlanInput& in_;
   const TableGeometry& table_;

@@ -16,6 +16,7 @@
 #include "app/ai_bench_carom.hpp"
 #include "app/ai_bench_common.hpp"
 #include "app/ai_bench_positions.hpp"
+#include "app/ai_bench_snooker.hpp"
 #include "app/exit_codes.hpp"
 #include "common/log.hpp"
 #include "nineball/games.hpp"
@@ -27,6 +28,8 @@ namespace {
 
 // Pool racks measured when --racks is not given.
 constexpr int kDefaultRacks = 100;
+// Snooker frames measured when --racks is not given: a frame takes 60 or more planned shots.
+constexpr int kDefaultSnookerFrames = 4;
 // A rack that lasts longer than this many turns of one player is not a run-out anyway.
 constexpr int kMaxTurnsPerRack = 60;
 
@@ -201,7 +204,8 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
       ->capture_default_str();
   cmd->add_option("--racks", options.racks,
                   "Racks to break and try to run out (default 100); three-cushion: games to 25 "
-                  "points between two players of the level (default none)")
+                  "points between two players of the level (default none); snooker: frames "
+                  "between two players of the level (default 4)")
       ->check(CLI::Range(0, 100000));
   cmd->add_option("--seed", options.seed, "First seed of positions and racks")
       ->capture_default_str();
@@ -255,8 +259,17 @@ int runAiBench(const AiBenchOptions& given, std::ostream& out, std::ostream& err
     return kExitBadInput;
   }
   const bool carom = gameDef(*game).family == GameFamily::Carom;
-  if (options.racks < 0) options.racks = carom ? 0 : kDefaultRacks;
+  const bool snooker = *game == rules::Game::Snooker;
+  if (options.racks < 0)
+    options.racks = carom ? 0 : snooker ? kDefaultSnookerFrames : kDefaultRacks;
   if (versus) versus->racks = options.racks;
+  if (snooker) {
+    if (versus) {
+      err << "nineball ai-bench: --versus: not for snooker (its frames report breaks)\n";
+      return kExitBadInput;
+    }
+    return runSnookerBench(options, out, err);
+  }
   if (carom) {
     if (versus) {
       err << "nineball ai-bench: --versus: not for " << options.game
