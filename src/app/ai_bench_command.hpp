@@ -14,8 +14,8 @@ struct AiBenchOptions {
   std::string level = "master";           ///< the level measured (or an older name)
   std::string game = defaultGame().name;  ///< a game of the registry (nineball/games.hpp)
   int positions = 100;                    ///< seeded practice positions to pot the ball on from
-  /// Racks broken to try to run out (carom: games played to the distance); -1 for the game's
-  /// default, 100 racks of pool or no carom games.
+  /// Racks broken to try to run out (carom: games played to the distance; snooker: whole
+  /// frames); -1 for the game's default, 100 racks of pool, no carom games or 4 snooker frames.
   int racks = -1;
   std::uint64_t seed = 1;  ///< first seed of the positions and the racks
   int threads = 2;         ///< workers simulating candidates
@@ -37,7 +37,7 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options);
 /// {"game", "level", "noise", "positions": {"made", "fouls", "of"}, "racks": {"runouts", "of",
 /// "ball_down_on_break"}, "shots": {"succeeded", "attempted"}, "think_s": {"median", "max"},
 /// "shots_simulated_per_cpu_s"}; with `versus` also "versus": {"A", "B", "racks", "wins":
-/// {"A", "B"}}.
+/// {"A", "B"}}. Carom (ai_bench_carom.hpp) and snooker (ai_bench_snooker.hpp) report their own.
 int runAiBench(const AiBenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace nineball::app
