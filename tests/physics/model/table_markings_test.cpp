@@ -46,7 +46,7 @@ TEST(TableMarkings, TheDHoldsItsInsideOnly) {
   EXPECT_TRUE(l.inD(l.brown));
   EXPECT_TRUE(l.inD(l.brown + Vec2{-0.2, 0.1}));
   EXPECT_TRUE(l.inD(l.yellow));
-  EXPECT_FALSE(l.inD(l.brown + Vec2{0.01, 0.0}));  // in front of the baulk line
+  EXPECT_FALSE(l.inD(l.brown + Vec2{0.01, 0.0}));   // in front of the baulk line
   EXPECT_FALSE(l.inD(l.brown + Vec2{-0.25, 0.2}));  // behind the line, outside the half circle
 }
 
