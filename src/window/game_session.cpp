@@ -351,25 +351,14 @@ void GameSession::aimAtBallOn() {
 
 std::optional<double> GameSession::clearHeadingToBallOn(Vec2 cue) const {
   const double r = match_->world().physics().ball_radius;
-  // The cue ball sent at `aim` (a ghost ball's place) meets `on` before any other ball.
+  const Engine& w = match_->world();
+  // The cue ball sent at `aim` (a ghost ball's place) meets `on` before anything else: the aim
+  // guide's own trace.
   auto reaches = [&](int on, Vec2 aim) {
-    const double d = length(aim - cue);
-    if (d <= 0.0) return false;
-    const Vec2 dir = (aim - cue) / d;
-    double first = d + 1.0;
-    int first_ball = -1;
-    for (const BallState& o : shot_.current) {
-      if (o.pocket || o.id == kCueBall) continue;
-      const double along = dot(o.pos - cue, dir);
-      const double side = std::abs(cross(dir, o.pos - cue));
-      if (along <= 0.0 || side >= 2.0 * r) continue;
-      const double touch = along - std::sqrt(4.0 * r * r - side * side);
-      if (touch < first) {
-        first = touch;
-        first_ball = o.id;
-      }
-    }
-    return first_ball == on;
+    if (length(aim - cue) <= 0.0) return false;
+    const AimGuide guide =
+        computeAimGuide(w.table(), r, shot_.current, cue, std::atan2(aim.y - cue.y, aim.x - cue.x));
+    return guide.target == AimTarget::Ball && guide.ball == on;
   };
   // The nearest ball on straight at its centre, else the nearest a thin contact reaches (snooker's
   // break-off clips the end red of the triangle).
