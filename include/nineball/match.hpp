@@ -96,6 +96,19 @@ struct TurnRecord {
   bool free_ball_next = false;
 };
 
+/// Everything a Match carries from one turn to the next: restoring it into a Match of the same
+/// setup gives that match again, to the bit (what online play sends to heal a peer that fell
+/// out of step).
+struct MatchSnapshot {
+  std::vector<BallState> balls;
+  rules::RackState rack;
+  bool cue_pocketed = false;            ///< the cue ball is off the table, waiting to be placed
+  std::vector<BallState> balls_before;  ///< snooker: where a replace after a miss puts them
+};
+
+/// A fingerprint of a snapshot, bit for bit: the balls (stateHash) and the rack's state.
+std::uint64_t snapshotHash(const MatchSnapshot& snapshot);
+
 /// A rack of any game of the registry (nineball/games.hpp) played through the real physics: the
 /// table, the balls, the rules. Headless and deterministic. A window drives it with beginShot /
 /// step / finishShot; a script with play().
@@ -137,6 +150,13 @@ class Match {
   /// Snooker: the balls as they lay before the last shot, where a replace after a miss puts
   /// them (empty before the first shot).
   const std::vector<BallState>& ballsBeforeShot() const { return before_shot_; }
+
+  /// The state between turns (throws IllegalAction while a shot rolls).
+  MatchSnapshot snapshot() const;
+  /// Puts the match in a state snapshot() gave (of a match of the same setup): the engine is
+  /// rebuilt from the balls, so two matches restored from one snapshot play on identically.
+  /// Throws IllegalAction while a shot rolls.
+  void restore(const MatchSnapshot& snapshot);
 
  private:
   void placeCue(Vec2 pos);

@@ -304,6 +304,8 @@ class Rack {
   /// The balls were set up in the opening position again (carom's frozen balls): the next
   /// shot is played as the opening one.
   void replayOpening() { s_.break_next = true; }
+  /// Puts the rack in a state another copy of it was in (a snapshot taken with state()).
+  void setState(const RackState& s) { s_ = s; }
 
  private:
   const RuleBook* book_;

@@ -25,61 +25,6 @@ constexpr int kHighestPoolBall = 15;
 // The longest game played to points a script may ask for (UMB distances reach 50).
 constexpr int kMostPoints = 100;
 
-rules::Call parseCall(const json& v, const std::string& path, rules::Game game) {
-  expectObject(v, path);
-  allowOnly(v, path, {"ball", "pocket"});
-  rules::Call call;
-  const int highest = std::max(kHighestPoolBall, gameDef(game).highest_ball);
-  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, highest);
-  const std::string name = text(required(v, path, "pocket"), member(path, "pocket"));
-  const auto pocket = pocketFromName(name);
-  if (!pocket) {
-    refuse(member(path, "pocket"),
-           "unknown pocket " + quote(name) +
-               " (expected \"top-left\", \"top-side\", \"top-right\", \"bottom-right\", "
-               "\"bottom-side\" or \"bottom-left\")");
-  }
-  call.pocket = *pocket;
-  return call;
-}
-
-TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rules::Game game) {
-  expectObject(v, path);
-  TurnInput turn;
-  if (const json* d = optional(v, "decision")) {
-    allowOnly(v, path, {"decision"});
-    const std::string where = member(path, "decision");
-    turn.kind = TurnInput::Kind::Decision;
-    const std::string word = text(*d, where);
-    const char* replace = gameDef(game).decision.replace;
-    if (replace && word == replace) {
-      turn.replace = true;
-      turn.shoot = false;
-      return turn;
-    }
-    turn.shoot = decisionField(word, game, where);
-    return turn;
-  }
-  allowOnly(v, path,
-            {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue",
-             "push_out", "call"});
-  if (const json* p = optional(v, "push_out")) {
-    if (!p->is_boolean())
-      refuse(member(path, "push_out"), "expected true or false, found " + describe(*p));
-    if (p->get<bool>()) turn.kind = TurnInput::Kind::PushOut;
-  }
-  turn.shot = parseShotFields(v, path, cue_mass);
-  if (const json* c = optional(v, "cue")) {
-    const std::string cpath = member(path, "cue");
-    if (!c->is_array() || c->size() != 2) {
-      refuse(cpath, "expected [x, y] in metres, found " + describe(*c));
-    }
-    turn.cue = Vec2{number((*c)[0], element(cpath, 0)), number((*c)[1], element(cpath, 1))};
-  }
-  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"), game);
-  return turn;
-}
-
 Seat parsePlayer(const json& v, const std::string& path) {
   const std::string name = text(v, path);
   if (auto seat = seatFromName(name)) return *seat;
@@ -228,6 +173,84 @@ void describeSnookerTurn(const TurnRecord& t, ordered_json& turn) {
 }
 
 }  // namespace
+
+namespace {
+
+rules::Call parseCall(const json& v, const std::string& path, rules::Game game) {
+  expectObject(v, path);
+  allowOnly(v, path, {"ball", "pocket"});
+  rules::Call call;
+  const int highest = std::max(kHighestPoolBall, gameDef(game).highest_ball);
+  call.ball = integer(required(v, path, "ball"), member(path, "ball"), 1, highest);
+  const std::string name = text(required(v, path, "pocket"), member(path, "pocket"));
+  const auto pocket = pocketFromName(name);
+  if (!pocket) {
+    refuse(member(path, "pocket"),
+           "unknown pocket " + quote(name) +
+               " (expected \"top-left\", \"top-side\", \"top-right\", \"bottom-right\", "
+               "\"bottom-side\" or \"bottom-left\")");
+  }
+  call.pocket = *pocket;
+  return call;
+}
+
+}  // namespace
+
+TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rules::Game game) {
+  expectObject(v, path);
+  TurnInput turn;
+  if (const json* d = optional(v, "decision")) {
+    allowOnly(v, path, {"decision"});
+    const std::string where = member(path, "decision");
+    turn.kind = TurnInput::Kind::Decision;
+    const std::string word = text(*d, where);
+    const char* replace = gameDef(game).decision.replace;
+    if (replace && word == replace) {
+      turn.replace = true;
+      turn.shoot = false;
+      return turn;
+    }
+    turn.shoot = decisionField(word, game, where);
+    return turn;
+  }
+  allowOnly(v, path,
+            {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue",
+             "push_out", "call"});
+  if (const json* p = optional(v, "push_out")) {
+    if (!p->is_boolean())
+      refuse(member(path, "push_out"), "expected true or false, found " + describe(*p));
+    if (p->get<bool>()) turn.kind = TurnInput::Kind::PushOut;
+  }
+  turn.shot = parseShotFields(v, path, cue_mass);
+  if (const json* c = optional(v, "cue")) {
+    const std::string cpath = member(path, "cue");
+    if (!c->is_array() || c->size() != 2) {
+      refuse(cpath, "expected [x, y] in metres, found " + describe(*c));
+    }
+    turn.cue = Vec2{number((*c)[0], element(cpath, 0)), number((*c)[1], element(cpath, 1))};
+  }
+  if (const json* c = optional(v, "call")) turn.call = parseCall(*c, member(path, "call"), game);
+  return turn;
+}
+
+ordered_json turnToJson(const TurnInput& turn, rules::Game game) {
+  ordered_json j;
+  if (turn.kind == TurnInput::Kind::Decision) {
+    const DecisionWords& words = gameDef(game).decision;
+    j["decision"] = turn.replace && words.replace ? words.replace
+                    : turn.shoot                  ? words.yes
+                                                  : words.no;
+    return j;
+  }
+  j["heading_deg"] = turn.shot.heading_rad * 180.0 / kPi;
+  j["speed"] = turn.shot.speed;
+  j["tip"] = {turn.shot.tip.x, turn.shot.tip.y};
+  j["elevation_deg"] = turn.shot.elevation_rad * 180.0 / kPi;
+  if (turn.kind == TurnInput::Kind::PushOut) j["push_out"] = true;
+  if (turn.cue) j["cue"] = {turn.cue->x, turn.cue->y};
+  if (turn.call) j["call"] = {{"ball", turn.call->ball}, {"pocket", pocketName(turn.call->pocket)}};
+  return j;
+}
 
 MatchScriptResult parseMatchScript(std::string_view text) {
   try {

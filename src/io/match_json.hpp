@@ -35,6 +35,14 @@ using MatchScriptResult = std::variant<MatchScript, ParseError>;
 /// when a player is the computer.
 MatchScriptResult parseMatchScript(std::string_view text);
 
+/// One turn of a script at `path` ({"heading_deg", "speed", ..., "cue", "call", "push_out"} or
+/// {"decision": word}), checked as `nineball match` checks it; throws ParseError.
+TurnInput parseTurn(const nlohmann::json& v, const std::string& path, double cue_mass,
+                    rules::Game game);
+/// The turn as a script writes it, which parseTurn reads back. Angles go over in degrees, so
+/// the turn read back may differ from `turn` in the last bit: play the one read back.
+nlohmann::ordered_json turnToJson(const TurnInput& turn, rules::Game game);
+
 /// The result document: {"turns": [...], "winner": null|"A"|"B", "balls": [...]}. A turn the
 /// computer played (`computer[i]` set) also carries "player": "ai:<level>" and, for a shot,
 /// "shot": {"heading_deg", "speed", "tip"} and "cue" when it placed the cue ball. A called
