@@ -12,4 +12,9 @@ constexpr int kExitBadInput = 2;
 /// moving: the result printed is partial and flagged so.
 constexpr int kExitPartial = 3;
 
+/// `nineball online`: the two sides' states differed and the host's state did not heal it.
+constexpr int kExitOutOfStep = 4;
+/// `nineball online`: the link failed (nobody came, or the other side left, stopped answering
+/// or misbehaved, and did not come back in time).
+constexpr int kExitLinkFailed = 5;
 }  // namespace nineball::app

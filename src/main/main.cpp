@@ -16,6 +16,7 @@
 #include "window/shot_png.hpp"
 #endif
 #include "app/match_command.hpp"
+#include "app/online_command.hpp"
 #include "app/plan_command.hpp"
 #include "app/resource_dir.hpp"
 #include "app/sim_command.hpp"
@@ -46,6 +47,8 @@ int run(int argc, char** argv) {
   CLI::App* sim = addSimCommand(app, sim_options);
   MatchOptions match_options;
   CLI::App* match = addMatchCommand(app, match_options);
+  OnlineOptions online_options;
+  CLI::App* online = addOnlineCommand(app, online_options);
   PlanOptions plan_options;
   CLI::App* plan = addPlanCommand(app, plan_options);
   AiBenchOptions ai_bench_options;
@@ -97,6 +100,7 @@ int run(int argc, char** argv) {
 #endif
   if (sim->parsed()) return runSim(sim_options, std::cin, std::cout, std::cerr);
   if (match->parsed()) return runMatch(match_options, std::cin, std::cout, std::cerr);
+  if (online->parsed()) return runOnline(online_options, std::cin, std::cout, std::cerr);
   if (plan->parsed()) return runPlan(plan_options, std::cin, std::cout, std::cerr);
   if (ai_bench->parsed()) return runAiBench(ai_bench_options, std::cout, std::cerr);
   if (bench->parsed()) return runBench(bench_options, std::cout, std::cerr);

@@ -1,0 +1,142 @@
+#include "app/online_command.hpp"
+
+#include <istream>
+#include <memory>
+#include <ostream>
+
+#include "app/exit_codes.hpp"
+#include "app/read_input.hpp"
+#include "io/json_reader.hpp"
+#include "io/match_json.hpp"
+#include "net/handshake.hpp"
+#include "net/online_rack.hpp"
+
+namespace nineball::app {
+namespace {
+
+using Outcome = net::OnlineRackResult::Outcome;
+
+int exitFor(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::InStep:
+      return kExitOk;
+    case Outcome::Partial:
+      return kExitPartial;
+    case Outcome::OutOfStep:
+      return kExitOutOfStep;
+    case Outcome::Refused:
+    case Outcome::BadTurn:
+      return kExitBadInput;
+    case Outcome::LinkLost:
+    case Outcome::NoPeer:
+      return kExitLinkFailed;
+  }
+  return kExitInternal;
+}
+
+// Where this side plays: the host's port or the address joined; nothing, with `why`.
+std::optional<net::OnlineRackOptions> sideOf(const OnlineOptions& o, std::string& why) {
+  net::OnlineRackOptions r;
+  if (o.host_port.empty() == o.join.empty()) {
+    why = "give one of --host PORT or --join HOST[:PORT]";
+    return std::nullopt;
+  }
+  if (!o.host_port.empty()) {
+    const auto port = net::parsePort(o.host_port, why);
+    if (!port) return std::nullopt;
+    r.side = net::Side::Host;
+    r.address.port = *port;
+  } else {
+    const auto address = net::parseAddress(o.join, why);
+    if (!address) return std::nullopt;
+    r.side = net::Side::Joiner;
+    r.address = *address;
+  }
+  return r;
+}
+
+}  // namespace
+
+CLI::App* addOnlineCommand(CLI::App& app, OnlineOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "online",
+      "Play a rack with another nineball over the network (host or join), this side's turns "
+      "from a match script; print the rack's result as JSON with the state hash after every "
+      "turn");
+  cmd->add_option("--host", options.host_port, "Host the rack, listening on this TCP port");
+  cmd->add_option("--join", options.join, "Join the rack hosted at HOST[:PORT] (port 47047)");
+  cmd->add_option("script", options.script_path,
+                  "This side's match script (the host's sets the game), or - for standard input")
+      ->required();
+  cmd->add_option("--name", options.name, "The name the other player sees")->capture_default_str();
+  cmd->add_option("--wait", options.wait_s, "Host: seconds to wait for the other player")
+      ->check(CLI::Range(1.0, 86400.0))
+      ->capture_default_str();
+  cmd->add_option("--rejoin", options.rejoin_s,
+                  "Seconds a lost link may take to come back before the rack is given up")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
+  cmd->add_option("--timeout", options.silence_s,
+                  "Seconds of silence after which the other side is taken as gone")
+      ->check(CLI::Range(1.0, 600.0))
+      ->capture_default_str();
+  cmd->add_option("--test-nudge-after", options.nudge_after)->group("");
+  cmd->add_option("--test-drop-before", options.drop_before)->group("");
+  return cmd;
+}
+
+int runOnline(const OnlineOptions& options, std::istream& in, std::ostream& out,
+              std::ostream& err) {
+  const std::string prefix = "nineball online: ";
+  std::string why;
+  auto side = sideOf(options, why);
+  if (!side) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
+  }
+  const std::string where = prefix + shownPath(options.script_path) + ": ";
+  const auto text = readInput(options.script_path, in, why);
+  if (!text) {
+    err << where << why << '\n';
+    return kExitBadInput;
+  }
+  auto parsed = io::parseMatchScript(*text);
+  if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
+    err << where << refused->message << '\n';
+    return kExitBadInput;
+  }
+  net::OnlineRackOptions& o = *side;
+  o.script = std::get<io::MatchScript>(std::move(parsed));
+  o.match = net::matchPart(io::readJson(*text));
+  o.name = options.name;
+  o.wait_s = options.wait_s;
+  o.rejoin_s = options.rejoin_s;
+  o.limits.silence_s = options.silence_s;
+  if (const auto n = options.nudge_after) {
+    o.after_turn = [n](Match& match, std::size_t turn) {
+      if (static_cast<long>(turn) != *n) return;
+      MatchSnapshot s = match.snapshot();
+      s.balls.front().pos.x += 1e-6;
+      match.restore(s);
+    };
+  }
+  if (const auto n = options.drop_before) {
+    // Once: the turn is sent again after the rejoin.
+    auto dropped = std::make_shared<bool>(false);
+    o.drop_before_turn = [n, dropped](std::size_t index) {
+      if (*dropped || static_cast<long>(index) != *n) return false;
+      *dropped = true;
+      return true;
+    };
+  }
+  const net::OnlineRackResult result = net::playOnlineRack(o);
+  if (!result.doc.is_null()) out << result.doc.dump(2) << '\n' << std::flush;
+  if (result.outcome != Outcome::InStep) err << prefix << result.why << '\n';
+  if (result.heals > 0) {
+    err << prefix << "healed " << result.heals
+        << " time(s): the states differed and the host's was taken\n";
+  }
+  return exitFor(result.outcome);
+}
+
+}  // namespace nineball::app
