@@ -1,5 +1,6 @@
 #include "app/online_command.hpp"
 
+#include <cstdlib>
 #include <istream>
 #include <memory>
 #include <ostream>
@@ -82,6 +83,7 @@ CLI::App* addOnlineCommand(CLI::App& app, OnlineOptions& options) {
       ->capture_default_str();
   cmd->add_option("--test-nudge-after", options.nudge_after)->group("");
   cmd->add_option("--test-drop-before", options.drop_before)->group("");
+  cmd->add_option("--test-quit-before", options.quit_before)->group("");
   return cmd;
 }
 
@@ -118,6 +120,13 @@ int runOnline(const OnlineOptions& options, std::istream& in, std::ostream& out,
       MatchSnapshot s = match.snapshot();
       s.balls.front().pos.x += 1e-6;
       match.restore(s);
+    };
+  }
+  if (const auto n = options.quit_before) {
+    // A crash: the process ends without a word to the other side, which waits for a rejoin.
+    o.drop_before_turn = [n](std::size_t index) {
+      if (static_cast<long>(index) >= *n) std::_Exit(kExitInternal);
+      return false;
     };
   }
   if (const auto n = options.drop_before) {

@@ -16,10 +16,12 @@ struct OnlineOptions {
   double wait_s = 300.0;
   double rejoin_s = 60.0;
   double silence_s = 10.0;
-  // Hidden, for tests: knock this side out of step after turn N (a ball nudged 1 um), or drop
-  // the link just before sending turn N (the joiner then rejoins).
+  // Hidden, for tests: knock this side out of step after turn N (a ball nudged 1 um); drop the
+  // link just before sending turn N (the joiner then rejoins); end the process without a word
+  // before sending its first turn from N on (a crash: a new process rejoins).
   std::optional<long> nudge_after;
   std::optional<long> drop_before;
+  std::optional<long> quit_before;
 };
 
 /// Registers `online (--host PORT | --join HOST[:PORT]) SCRIPT` on the app.

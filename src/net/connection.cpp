@@ -171,8 +171,9 @@ std::vector<nlohmann::json> Connection::pump(double now) {
     send({{"type", "ping"}});
   }
   if (!unsent_.empty()) last_said_ = now;
-  sendQueued();
+  // Read first: what the peer sent before it closed is still to be had after a failed send.
   receive(now, out);
+  sendQueued();
   if (!closed_ && now - last_heard_ > limits_.silence_s) {
     close("the other side stopped answering (nothing for " +
           std::to_string(static_cast<int>(limits_.silence_s)) + " s)");

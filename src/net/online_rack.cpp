@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <deque>
+#include <future>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -340,7 +341,8 @@ class OnlineRack {
     next_script_turn_ = 0;
     const rules::Player seat = lockstep_->localSeat();
     const Seat& mine = o_.script.players[seat == rules::Player::A ? 0 : 1];
-    planner_.reset();
+    // A rejoin keeps the computer's stream of cueing errors where it was.
+    if (planner_) return;
     if (const auto level = computerLevel(mine)) {
       planner_ = std::make_unique<ai::Planner>(*level, plannerSeed(setup.seed, seat));
     }
@@ -383,8 +385,21 @@ class OnlineRack {
     end(partial_ ? Outcome::Partial : Outcome::InStep, "the rack is played");
   }
 
+  // Keeps the link alive (pings out, messages in for later) while this side thinks.
+  void keepAlive() {
+    if (link_->closed()) return;
+    for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
+  }
+
   std::optional<TurnInput> localChoice() {
-    if (planner_) return planner_->turnFor(*match_);
+    if (planner_) {
+      // The computer may think for seconds: the other side must not take it for gone.
+      auto plan = std::async(std::launch::async, [this] { return planner_->turnFor(*match_); });
+      while (plan.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) {
+        keepAlive();
+      }
+      return plan.get();
+    }
     if (next_script_turn_ < o_.script.turns.size()) return o_.script.turns[next_script_turn_];
     return std::nullopt;
   }
