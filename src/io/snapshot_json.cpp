@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/json_fields.hpp"
+#include "io/result_json.hpp"
 #include "nineball/table.hpp"
 
 namespace nineball::io {
@@ -19,18 +20,12 @@ constexpr double kMostSpeed = 100.0;   // m/s
 constexpr double kMostSpin = 10000.0;  // rad/s
 constexpr int kMostCount = 1000000;    // scores, innings, fouls and runs
 
+// The result's ball (the pocket by name) and its mass, which a result leaves out.
 ordered_json ballsToJson(const std::vector<BallState>& balls) {
   ordered_json out = ordered_json::array();
   for (const BallState& b : balls) {
-    ordered_json j;
-    j["id"] = b.id;
-    j["x"] = b.pos.x;
-    j["y"] = b.pos.y;
-    j["vx"] = b.vel.x;
-    j["vy"] = b.vel.y;
-    j["w"] = {b.w.x, b.w.y, b.w.z};
+    ordered_json j = ballToJson(b);
     j["mass"] = b.mass ? ordered_json(*b.mass) : ordered_json(nullptr);
-    j["pocket"] = b.pocket ? ordered_json(static_cast<int>(*b.pocket)) : ordered_json(nullptr);
     out.push_back(j);
   }
   return out;
@@ -61,14 +56,6 @@ void pairOf(const json& obj, const std::string& path, const char* key, int (&out
   const std::string at = member(path, key);
   if (!v.is_array() || v.size() != 2) refuse(at, "expected [A, B], found " + describe(v));
   for (std::size_t i = 0; i < 2; ++i) out[i] = integer(v[i], element(at, i), 0, kMostCount);
-}
-
-// Nothing for null, else an integer in [0, hi].
-std::optional<int> optionalIndex(const json& obj, const std::string& path, const char* key,
-                                 int hi) {
-  const json& v = required(obj, path, key);
-  if (v.is_null()) return std::nullopt;
-  return integer(v, member(path, key), 0, hi);
 }
 
 // Ball numbers, each one of the match's balls, sorted and without repeats.
@@ -120,8 +107,11 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
               number(w[2], element(wat, 2), spin)};
     const json& mass = required(b, at, "mass");
     if (!mass.is_null()) ball.mass = number(mass, member(at, "mass"), Bounds::positive(10.0));
-    if (const auto pocket = optionalIndex(b, at, "pocket", kPocketCount - 1)) {
-      ball.pocket = static_cast<PocketId>(*pocket);
+    const json& pocket = required(b, at, "pocket");
+    if (!pocket.is_null()) {
+      const std::string name = text(pocket, member(at, "pocket"));
+      ball.pocket = pocketFromName(name);
+      if (!ball.pocket) refuse(member(at, "pocket"), "unknown pocket " + quote(name));
     }
     balls.push_back(ball);
   }
