@@ -1,9 +1,12 @@
 #include "app/online_command.hpp"
 
+#include <atomic>
+#include <csignal>
 #include <cstdlib>
 #include <istream>
 #include <memory>
 #include <ostream>
+#include <vector>
 
 #include "app/exit_codes.hpp"
 #include "app/read_input.hpp"
@@ -30,6 +33,7 @@ int exitFor(Outcome outcome) {
       return kExitBadInput;
     case Outcome::LinkLost:
     case Outcome::NoPeer:
+    case Outcome::Quit:
       return kExitLinkFailed;
   }
   return kExitInternal;
@@ -55,6 +59,29 @@ std::optional<net::OnlineRackOptions> sideOf(const OnlineOptions& o, std::string
   }
   return r;
 }
+
+// Ctrl-C (or a kill) while a rack is on: the other side is told before this one goes.
+std::atomic<bool> quit_requested{false};
+
+extern "C" void requestQuit(int) {
+  quit_requested.store(true);
+}
+
+class QuitOnSignals {
+ public:
+  QuitOnSignals() {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) previous_.push_back(std::signal(sig, requestQuit));
+  }
+  ~QuitOnSignals() {
+    std::size_t i = 0;
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, previous_[i++]);
+  }
+  QuitOnSignals(const QuitOnSignals&) = delete;
+  QuitOnSignals& operator=(const QuitOnSignals&) = delete;
+
+ private:
+  std::vector<void (*)(int)> previous_;
+};
 
 }  // namespace
 
@@ -138,6 +165,8 @@ int runOnline(const OnlineOptions& options, std::istream& in, std::ostream& out,
       return true;
     };
   }
+  const QuitOnSignals signals;
+  o.quit = &quit_requested;
   const net::OnlineRackResult result = net::playOnlineRack(o);
   if (!result.doc.is_null()) out << result.doc.dump(2) << '\n' << std::flush;
   if (result.outcome != Outcome::InStep) err << prefix << result.why << '\n';

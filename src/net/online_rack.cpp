@@ -76,6 +76,16 @@ class OnlineRack {
 
   void send(const Message& m) { link_->send(toJson(m)); }
 
+  // Ctrl-C: the other side hears that this one left, and the rack ends here.
+  void leaveIfAsked() {
+    if (!o_.quit || !o_.quit->load()) return;
+    if (link_ && !link_->closed()) {
+      send(Bye{"the other player quit", false});
+      link_->flush(0.5);
+    }
+    end(Outcome::Quit, "quit before the rack was over");
+  }
+
   // The other side broke the protocol: tell it why and drop it; it may rejoin.
   [[noreturn]] void refusePeer(const std::string& why) {
     logger("net")->warn("the other side sent {}: disconnected it", why);
@@ -117,6 +127,7 @@ class OnlineRack {
         }
         return m;
       }
+      leaveIfAsked();
       if (link_->closed()) return std::nullopt;
       for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
       watchForRejoin();
@@ -171,6 +182,7 @@ class OnlineRack {
       if (welcome(rejoining_hello_)) return true;
     }
     while (seconds() < deadline) {
+      leaveIfAsked();
       auto socket = listener_->accept();
       if (!socket) {
         nap();
@@ -259,6 +271,7 @@ class OnlineRack {
     const double deadline = seconds() + limit;
     std::string why = "nobody answered";
     while (seconds() < deadline) {
+      leaveIfAsked();
       auto socket = connectTo(o_.address, std::min(o_.connect_s, deadline - seconds()), why);
       if (socket) {
         link_ = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
@@ -387,6 +400,7 @@ class OnlineRack {
 
   // Keeps the link alive (pings out, messages in for later) while this side thinks.
   void keepAlive() {
+    if (o_.quit && o_.quit->load()) return;  // the plan finishes first; then the rack ends
     if (link_->closed()) return;
     for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
   }

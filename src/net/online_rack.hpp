@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -28,6 +29,8 @@ struct OnlineRackOptions {
   double rejoin_s = 60.0;   ///< a lost link: how long to wait for (or keep trying) a rejoin
   double connect_s = 10.0;  ///< joiner: each attempt to connect
   LinkLimits limits;
+  /// Raised (by Ctrl-C, say) to leave: the other side is told, and the rack ends.
+  const std::atomic<bool>* quit = nullptr;
   /// Tests: called after each turn is played on this side (a test knocks a peer out of step).
   std::function<void(Match&, std::size_t turn)> after_turn;
   /// Tests: called on a heal's state before the joiner restores it.
@@ -46,6 +49,7 @@ struct OnlineRackResult {
     BadTurn,    ///< this side's script turn was refused by the rules
     LinkLost,   ///< the peer left, stopped answering, misbehaved, or did not come back in time
     NoPeer,     ///< nobody joined, or nobody answered the join
+    Quit,       ///< this side left (OnlineRackOptions::quit)
   };
   Outcome outcome = Outcome::InStep;
   std::string why;

@@ -55,10 +55,11 @@ struct CliOutcome {
 };
 
 /// Runs `nineball ARGS` with stdin from `stdin_path` and collects both streams.
-inline CliOutcome runNineball(const std::string& args,
-                              const std::string& stdin_path = "/dev/null") {
+/// `prefix` goes before the program ("timeout -s INT 1 ", say).
+inline CliOutcome runNineball(const std::string& args, const std::string& stdin_path = "/dev/null",
+                              const std::string& prefix = "") {
   TempFile err;
-  const std::string command = shellQuoted(NINEBALL_BINARY) + " " + args + " <" +
+  const std::string command = prefix + shellQuoted(NINEBALL_BINARY) + " " + args + " <" +
                               shellQuoted(stdin_path) + " 2>" + shellQuoted(err.path());
   CliOutcome r;
   FILE* pipe = popen(command.c_str(), "r");

@@ -73,7 +73,8 @@ TEST(FitCli, PrintsOneLineAShotWhoseSceneReproducesTheFit) {
 }
 
 TEST(FitCli, TheSameSeedGivesTheSameFitsOnOneOrTwoThreads) {
-  TempFile file(jsonLines({recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2), recorded(12.0, 2.5, 3)}));
+  TempFile file(
+      jsonLines({recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2), recorded(12.0, 2.5, 3)}));
   const std::string fit = "fit " + shellQuoted(file.path()) + " --evals 400 --seed 9";
   const CliOutcome one = runNineball(fit + " --threads 1");
   const CliOutcome two = runNineball(fit + " --threads 2");

@@ -178,6 +178,31 @@ TEST(OnlineCli, ANewProcessRejoinsARackInTheMiddle) {
   EXPECT_GT(h["turns"].size(), 3u);
 }
 
+// Ctrl-C on one side: the other hears that its player quit and ends the rack (exit 5) without
+// waiting for a rejoin.
+TEST(OnlineCli, APlayerWhoQuitsTellsTheOtherSide) {
+  const unsigned short port = freePort();
+  TempFile hs(R"({"game": "snooker", "seed": 5, "players": {"A": "ai:master"}})");
+  TempFile js(R"({"players": {"B": "ai:master"}})");
+  CliOutcome host;
+  std::thread t([&] {
+    host = runNineball("online --host " + std::to_string(port) + " --wait 60 --rejoin 60 " +
+                       shellQuoted(hs.path()));
+  });
+  const auto started = std::chrono::steady_clock::now();
+  const CliOutcome quitter =
+      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + shellQuoted(js.path()),
+                  "/dev/null", "timeout --preserve-status -s INT 1 ");
+  t.join();
+  EXPECT_EQ(quitter.status, 5) << quitter.err;
+  EXPECT_NE(quitter.err.find("quit before the rack was over"), std::string::npos) << quitter.err;
+  EXPECT_EQ(host.status, 5) << host.err;
+  EXPECT_NE(host.err.find("the other player left: the other player quit"), std::string::npos)
+      << host.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(30))
+      << "the host did not wait out the rejoin time";
+}
+
 // Nobody comes: the host gives up after --wait and says so (exit 5, nothing on stdout).
 TEST(OnlineCli, AHostNobodyJoinsGivesUp) {
   TempFile hs(kHostPro);
