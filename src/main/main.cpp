@@ -22,6 +22,7 @@
 #include "app/sim_command.hpp"
 #include "app/stress_command.hpp"
 #include "common/log.hpp"
+#include "net/wire.hpp"
 
 namespace nineball::app {
 namespace {
@@ -38,6 +39,8 @@ int run(int argc, char** argv) {
   app.add_option("--log-level", log_level, "Log level on stderr")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
       ->capture_default_str();
+  // Two players online need the same build: this is the name the handshake compares.
+  app.set_version_flag("--version", nineball::net::buildId(), "Print the build's name and exit");
   // Hidden (a diagnostic, not a feature): where the icon and desktop files are found.
   bool resource_dir = false;
   app.add_flag("--resource-dir", resource_dir, "Print the resource folder found and exit")
