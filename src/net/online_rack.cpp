@@ -223,6 +223,7 @@ class OnlineRack {
       if (!link_->closed()) {
         send(Refuse{"expected a hello"});
         link_->flush(0.5);
+        link_->close("it did not say hello");
       }
       return std::nullopt;
     }
@@ -230,6 +231,8 @@ class OnlineRack {
       logger("net")->warn("refused {}: {}", link_->remote(), *why);
       send(Refuse{*why});
       link_->flush(0.5);
+      // Refused is disconnected, not left open until the next peer connects.
+      link_->close(*why);
       result_.outcome = Outcome::Refused;
       result_.why = "refused the other side: " + *why;
       return std::nullopt;

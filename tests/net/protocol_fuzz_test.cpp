@@ -161,16 +161,18 @@ void judge(const Hostile& h, const Answer& a, Tally& t) {
   const bool unnamed = !h.reason_has.empty() && (a.kind != Kind::Refused ||
                                                  a.reason.find(h.reason_has) == std::string::npos);
   const bool unhealed = h.expect_state && !a.heard_type("state");
-  if ((unanswered || unnamed || unhealed) && t.reported++ < 10) {
+  const bool left_open = a.kind == Kind::Refused && !a.closed_after_refusal;
+  if ((unanswered || unnamed || unhealed || left_open) && t.reported++ < 10) {
     std::string heard;
     for (const auto& m : a.heard) heard += m + " ";
     ADD_FAILURE() << h.kind << ": "
                   << (unanswered ? "neither refused nor closed within the bound"
                       : unnamed  ? "not refused by name (\"" + h.reason_has + "\")"
-                                 : "no state before the refusal")
+                      : unhealed ? "no state before the refusal"
+                                 : "refused but left connected")
                   << "; reason \"" << a.reason << "\", heard: " << heard;
   }
-  t.failed += unanswered || unnamed || unhealed;
+  t.failed += unanswered || unnamed || unhealed || left_open;
 }
 
 // Sends the burst on a connected peer and judges the answer.

@@ -27,6 +27,7 @@ struct Answer {
   std::string reason;              ///< the refuse message's reason
   double seconds = 0.0;            ///< from the wait's start to the answer
   std::vector<std::string> heard;  ///< types of the other messages heard meanwhile
+  bool closed_after_refusal = false;
   bool heard_type(const std::string& t) const {
     for (const auto& h : heard) {
       if (h == t) return true;
@@ -128,6 +129,12 @@ class RawPeer {
           a.kind = Answer::Kind::Refused;
           a.reason = j.value("reason", "");
           a.seconds = now() - start;
+          // A refused peer is disconnected too: the link must close after the refusal.
+          while (!closed_ && now() - start <= timeout_s) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            poll();
+          }
+          a.closed_after_refusal = closed_;
           return a;
         }
         a.heard.push_back(type);
