@@ -18,6 +18,7 @@
 #include "io/snapshot_json.hpp"
 #include "net/handshake.hpp"
 #include "net/hostile_messages.hpp"
+#include "net/live_host.hpp"
 #include "net/online_rack.hpp"
 #include "net/raw_peer.hpp"
 
@@ -57,64 +58,6 @@ LinkLimits hostLimits() {
   l.ping_s = 0.1;
   return l;
 }
-
-unsigned short freePort() {
-  sf::TcpListener l;
-  if (l.listen(sf::Socket::AnyPort) != sf::Socket::Done) return 0;
-  const unsigned short port = l.getLocalPort();
-  l.close();
-  return port;
-}
-
-io::MatchScript scriptOf(const std::string& text) {
-  auto parsed = io::parseMatchScript(text);
-  if (const auto* e = std::get_if<io::ParseError>(&parsed)) {
-    ADD_FAILURE() << e->message;
-    return {};
-  }
-  return std::get<io::MatchScript>(parsed);
-}
-
-// A rack played in a thread; its result comes back through a future, waited on with a bound.
-class RackThread {
- public:
-  explicit RackThread(OnlineRackOptions o)
-      : options_(std::make_shared<OnlineRackOptions>(std::move(o))) {
-    auto promise = std::make_shared<std::promise<OnlineRackResult>>();
-    future_ = promise->get_future();
-    thread_ = std::thread([options = options_, promise] {
-      try {
-        promise->set_value(playOnlineRack(*options));
-      } catch (...) {
-        promise->set_exception(std::current_exception());
-      }
-    });
-  }
-  ~RackThread() {
-    if (thread_.joinable()) thread_.detach();
-  }
-  RackThread(const RackThread&) = delete;
-  RackThread& operator=(const RackThread&) = delete;
-
-  bool finished() const {
-    return future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
-  }
-  // The result, or nothing when the rack is still on after `seconds` (the thread is then left
-  // to its own limits, detached, so the test ends).
-  std::optional<OnlineRackResult> result(double seconds) {
-    if (future_.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) {
-      thread_.detach();
-      return std::nullopt;
-    }
-    thread_.join();
-    return future_.get();
-  }
-
- private:
-  std::shared_ptr<OnlineRackOptions> options_;
-  std::future<OnlineRackResult> future_;
-  std::thread thread_;
-};
 
 // What the campaign sent and heard.
 struct Tally {
