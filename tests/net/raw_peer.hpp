@@ -4,6 +4,7 @@
 
 #include <SFML/Network/IpAddress.hpp>
 #include <SFML/Network/TcpSocket.hpp>
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <nlohmann/json.hpp>
@@ -79,6 +80,9 @@ class RawPeer {
         closed_ = true;
         return;
       }
+      const double t = now();
+      if (last_heard_ > 0.0) longest_quiet_ = std::max(longest_quiet_, t - last_heard_);
+      last_heard_ = t;
       std::string why;
       if (!reader_.feed(chunk, got, why)) {
         bad_frames_ = true;  // the host sent what is not a message stream: the test fails
@@ -162,6 +166,14 @@ class RawPeer {
   }
 
   bool closed() const { return closed_; }
+  /// The longest time between two arrivals from the host since the last resetQuiet() (the host
+  /// pings every LinkLimits::ping_s when it has nothing else to say).
+  double longestQuiet() const { return longest_quiet_; }
+  void resetQuiet() {
+    poll();
+    longest_quiet_ = 0.0;
+    last_heard_ = now();
+  }
   /// The host sent bytes that are not framed JSON objects.
   bool badFrames() const { return bad_frames_; }
 
@@ -172,6 +184,8 @@ class RawPeer {
   bool closed_ = false;
   bool bad_frames_ = false;
   double last_ping_ = 0.0;
+  double last_heard_ = 0.0;
+  double longest_quiet_ = 0.0;
 };
 
 }  // namespace nineball::net_test
