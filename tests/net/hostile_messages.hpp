@@ -74,7 +74,7 @@ inline json plausibleTurn(Rng& rng) {
 inline json brokenTurnMessage(Rng& rng, std::size_t index) {
   json turn = plausibleTurn(rng);
   json message = {{"type", "turn"}, {"index", index}, {"turn", turn}, {"player", "human"}};
-  switch (uniform(rng, 0, 16)) {
+  switch (uniform(rng, 0, 17)) {
     case 0:
       turn["speed"] = std::uniform_real_distribution<double>(14.01, 1e6)(rng);
       break;
@@ -123,6 +123,11 @@ inline json brokenTurnMessage(Rng& rng, std::size_t index) {
     case 15:
       turn = json::array();
       break;
+    case 16:
+      // Off any table: not in hand, or no place for it.
+      turn["cue"] = {uniform(rng, 3, 1000), -0.1};
+      message["turn"] = turn;
+      return message;
     default:
       turn["decision"] = "maybe";
       break;
