@@ -104,7 +104,11 @@ class OnlineRack {
     if (!socket) return;
     auto other = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
     std::swap(other, link_);
+    // The seated player's link is pumped while the newcomer is heard (up to the handshake's
+    // limit): silent newcomers in a row would otherwise outlast the player's silence limit.
+    seated_ = other.get();
     const auto hello = goodHello();
+    seated_ = nullptr;
     std::swap(other, link_);
     if (!hello) return;
     link_->close("the other player connected again");
@@ -202,6 +206,9 @@ class OnlineRack {
   std::optional<Message> firstMessage(bool alone) {
     const double deadline = seconds() + kHandshakeSeconds;
     while (seconds() < deadline && !link_->closed()) {
+      if (seated_) {
+        for (auto& j : seated_->pump(seconds())) inbox_.push_back(std::move(j));
+      }
       auto in = link_->pump(seconds());
       if (!in.empty()) {
         std::string why;
@@ -236,6 +243,7 @@ class OnlineRack {
       if (!link_->closed()) {
         send(Refuse{"expected a hello"});
         link_->flush(0.5);
+        link_->close("it did not say hello");
       }
       return std::nullopt;
     }
@@ -243,6 +251,8 @@ class OnlineRack {
       logger("net")->warn("refused {}: {}", link_->remote(), *why);
       send(Refuse{*why});
       link_->flush(0.5);
+      // Refused is disconnected, not left open until the next peer connects.
+      link_->close(*why);
       result_.outcome = Outcome::Refused;
       result_.why = "refused the other side: " + *why;
       return std::nullopt;
@@ -529,6 +539,7 @@ class OnlineRack {
   std::unique_ptr<Listener> listener_;
   std::unique_ptr<Connection> link_;
   std::unique_ptr<Connection> rejoining_;  // the other player back on a new connection
+  Connection* seated_ = nullptr;           // the player's link while a newcomer is heard
   Hello rejoining_hello_;
   std::deque<nlohmann::json> inbox_;
   std::unique_ptr<Match> match_;

@@ -268,19 +268,51 @@ std::string hashText(std::uint64_t hash) {
   return text;
 }
 
+namespace {
+
+// The length of the well-formed UTF-8 character at `at` (RFC 3629: no overlong forms, no
+// surrogates, nothing past U+10FFFF), or 0 when the bytes there are not one.
+std::size_t utf8Length(const std::string& s, std::size_t at) {
+  const auto u = static_cast<unsigned char>(s[at]);
+  const std::size_t n = u < 0x80           ? 1
+                        : (u >> 5) == 0x6  ? 2
+                        : (u >> 4) == 0xe  ? 3
+                        : (u >> 3) == 0x1e ? 4
+                                           : 0;
+  if (n <= 1 || at + n > s.size()) return n == 1 ? 1 : 0;
+  std::uint32_t code = u & (0x7f >> n);
+  for (std::size_t i = 1; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(s[at + i]);
+    if ((c >> 6) != 0x2) return 0;
+    code = (code << 6) | (c & 0x3f);
+  }
+  static const std::uint32_t kLeast[5] = {0, 0, 0x80, 0x800, 0x10000};
+  if (code < kLeast[n] || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) return 0;
+  return n;
+}
+
+// C0 and C1 control characters, and DEL.
+bool isControl(const std::string& s, std::size_t at, std::size_t n) {
+  const auto u = static_cast<unsigned char>(s[at]);
+  if (n == 1) return u < 0x20 || u == 0x7f;
+  return n == 2 && u == 0xc2 && static_cast<unsigned char>(s[at + 1]) < 0xa0;
+}
+
+}  // namespace
+
 std::string cleanName(const std::string& name) {
-  // Whole UTF-8 sequences only, so a cut never leaves half a character.
+  // Whole UTF-8 characters only, so a cut never leaves half of one; bytes that are not UTF-8
+  // are dropped as control characters are (a peer's JSON cannot carry them, but a local name
+  // from the command line can).
   std::string out;
   std::size_t chars = 0;
   for (std::size_t i = 0; i < name.size() && chars < kMostNameChars;) {
-    const auto u = static_cast<unsigned char>(name[i]);
-    const std::size_t n = u < 0x80           ? 1
-                          : (u >> 5) == 0x6  ? 2
-                          : (u >> 4) == 0xe  ? 3
-                          : (u >> 3) == 0x1e ? 4
-                                             : 0;
-    if (n == 0 || i + n > name.size()) break;
-    if (n > 1 || (u >= 0x20 && u != 0x7f)) {
+    const std::size_t n = utf8Length(name, i);
+    if (n == 0) {
+      ++i;
+      continue;
+    }
+    if (!isControl(name, i, n)) {
       out.append(name, i, n);
       ++chars;
     }

@@ -36,16 +36,21 @@ std::string framed(const std::string& payload) {
 }
 
 bool FrameReader::checkLength(std::string& why) const {
-  if (buffered() < kLengthBytes) return true;
-  const std::size_t n = lengthAt(buffer_, read_);
-  if (n == 0) {
-    why = "an empty message";
-    return false;
-  }
-  if (n > kMaxMessageBytes) {
-    why = "a message of " + std::to_string(n) + " bytes (at most " +
-          std::to_string(kMaxMessageBytes) + ")";
-    return false;
+  // Every length received is checked, not only the first: a bad one behind whole messages in
+  // the same packet would otherwise wait, unread, until the peer sent more (or forever).
+  for (std::size_t at = read_; buffer_.size() - at >= kLengthBytes;) {
+    const std::size_t n = lengthAt(buffer_, at);
+    if (n == 0) {
+      why = "an empty message";
+      return false;
+    }
+    if (n > kMaxMessageBytes) {
+      why = "a message of " + std::to_string(n) + " bytes (at most " +
+            std::to_string(kMaxMessageBytes) + ")";
+      return false;
+    }
+    if (buffer_.size() - at - kLengthBytes < n) break;
+    at += kLengthBytes + n;
   }
   return true;
 }

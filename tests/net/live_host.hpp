@@ -1,0 +1,82 @@
+// A host (or joiner) of `nineball online` run in a thread of the test, on a free loopback
+// port, its result waited for with a bound: what the live protocol tests talk to.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <SFML/Network/TcpListener.hpp>
+#include <chrono>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "io/match_json.hpp"
+#include "net/online_rack.hpp"
+
+namespace nineball::net_test {
+
+using net::OnlineRackOptions;
+using net::OnlineRackResult;
+using net::playOnlineRack;
+
+inline unsigned short freePort() {
+  sf::TcpListener l;
+  if (l.listen(sf::Socket::AnyPort) != sf::Socket::Done) return 0;
+  const unsigned short port = l.getLocalPort();
+  l.close();
+  return port;
+}
+
+inline io::MatchScript scriptOf(const std::string& text) {
+  auto parsed = io::parseMatchScript(text);
+  if (const auto* e = std::get_if<io::ParseError>(&parsed)) {
+    ADD_FAILURE() << e->message;
+    return {};
+  }
+  return std::get<io::MatchScript>(parsed);
+}
+
+// A rack played in a thread; its result comes back through a future, waited on with a bound.
+class RackThread {
+ public:
+  explicit RackThread(OnlineRackOptions o)
+      : options_(std::make_shared<OnlineRackOptions>(std::move(o))) {
+    auto promise = std::make_shared<std::promise<OnlineRackResult>>();
+    future_ = promise->get_future();
+    thread_ = std::thread([options = options_, promise] {
+      try {
+        promise->set_value(playOnlineRack(*options));
+      } catch (...) {
+        promise->set_exception(std::current_exception());
+      }
+    });
+  }
+  ~RackThread() {
+    if (thread_.joinable()) thread_.detach();
+  }
+  RackThread(const RackThread&) = delete;
+  RackThread& operator=(const RackThread&) = delete;
+
+  bool finished() const {
+    return future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  }
+  // The result, or nothing when the rack is still on after `seconds` (the thread is then left
+  // to its own limits, detached, so the test ends).
+  std::optional<OnlineRackResult> result(double seconds) {
+    if (future_.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) {
+      thread_.detach();
+      return std::nullopt;
+    }
+    thread_.join();
+    return future_.get();
+  }
+
+ private:
+  std::shared_ptr<OnlineRackOptions> options_;
+  std::future<OnlineRackResult> future_;
+  std::thread thread_;
+};
+
+}  // namespace nineball::net_test
