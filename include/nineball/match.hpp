@@ -97,8 +97,11 @@ struct TurnRecord {
 };
 
 /// Everything a Match carries from one turn to the next: restoring it into a Match of the same
-/// setup gives that match again, to the bit (what online play sends to heal a peer that fell
-/// out of step).
+/// setup gives the same state, to the bit (the same snapshotHash). The engine is built anew from
+/// the balls, and an engine keeps a history (Box2D's contact lists, the clock), so a restored
+/// match may play on differently from the one the snapshot came from: two matches restored from
+/// one snapshot play on identically (what online play does to heal a peer out of step: both
+/// sides restore).
 struct MatchSnapshot {
   std::vector<BallState> balls;
   rules::RackState rack;
