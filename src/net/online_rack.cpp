@@ -23,6 +23,8 @@ constexpr std::size_t kMaxTurns = kMostTurns;
 constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
 constexpr double kRetrySeconds = 0.5;
+// Newcomers heard at once while a game is on; more are refused straight away.
+constexpr std::size_t kMostNewcomers = 4;
 
 double seconds() {
   using namespace std::chrono;
@@ -98,22 +100,35 @@ class OnlineRack {
   // The host, while a game is on: someone else connects. A good hello is the other player
   // back on a new connection (the old one is dead without our knowing yet): it takes the
   // seat, and the rack goes on through a rejoin. Anyone else is refused and the game goes on.
+  // Newcomers are heard without waiting for them, so they cannot hold up the game.
   void watchForRejoin() {
     if (!listener_ || !link_ || link_->closed()) return;
-    auto socket = listener_->accept();
-    if (!socket) return;
-    auto other = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
-    std::swap(other, link_);
-    // The seated player's link is pumped while the newcomer is heard (up to the handshake's
-    // limit): silent newcomers in a row would otherwise outlast the player's silence limit.
-    seated_ = other.get();
-    const auto hello = goodHello();
-    seated_ = nullptr;
-    std::swap(other, link_);
-    if (!hello) return;
-    link_->close("the other player connected again");
-    rejoining_ = std::move(other);
-    rejoining_hello_ = *hello;
+    const double now = seconds();
+    while (auto socket = listener_->accept()) {
+      auto c = std::make_unique<Connection>(std::move(socket), now, o_.limits);
+      if (newcomers_.size() >= kMostNewcomers) {
+        refuse(*c, "too many connections at once");
+        continue;
+      }
+      newcomers_.push_back({std::move(c), now + kHandshakeSeconds});
+    }
+    for (auto it = newcomers_.begin(); it != newcomers_.end();) {
+      const auto in = it->link->pump(now);
+      if (in.empty() && !it->link->closed() && now < it->deadline) {
+        ++it;
+        continue;
+      }
+      std::string build_refusal;
+      const auto hello = helloOf(*it->link, in, build_refusal);
+      if (hello) {
+        link_->close("the other player connected again");
+        rejoining_ = std::move(it->link);
+        rejoining_hello_ = *hello;
+        newcomers_.clear();
+        return;
+      }
+      it = newcomers_.erase(it);
+    }
   }
 
   // The next message from the peer; nothing once the link has closed.
@@ -201,63 +216,76 @@ class OnlineRack {
     return false;
   }
 
-  // The first message on a new link. `alone`: the host hears a hello, which nothing may follow
-  // before the welcome; the joiner's welcome comes with the host's hash behind it.
-  std::optional<Message> firstMessage(bool alone) {
-    const double deadline = seconds() + kHandshakeSeconds;
-    while (seconds() < deadline && !link_->closed()) {
-      if (seated_) {
-        for (auto& j : seated_->pump(seconds())) inbox_.push_back(std::move(j));
-      }
-      auto in = link_->pump(seconds());
-      if (!in.empty()) {
-        std::string why;
-        auto m = readMessage(in.front(), why);
-        if (!m) {
-          link_->send(toJson(Refuse{"a bad first message (" + why + ")"}));
-          link_->flush(0.5);
-          link_->close(why);
-          return std::nullopt;
-        }
-        if (alone && in.size() > 1) {
-          link_->send(toJson(Refuse{"messages before the welcome"}));
-          link_->flush(0.5);
-          link_->close("messages before the welcome");
-          return std::nullopt;
-        }
-        for (std::size_t i = 1; i < in.size(); ++i) inbox_.push_back(std::move(in[i]));
-        return m;
-      }
-      nap();
-    }
-    return std::nullopt;
+  // Tells a peer why it is refused and closes its link.
+  static void refuse(Connection& c, const std::string& why) {
+    if (c.closed()) return;
+    c.send(toJson(Refuse{why}));
+    c.flush(0.5);
+    c.close(why);
   }
 
-  // The first message of a peer that connected, if it is a hello of this build; anything
-  // else is refused (and, for a hello of another build, remembered as the result's reason).
-  std::optional<Hello> goodHello() {
-    auto m = firstMessage(true);
+  // What a new link says first: waits until it says something, closes, or `limit` passes.
+  std::vector<nlohmann::json> firstWords(Connection& c, double limit) {
+    const double deadline = seconds() + limit;
+    while (seconds() < deadline && !c.closed()) {
+      auto in = c.pump(seconds());
+      if (!in.empty()) return in;
+      nap();
+    }
+    return {};
+  }
+
+  // A peer's first words, if they are a hello of this build and nothing more (nothing may
+  // come before the welcome); anything else is refused and the link closed. A hello of another
+  // build or protocol leaves its reason in `build_refusal`.
+  static std::optional<Hello> helloOf(Connection& c, const std::vector<nlohmann::json>& in,
+                                      std::string& build_refusal) {
+    std::string why;
+    const auto m = in.empty() ? std::nullopt : readMessage(in.front(), why);
     const auto* hello = m ? std::get_if<Hello>(&*m) : nullptr;
     if (!hello) {
-      logger("net")->warn("a peer at {} did not say hello: refused", link_->remote());
-      if (!link_->closed()) {
-        send(Refuse{"expected a hello"});
-        link_->flush(0.5);
-        link_->close("it did not say hello");
-      }
+      logger("net")->warn("a peer at {} did not say hello: refused", c.remote());
+      refuse(c, in.empty() ? "expected a hello" : "expected a hello, not " + why);
       return std::nullopt;
     }
-    if (const auto why = refusalOf(*hello)) {
-      logger("net")->warn("refused {}: {}", link_->remote(), *why);
-      send(Refuse{*why});
-      link_->flush(0.5);
-      // Refused is disconnected, not left open until the next peer connects.
-      link_->close(*why);
-      result_.outcome = Outcome::Refused;
-      result_.why = "refused the other side: " + *why;
+    if (in.size() > 1) {
+      refuse(c, "messages before the welcome");
+      return std::nullopt;
+    }
+    if (const auto mismatch = refusalOf(*hello)) {
+      logger("net")->warn("refused {}: {}", c.remote(), *mismatch);
+      refuse(c, *mismatch);
+      build_refusal = *mismatch;
       return std::nullopt;
     }
     return *hello;
+  }
+
+  // The first message of the host's answer on the joiner's side: a welcome (with the host's
+  // hash behind it) or a refusal.
+  std::optional<Message> hostsAnswer() {
+    const auto in = firstWords(*link_, kHandshakeSeconds);
+    if (in.empty()) return std::nullopt;
+    std::string why;
+    auto m = readMessage(in.front(), why);
+    if (!m) {
+      refuse(*link_, "a bad first message (" + why + ")");
+      return std::nullopt;
+    }
+    for (std::size_t i = 1; i < in.size(); ++i) inbox_.push_back(in[i]);
+    return m;
+  }
+
+  // The first words of a peer that connected to the host, if they are a good hello; a hello
+  // of another build is remembered as the result's reason.
+  std::optional<Hello> goodHello() {
+    std::string build_refusal;
+    const auto hello = helloOf(*link_, firstWords(*link_, kHandshakeSeconds), build_refusal);
+    if (!build_refusal.empty()) {
+      result_.outcome = Outcome::Refused;
+      result_.why = "refused the other side: " + build_refusal;
+    }
+    return hello;
   }
 
   bool welcomeJoiner() {
@@ -299,7 +327,7 @@ class OnlineRack {
   }
 
   bool acceptWelcome() {
-    auto m = firstMessage(false);
+    auto m = hostsAnswer();
     if (!m) return false;
     if (const auto* r = std::get_if<Refuse>(&*m)) {
       result_.outcome = Outcome::Refused;
@@ -539,7 +567,11 @@ class OnlineRack {
   std::unique_ptr<Listener> listener_;
   std::unique_ptr<Connection> link_;
   std::unique_ptr<Connection> rejoining_;  // the other player back on a new connection
-  Connection* seated_ = nullptr;           // the player's link while a newcomer is heard
+  struct Newcomer {
+    std::unique_ptr<Connection> link;
+    double deadline = 0.0;  // by when it must have said hello
+  };
+  std::vector<Newcomer> newcomers_;  // connected while a game is on, not yet heard
   Hello rejoining_hello_;
   std::deque<nlohmann::json> inbox_;
   std::unique_ptr<Match> match_;
