@@ -224,7 +224,8 @@ void OnlinePlay::protocolError(const std::string& reason) {
 // --- the messages ---
 
 void OnlinePlay::handle(GameSession& session, const net::Message& message) {
-  const bool playing = stage_ == Stage::Playing;
+  // What arrived before a link dropped is still the rack's (a host that finished and left).
+  const bool playing = lockstep_ && (stage_ == Stage::Playing || stage_ == Stage::Lost);
   auto outOfPlace = [&](const char* what) {
     protocolError(peer_name_ + " sent " + what + " at the wrong time");
   };
