@@ -241,6 +241,7 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
     // A picture run (the tests) must end: nobody joining or coming back ends it.
     config.wait_s = 60.0;
     config.rejoin_s = 20.0;
+    config.stall_s = 60.0;
     // The tests' shorter wait, in seconds.
     if (const char* wait = std::getenv("NINEBALL_ONLINE_WAIT")) {
       config.wait_s = std::clamp(std::atof(wait), 1.0, 600.0);

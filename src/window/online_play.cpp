@@ -81,7 +81,15 @@ void OnlinePlay::leave(const std::string& reason) {
 }
 
 void OnlinePlay::send(const net::Message& message) {
-  if (link_ && !link_->closed()) link_->send(net::toJson(message));
+  if (!link_ || link_->closed()) return;
+  // Until the handshake is over only its own words go out: a hash of a turn that ended
+  // meanwhile must not come before the welcome (the rejoin exchanges the last hash anyway).
+  const bool greeting = std::holds_alternative<net::Hello>(message) ||
+                        std::holds_alternative<net::Welcome>(message) ||
+                        std::holds_alternative<net::Refuse>(message) ||
+                        std::holds_alternative<net::Bye>(message);
+  if (!greeting && (handshaking_ || stage_ != Stage::Playing)) return;
+  link_->send(net::toJson(message));
 }
 
 // --- the link ---
@@ -110,6 +118,9 @@ void OnlinePlay::update(GameSession& session, double seconds) {
   if (stage_ == Stage::Playing) {
     playScript(*session_);
     sendAim(*session_);
+    if (config_.stall_s > 0.0 && now() - progress_at_ > config_.stall_s && !finished(*session_)) {
+      end("Nothing was played for " + clockText(config_.stall_s) + ": the game is stuck.", true);
+    }
   }
   showPeerAim(*session_, seconds);
 }
@@ -276,6 +287,7 @@ void OnlinePlay::handle(GameSession& session, const net::Message& message) {
 }
 
 void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
+  progress_at_ = now();
   if (const auto refusal = net::refusalOf(hello)) {
     logger("online")->warn("refused {}: {}", hello.name, *refusal);
     send(net::Refuse{*refusal});
@@ -295,6 +307,7 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
     if (session.bestOf() == 0) session.setBestOf(1);  // the race needs a length: one rack
     newRack(session);
   }
+  stage_ = Stage::Playing;
   send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_));
   if (!lockstep_->turns().empty()) {
     // A rejoin: both sides say where they stand before anything more is played.
@@ -304,11 +317,11 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   } else {
     session.say(peer_name_ + " joined. " + session.seatName(session.seatToMove()) + " breaks.");
   }
-  stage_ = Stage::Playing;
   logger("online")->info("{} joined ({} turns so far)", peer_name_, lockstep_->turns().size());
 }
 
 void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
+  progress_at_ = now();
   handshaking_ = false;
   if (const auto refusal = net::refusalOf(welcome)) {
     if (link_) link_->close(*refusal);
@@ -346,15 +359,16 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   }
   session = std::move(fresh);
   replaced_ = true;
+  installRelay(session);  // this side's next turn may be played in this very frame
   lockstep_.emplace(config_.side, session.rackSetup());
   lockstep_->adopt(welcome.turns, hashes);
   pending_.reset();
   local_offer_ = peer_offer_ = false;
   peer_aim_.reset();
   script_next_ = std::min(own_turns, config_.script.size());
-  if (const auto h = lockstep_->lastHash()) send(*h);
   const bool rejoin = stage_ == Stage::Lost;
   stage_ = Stage::Playing;
+  if (const auto h = lockstep_->lastHash()) send(*h);
   session.say(rejoin ? "Back with " + peer_name_ + ": the rack goes on."
                      : "Playing " + peer_name_ + " online. " +
                            session.seatName(session.seatToMove()) + " breaks.");
@@ -389,6 +403,7 @@ void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
   std::string why;
   const std::optional<net::HashVerdict> verdict = lockstep_->peerHash(message, why);
   if (!verdict) return protocolError(peer_name_ + " sent a hash this game refuses: " + why);
+  progress_at_ = now();
   const std::string turn = "turn " + std::to_string(message.index + 1);
   switch (*verdict) {
     case net::HashVerdict::Waiting:
@@ -484,6 +499,7 @@ void OnlinePlay::newRack(GameSession& session) {
 void OnlinePlay::finishTurns(GameSession& session) {
   if (!pending_ || !lockstep_ || session.phase() == Phase::Rolling) return;
   if (session.rackTurns().size() <= lockstep_->turns().size()) return;
+  progress_at_ = now();
   send(lockstep_->played(*pending_, session.match().snapshot()));
   pending_.reset();
 }

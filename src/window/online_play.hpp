@@ -38,6 +38,9 @@ struct OnlineConfig {
   double rejoin_s = 60.0;  ///< a lost link: how long the other side has to come back
   double connect_s = 4.0;  ///< joiner: each attempt to connect
   double retry_s = 1.0;    ///< joiner: between attempts
+  /// A picture run's guard: the rack playing on with no turn and no hash for this long ends
+  /// it (0: no limit; a person may think as long as they like).
+  double stall_s = 0.0;
   net::LinkLimits limits;
 };
 
@@ -127,6 +130,7 @@ class OnlinePlay : public RemoteControl {
   double next_attempt_ = 0.0;
   double waiting_since_ = 0.0;
   double lost_at_ = 0.0;
+  double progress_at_ = 0.0;  // the last turn or hash
   bool ever_linked_ = false;
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
   std::optional<net::Lockstep> lockstep_;
