@@ -274,6 +274,7 @@ void GameLoop::updateOnline(double dt) {
 
 // --screenshot online: the picture once this side is done with the rack (or the game ended).
 bool GameLoop::onlineCaptureDue() const {
+  if (options_.frames) return frame_ >= frame_limit_;  // a picture of the game as it stands
   return online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
 }
 
@@ -313,7 +314,7 @@ int GameLoop::run() {
     const bool rolling = advance();
     draw();
     if (capture_ && online_ && onlineCaptureDue()) {
-      if (online_->failed()) {
+      if (online_->failed() && !options_.frames) {
         err_ << "nineball: online: " << online_->why() << '\n';
         return 1;
       }
@@ -442,7 +443,7 @@ void GameLoop::draw() {
     }
   }
   if (online_) {
-    picture.hud.mode = "online vs " + online_->peerName();
+    picture.hud.mode = online_->started() ? "online vs " + online_->peerName() : "online: waiting";
     if (online_->stage() != OnlinePlay::Stage::Playing) {
       picture.hud.status = online_->banner(session_);
     }

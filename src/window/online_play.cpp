@@ -600,8 +600,8 @@ std::string OnlinePlay::banner(const GameSession& session) const {
   switch (stage_) {
     case Stage::Waiting:
       if (config_.side == net::Side::Host) {
-        return "Waiting for a friend - they join with: nineball --join " + net::localAddress() +
-               ":" + std::to_string(config_.address.port) + "   (Esc cancels)";
+        return "Waiting for a friend to join: nineball --join " + net::localAddress() + ":" +
+               std::to_string(config_.address.port) + "  (Esc cancels)";
       }
       return "Connecting to " + addressText(config_.address) + "..." +
              (why_.empty() ? std::string() : " (" + why_ + ")");

@@ -85,6 +85,8 @@ class OnlinePlay : public RemoteControl {
   /// Leaves: Bye with `reason`.
   void leave(const std::string& reason);
   const std::string& peerName() const { return peer_name_; }
+  /// True once the rack with this peer began (the handshake went through once).
+  bool started() const { return lockstep_.has_value(); }
   /// Rematch offers so far (either side), for the HUD.
   bool rematchOffered() const { return local_offer_; }
 
@@ -131,7 +133,6 @@ class OnlinePlay : public RemoteControl {
   double waiting_since_ = 0.0;
   double lost_at_ = 0.0;
   double progress_at_ = 0.0;  // the last turn or hash
-  bool ever_linked_ = false;
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
   std::optional<net::Lockstep> lockstep_;
   std::optional<net::WireTurn> pending_;      // the turn rolling, as it went over the wire
