@@ -215,7 +215,9 @@ std::optional<int> GameLoop::startMenu() {
     return 0;
   }
   if (show_menu_) {
-    if (!runStartMenu(menu, session_, computer_, settings_, count_)) return 0;
+    MenuModel::Outcome outcome = MenuModel::Outcome::None;
+    if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
+    startOnlineFromMenu(outcome);
   }
   return std::nullopt;
 }
@@ -230,10 +232,7 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
   } else {
     config.address = *net::parseAddress(options_.join, why);  // checked with the options
   }
-  const std::string remembered = settings_.last.names[0];
-  config.name = !options_.name.empty()                                         ? options_.name
-                : config.side == net::Side::Joiner && remembered == "Player 1" ? "Player 2"
-                                                                               : remembered;
+  config.name = options_.name;
   config.match = start.online_match;
   config.scripted = !options_.script.empty();
   config.script = start.turns;
@@ -247,17 +246,48 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
       config.wait_s = std::clamp(std::atof(wait), 1.0, 600.0);
     }
   }
-  online_ = OnlinePlay::start(config, why);
-  if (!online_) {
+  if (!beginOnline(config, why)) {
     err_ << "nineball: --host " << config.address.port << ": " << why << '\n';
     return 1;
   }
+  return std::nullopt;
+}
+
+// The link opened (the host's port) and the seats named; false, with `why`, when the port is
+// taken.
+bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
+  const std::string remembered = settings_.last.names[0];
+  if (config.name.empty()) {
+    config.name =
+        config.side == net::Side::Joiner && remembered == "Player 1" ? "Player 2" : remembered;
+  }
+  online_ = OnlinePlay::start(config, why);
+  if (!online_) return false;
   computer_.setOpponent(session_, HumanSeat{});
   computer_.setRemote(online_.get());
   const int own = config.side == net::Side::Host ? 0 : 1;
   session_.setSeatName(own, config.name);
   session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
-  return std::nullopt;
+  return true;
+}
+
+// The start menu's "Play online": host on the default port, or join the address typed there.
+void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
+  if (outcome != MenuModel::Outcome::Host && outcome != MenuModel::Outcome::Join) return;
+  OnlineConfig config;
+  std::string why;
+  if (outcome == MenuModel::Outcome::Host) {
+    config.side = net::Side::Host;
+    config.address.port = net::kDefaultPort;
+    config.match = onlineMatchOf(session_.setup());
+  } else {
+    config.side = net::Side::Joiner;
+    config.address = net::parseAddress(settings_.join_address, why).value_or(net::Address{});
+  }
+  if (!beginOnline(config, why)) {
+    session_.say("Cannot host: " + why + ". Playing at this computer instead.",
+                 render::Tone::Warning);
+  }
 }
 
 // One frame of the online game; a joiner's session is the host's match once welcomed.
@@ -421,7 +451,7 @@ bool GameLoop::advance() {
   }
   const bool rolling = session_.phase() == Phase::Rolling;
   const auto impacts = session_.advance(dt);
-  if (keep_rack_ && session_.phase() == Phase::GameOver &&
+  if (keep_rack_ && !online_ && session_.phase() == Phase::GameOver &&
       forgotten_rack_ != session_.rackNumber()) {
     forgetRack(rackSavePath());  // a finished rack has nothing to resume
     forgotten_rack_ = session_.rackNumber();
@@ -536,8 +566,9 @@ void GameLoop::backToMenu() {
     online_->leave("the player left to the menu");
     computer_.setRemote(nullptr);
     online_.reset();
+  } else {
+    saveRackInPlay();
   }
-  saveRackInPlay();
   const bool leave_to_menu = ui_.leave_to_menu, rack_kept = ui_.rack_kept;
   ui_ = UiState{};
   ui_.leave_to_menu = leave_to_menu;
@@ -545,10 +576,12 @@ void GameLoop::backToMenu() {
   stats_ = SessionStats{};
   forgotten_rack_ = 0;
   StartMenuContext menu = menuContext();
-  if (!runStartMenu(menu, session_, computer_, settings_, count_)) {
+  MenuModel::Outcome outcome = MenuModel::Outcome::None;
+  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) {
     window_->close();
     return;
   }
+  startOnlineFromMenu(outcome);
   applySound();
   frame_clock_.restart();
   display_clock_.restart();
@@ -556,13 +589,15 @@ void GameLoop::backToMenu() {
 }
 
 int GameLoop::finish() {
+  logFrameRate(moving_, frame_);
   if (online_) {
+    // An online rack is not a saved rack to resume alone.
     online_->leave("the player quit");
     computer_.setRemote(nullptr);
     online_.reset();
+  } else {
+    saveRackInPlay();
   }
-  logFrameRate(moving_, frame_);
-  saveRackInPlay();
   return 0;
 }
 

@@ -56,6 +56,8 @@ class GameLoop {
   std::optional<int> startMenu();
   void prepareFrames(const GameStart& start);
   std::optional<int> startOnline(const GameStart& start);
+  bool beginOnline(OnlineConfig config, std::string& why);
+  void startOnlineFromMenu(MenuModel::Outcome outcome);
   void updateOnline(double dt);
   bool onlineCaptureDue() const;
 

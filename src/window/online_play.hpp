@@ -132,7 +132,7 @@ class OnlinePlay : public RemoteControl {
   double next_attempt_ = 0.0;
   double waiting_since_ = 0.0;
   double lost_at_ = 0.0;
-  double progress_at_ = 0.0;  // the last turn or hash
+  double progress_at_ = 0.0;        // the last turn or hash
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
   std::optional<net::Lockstep> lockstep_;
   std::optional<net::WireTurn> pending_;      // the turn rolling, as it went over the wire
