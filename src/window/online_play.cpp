@@ -491,7 +491,7 @@ void OnlinePlay::newRack(GameSession& session) {
   outgoing_.reset();
   local_offer_ = peer_offer_ = false;
   local_finished_ = peer_finished_ = false;
-  script_next_ = 0;
+  // A script's turns are played once: a rematch goes on from the next (none: it ends there).
   peer_aim_.reset();
   peer_aiming_ = false;
 }
