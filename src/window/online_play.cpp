@@ -295,6 +295,7 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
     link_->flush(kByeFlush);
     link_.reset();
     handshaking_ = false;
+    if (stage_ == Stage::Handshake) stage_ = Stage::Waiting;  // waiting on for the friend
     why_ = "Refused a player: " + *refusal;
     session.say(why_, render::Tone::Warning);
     return;
@@ -333,10 +334,16 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   const std::optional<MatchSetup> setup = net::setupOf(welcome, why);
   if (!setup) return protocolError("The host's match is refused: " + why);
   peer_name_ = welcome.name.empty() ? std::string("Player 1") : net::cleanName(welcome.name);
-  GameSession fresh(*setup);
-  fresh.setFixedSeats(true);
-  fresh.setBestOf(welcome.race.best_of);
-  fresh.resumeRack(welcome.race.rack, welcome.race.racks_won[0], welcome.race.racks_won[1]);
+  std::optional<GameSession> made;
+  try {
+    made.emplace(*setup);
+    made->setFixedSeats(true);
+    made->setBestOf(welcome.race.best_of);
+    made->resumeRack(welcome.race.rack, welcome.race.racks_won[0], welcome.race.racks_won[1]);
+  } catch (const std::exception& e) {
+    return protocolError(std::string("The host's match cannot be set up here: ") + e.what());
+  }
+  GameSession& fresh = *made;
   fresh.setSeatName(0, peer_name_);
   fresh.setSeatName(1, config_.name);
   // The rack so far, replayed as a saved rack is (window/rack_save.cpp replayRack): the same
@@ -351,7 +358,7 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
     if (fresh.match().rack().shooter() == own) ++own_turns;
     try {
       fresh.playTurn(*input);
-    } catch (const IllegalAction& e) {
+    } catch (const std::exception& e) {
       return protocolError("The host's turn " + std::to_string(i) +
                            " does not replay: " + e.what());
     }
@@ -382,10 +389,15 @@ void OnlinePlay::onTurn(GameSession& session, const net::TurnMessage& message) {
   if (!turn) return protocolError(peer_name_ + " sent a turn this game refuses: " + why);
   playing_peer_turn_ = true;
   const std::size_t before = session.rackTurns().size();
-  if (turn->input.kind == TurnInput::Kind::Decision) {
-    session.decide(turn->input.shoot, turn->input.replace);
-  } else {
-    session.shoot(turn->input);
+  try {
+    if (turn->input.kind == TurnInput::Kind::Decision) {
+      session.decide(turn->input.shoot, turn->input.replace);
+    } else {
+      session.shoot(turn->input);
+    }
+  } catch (const std::exception& e) {
+    // The rules refused it here (the turn was checked, so the tables differ): never a crash.
+    session.say(e.what(), render::Tone::Warning);
   }
   playing_peer_turn_ = false;
   if (session.rackTurns().size() == before) {
@@ -433,7 +445,11 @@ void OnlinePlay::onState(GameSession& session, const net::StateMessage& message)
   std::string why;
   const std::optional<MatchSnapshot> state = lockstep_->healState(message, session.match(), why);
   if (!state) return protocolError(peer_name_ + " sent a state this game refuses: " + why);
-  session.restoreMatch(*state);
+  try {
+    session.restoreMatch(*state);
+  } catch (const std::exception& e) {
+    return protocolError(peer_name_ + " sent a state that does not restore: " + e.what());
+  }
   bool took = false;
   send(lockstep_->healed(session.match().snapshot(), took));
   if (!took) {
@@ -517,10 +533,14 @@ void OnlinePlay::playScript(GameSession& session) {
   const std::size_t index = script_next_++;
   const TurnInput& turn = config_.script[index];
   const std::size_t before = session.rackTurns().size();
-  if (turn.kind == TurnInput::Kind::Decision) {
-    if (phase == Phase::PushOutChoice) session.decide(turn.shoot, turn.replace);
-  } else if (phase == Phase::Aiming) {
-    session.shoot(turn);
+  try {
+    if (turn.kind == TurnInput::Kind::Decision) {
+      if (phase == Phase::PushOutChoice) session.decide(turn.shoot, turn.replace);
+    } else if (phase == Phase::Aiming) {
+      session.shoot(turn);
+    }
+  } catch (const std::exception& e) {
+    session.say(e.what(), render::Tone::Warning);
   }
   if (session.rackTurns().size() == before) {
     leave("this side's script turn was refused");
