@@ -543,10 +543,15 @@ void OnlinePlay::playScript(GameSession& session) {
     session.say(e.what(), render::Tone::Warning);
   }
   if (session.rackTurns().size() == before) {
-    leave("this side's script turn was refused");
+    const bool decision = turn.kind == TurnInput::Kind::Decision;
+    const std::string why = decision != (phase == Phase::PushOutChoice)
+                                ? (decision ? "a shot is due, not a decision"
+                                            : "a decision is due (play on or pass), not a shot")
+                                : session.message();
     end("The script's turn " + std::to_string(index) + " was refused" +
-            (session.message().empty() ? std::string(".") : ": " + session.message()),
+            (why.empty() ? std::string(".") : ": " + why),
         true);
+    leave("this side's script turn was refused");
   }
 }
 
