@@ -28,6 +28,16 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
     return app::kExitBadInput;
   }
   start.setup.seed = options.seed;
+  const bool online = options.host_port || !options.join.empty();
+  if (online && (options.practice || options.replay)) {
+    err << "nineball: " << (options.practice ? "--practice" : "--replay")
+        << " is for a game at this computer, not with --host or --join\n";
+    return app::kExitBadInput;
+  }
+  if (online && options.opponent_given && options.opponent != "human") {
+    err << "nineball: --opponent: online, the other seat is your friend's, not the computer's\n";
+    return app::kExitBadInput;
+  }
   if (!options.script.empty()) {
     start.script_name = app::shownPath(options.script);
     auto script = app::loadMatchScript(options.script, in, err, "nineball: ");
