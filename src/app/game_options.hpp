@@ -29,6 +29,10 @@ struct GameOptions {
   bool game_given = false;
   bool rules_given = false;
   bool opponent_given = false;
+  // Online play (docs/playing.md, "Playing online"): host on a port, or join a host.
+  std::optional<unsigned short> host_port;  ///< --host [PORT]: wait for a friend on this port
+  std::string join;                         ///< --join HOST[:PORT]: play the host there
+  std::string name;                         ///< --name: this player's name (else the settings')
 };
 
 }  // namespace nineball::app

@@ -7,6 +7,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/opponent.hpp"
+#include "net/wire.hpp"
 #include "nineball/games.hpp"
 
 namespace nineball::app {
@@ -107,6 +108,42 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
         o.size_given = true;
       },
       "Window size in pixels, WIDTHxHEIGHT (default 1280x800)"));
+  auto* host = app.add_option_function<std::vector<std::string>>(
+                      "--host",
+                      [&o](const std::vector<std::string>& v) {
+                        o.host_port = net::kDefaultPort;
+                        if (v.empty() || v.front().empty()) return;
+                        std::string why;
+                        const auto port = net::parsePort(v.front(), why);
+                        if (!port) throw CLI::ValidationError("--host", why);
+                        o.host_port = *port;
+                      },
+                      "Play online: wait for a friend to join, listening on PORT (default " +
+                          std::to_string(net::kDefaultPort) + ")")
+                   ->expected(0, 1)
+                   ->allow_extra_args(false);
+  opts.push_back(host);
+  auto* join = app.add_option_function<std::string>(
+                      "--join",
+                      [&o](const std::string& text) {
+                        std::string why;
+                        if (!net::parseAddress(text, why))
+                          throw CLI::ValidationError("--join", why);
+                        o.join = text;
+                      },
+                      "Play online: join the friend hosting at HOST[:PORT] (the code their window "
+                      "shows)")
+                   ->type_name("HOST[:PORT]");
+  opts.push_back(join);
+  host->excludes(join);
+  opts.push_back(app.add_option_function<std::string>(
+      "--name",
+      [&o](const std::string& n) {
+        if (n.empty()) throw CLI::ValidationError("--name", "needs a name");
+        o.name = n;
+      },
+      "Game window: your name, shown to both players online (else the name "
+      "the start menu remembers)"));
   return opts;
 }
 

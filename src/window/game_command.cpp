@@ -8,6 +8,7 @@
 #include "app/match_script_file.hpp"
 #include "app/read_input.hpp"
 #include "io/match_json.hpp"
+#include "net/handshake.hpp"
 #include "nineball/games.hpp"
 #include "nineball/seat.hpp"
 #include "window/game_window.hpp"
@@ -27,11 +28,22 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
     return app::kExitBadInput;
   }
   start.setup.seed = options.seed;
+  const bool online = options.host_port || !options.join.empty();
+  if (online && (options.practice || options.replay)) {
+    err << "nineball: " << (options.practice ? "--practice" : "--replay")
+        << " is for a game at this computer, not with --host or --join\n";
+    return app::kExitBadInput;
+  }
+  if (online && options.opponent_given && options.opponent != "human") {
+    err << "nineball: --opponent: online, the other seat is your friend's, not the computer's\n";
+    return app::kExitBadInput;
+  }
   if (!options.script.empty()) {
     start.script_name = app::shownPath(options.script);
     auto script = app::loadMatchScript(options.script, in, err, "nineball: ");
     if (!script) return app::kExitBadInput;
-    // The window plays the script's turns for both seats; computer players are its own option.
+    // The window plays the script's turns for both seats (online, its own seat's);
+    // computer players are its own option.
     for (const Seat& player : script->players) {
       if (isComputer(player)) {
         err << "nineball: " << start.script_name
@@ -42,7 +54,19 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
     }
     start.setup = script->setup;
     start.turns = std::move(script->turns);
+    // The host offers the script's own setup (its table, physics, layout), read once more.
+    std::string why;
+    if (options.host_port && options.script != "-") {
+      if (const auto text = app::readInput(options.script, in, why)) {
+        try {
+          start.online_match = net::matchPart(nlohmann::json::parse(*text));
+        } catch (const nlohmann::json::exception&) {
+          start.online_match = nullptr;
+        }
+      }
+    }
   }
+  if (start.online_match.is_null()) start.online_match = onlineMatchOf(start.setup);
   return runGame(options, start, err);
 }
 

@@ -114,10 +114,13 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
       interactive_(!capture_ && !benchmark_),
       // The start menu, the settings file and the saved rack belong to a game a person starts;
       // screenshots and scripts (the tests) see none of them unless --menu asks.
-      show_menu_(options.menu || (interactive_ && options.script.empty())),
-      keep_rack_(interactive_ && options.script.empty()),
+      show_menu_(!(options.host_port || !options.join.empty()) &&
+                 (options.menu || (interactive_ && options.script.empty()))),
+      keep_rack_(interactive_ && options.script.empty() &&
+                 !(options.host_port || !options.join.empty())),
       frame_limit_(options.frames.value_or(capture_ ? 1 : -1)),
-      input_(session_, ui_, computer_) {
+      input_(session_, ui_, computer_),
+      online_start_(options.host_port || !options.join.empty()) {
   setup_status_ = setUp(start);
 }
 
@@ -128,7 +131,9 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
   if (!options_.practice) {
     computer_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
   }
-  if (const auto status = playScript(start)) return status;
+  if (!online_start_) {
+    if (const auto status = playScript(start)) return status;
+  }
   if (const auto status = openDisplay()) return status;
   // Refused before a window opens and frames are drawn for nothing.
   std::string why;
@@ -137,6 +142,9 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
     return app::kExitBadInput;
   }
   readSettings(start);
+  if (online_start_) {
+    if (const auto status = startOnline(start)) return status;
+  }
   openGameWindow();
   if (const auto status = startMenu()) return status;
   prepareFrames(start);
@@ -173,7 +181,9 @@ std::optional<int> GameLoop::openDisplay() {
 }
 
 void GameLoop::readSettings(const GameStart& start) {
-  settings_ = show_menu_ ? loadSettings(settingsPath()) : Settings{};
+  // An online game started from the command line still wants the player's remembered name.
+  const bool remembered = show_menu_ || (online_start_ && interactive_);
+  settings_ = remembered ? loadSettings(settingsPath()) : Settings{};
   presetFromCommandLine(settings_, options_, start.setup);
 }
 
@@ -205,9 +215,97 @@ std::optional<int> GameLoop::startMenu() {
     return 0;
   }
   if (show_menu_) {
-    if (!runStartMenu(menu, session_, computer_, settings_, count_)) return 0;
+    MenuModel::Outcome outcome = MenuModel::Outcome::None;
+    if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
+    startOnlineFromMenu(outcome);
   }
   return std::nullopt;
+}
+
+// --host / --join: the link, and this side's seat named. Nothing when the game goes on.
+std::optional<int> GameLoop::startOnline(const GameStart& start) {
+  OnlineConfig config;
+  config.side = options_.host_port ? net::Side::Host : net::Side::Joiner;
+  std::string why;
+  if (config.side == net::Side::Host) {
+    config.address.port = *options_.host_port;
+  } else {
+    config.address = *net::parseAddress(options_.join, why);  // checked with the options
+  }
+  config.name = options_.name;
+  config.match = start.online_match;
+  config.scripted = !options_.script.empty();
+  config.script = start.turns;
+  if (capture_) {
+    // A picture run (the tests) must end: nobody joining or coming back ends it.
+    config.wait_s = 60.0;
+    config.rejoin_s = 20.0;
+    config.stall_s = 60.0;
+    // The tests' shorter wait, in seconds.
+    if (const char* wait = std::getenv("NINEBALL_ONLINE_WAIT")) {
+      config.wait_s = std::clamp(std::atof(wait), 1.0, 600.0);
+    }
+  }
+  if (!beginOnline(config, why)) {
+    err_ << "nineball: --host " << config.address.port << ": " << why << '\n';
+    return 1;
+  }
+  return std::nullopt;
+}
+
+// The link opened (the host's port) and the seats named; false, with `why`, when the port is
+// taken.
+bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
+  const std::string remembered = settings_.last.names[0];
+  if (config.name.empty()) {
+    config.name =
+        config.side == net::Side::Joiner && remembered == "Player 1" ? "Player 2" : remembered;
+  }
+  online_ = OnlinePlay::start(config, why);
+  if (!online_) return false;
+  computer_.setOpponent(session_, HumanSeat{});
+  computer_.setRemote(online_.get());
+  const int own = config.side == net::Side::Host ? 0 : 1;
+  session_.setSeatName(own, config.name);
+  session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
+  return true;
+}
+
+// The start menu's "Play online": host on the default port, or join the address typed there.
+void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
+  if (outcome != MenuModel::Outcome::Host && outcome != MenuModel::Outcome::Join) return;
+  OnlineConfig config;
+  std::string why;
+  if (outcome == MenuModel::Outcome::Host) {
+    config.side = net::Side::Host;
+    config.address.port = net::kDefaultPort;
+    config.match = onlineMatchOf(session_.setup());
+  } else {
+    config.side = net::Side::Joiner;
+    config.address = net::parseAddress(settings_.join_address, why).value_or(net::Address{});
+  }
+  if (!beginOnline(config, why)) {
+    session_.say("Cannot host: " + why + ". Playing at this computer instead.",
+                 render::Tone::Warning);
+  }
+}
+
+// One frame of the online game; a joiner's session is the host's match once welcomed.
+void GameLoop::updateOnline(double dt) {
+  if (!online_) return;
+  online_->update(session_, dt);
+  if (online_->sessionReplaced()) {
+    session_.setTurnObserver(count_);
+    stats_ = SessionStats{};
+    painter_.emplace(session_.match().world().table(), *fonts_);
+    painter_->resize(window_->getSize().x, window_->getSize().y);
+  }
+}
+
+// --screenshot online: the picture once this side is done with the rack (or the game ended).
+bool GameLoop::onlineCaptureDue() const {
+  if (options_.frames) return frame_ >= frame_limit_;  // a picture of the game as it stands
+  return online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
 }
 
 void GameLoop::prepareFrames(const GameStart& start) {
@@ -215,7 +313,7 @@ void GameLoop::prepareFrames(const GameStart& start) {
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
   computer_.setWaitForPlans(capture_);
-  if (options_.frames && start.turns.empty()) session_.shoot();  // the opening break, as a demo
+  if (options_.frames && start.turns.empty() && !online_) session_.shoot();  // a demo break
   if (options_.replay) session_.startReplay(false);
   logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
                        sounds_ ? "sound on" : "no sound");
@@ -245,7 +343,15 @@ int GameLoop::run() {
     if (waitWhileIdle(changed)) continue;
     const bool rolling = advance();
     draw();
-    if (capture_ && frame_ >= frame_limit_) {
+    if (capture_ && online_ && onlineCaptureDue()) {
+      if (online_->failed() && !options_.frames) {
+        err_ << "nineball: online: " << online_->why() << '\n';
+        return 1;
+      }
+      if (!saveCapture()) return app::kExitBadInput;
+      break;
+    }
+    if (capture_ && !online_ && frame_ >= frame_limit_) {
       if (!saveCapture()) return app::kExitBadInput;
       break;
     }
@@ -282,6 +388,8 @@ void GameLoop::handleEvent(const sf::Event& event) {
   } else if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
     settings_menu_ = MenuModel::settingsOnly(settings_);
     settings_menu_->setMutedByOption(options_.mute);
+  } else if (keyPressed(event, sf::Keyboard::O) && online_) {
+    session_.say("Online, the other seat is " + online_->peerName() + "'s.");
   } else if (keyPressed(event, sf::Keyboard::M) && options_.mute) {
     session_.say("No sound this run: the game was started with --mute.");
   } else if (keyPressed(event, sf::Keyboard::M)) {
@@ -320,7 +428,7 @@ void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
 bool GameLoop::waitWhileIdle(bool changed) {
   // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
   // instead of drawing the same picture again (the idle window costs next to nothing).
-  const bool still = session_.phase() != Phase::Rolling && !session_.replaying() &&
+  const bool still = !online_ && session_.phase() != Phase::Rolling && !session_.replaying() &&
                      !computer_.controls(session_) && !input_.keysHeld() && ui_.drag == Drag::None;
   if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
@@ -336,13 +444,14 @@ bool GameLoop::advance() {
   const double dt =
       capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
   input_.update(dt);
+  updateOnline(dt);
   // The computer waits while the help or the quit question is open, as a player would.
   if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
     computer_.update(session_, dt);
   }
   const bool rolling = session_.phase() == Phase::Rolling;
   const auto impacts = session_.advance(dt);
-  if (keep_rack_ && session_.phase() == Phase::GameOver &&
+  if (keep_rack_ && !online_ && session_.phase() == Phase::GameOver &&
       forgotten_rack_ != session_.rackNumber()) {
     forgetRack(rackSavePath());  // a finished rack has nothing to resume
     forgotten_rack_ = session_.rackNumber();
@@ -361,6 +470,12 @@ void GameLoop::draw() {
   if (picture.hud.overlay == render::Overlay::GameOver) {
     for (int seat = 0; seat < 2; ++seat) {
       picture.hud.overlay_lines.push_back(session_.seatName(seat) + ": " + stats_.line(seat));
+    }
+  }
+  if (online_) {
+    picture.hud.mode = online_->started() ? "online vs " + online_->peerName() : "online: waiting";
+    if (online_->stage() != OnlinePlay::Stage::Playing) {
+      picture.hud.status = online_->banner(session_);
     }
   }
   painter_->draw(*window_, picture);
@@ -447,7 +562,13 @@ void GameLoop::saveRackInPlay() {
 
 // Esc: the rack kept as on quitting, then the start menu (its Resume picks the rack up).
 void GameLoop::backToMenu() {
-  saveRackInPlay();
+  if (online_) {
+    online_->leave("the player left to the menu");
+    computer_.setRemote(nullptr);
+    online_.reset();
+  } else {
+    saveRackInPlay();
+  }
   const bool leave_to_menu = ui_.leave_to_menu, rack_kept = ui_.rack_kept;
   ui_ = UiState{};
   ui_.leave_to_menu = leave_to_menu;
@@ -455,10 +576,12 @@ void GameLoop::backToMenu() {
   stats_ = SessionStats{};
   forgotten_rack_ = 0;
   StartMenuContext menu = menuContext();
-  if (!runStartMenu(menu, session_, computer_, settings_, count_)) {
+  MenuModel::Outcome outcome = MenuModel::Outcome::None;
+  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) {
     window_->close();
     return;
   }
+  startOnlineFromMenu(outcome);
   applySound();
   frame_clock_.restart();
   display_clock_.restart();
@@ -467,7 +590,14 @@ void GameLoop::backToMenu() {
 
 int GameLoop::finish() {
   logFrameRate(moving_, frame_);
-  saveRackInPlay();
+  if (online_) {
+    // An online rack is not a saved rack to resume alone.
+    online_->leave("the player quit");
+    computer_.setRemote(nullptr);
+    online_.reset();
+  } else {
+    saveRackInPlay();
+  }
   return 0;
 }
 

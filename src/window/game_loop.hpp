@@ -20,6 +20,7 @@
 #include "window/game_session.hpp"
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
+#include "window/online_play.hpp"
 #include "window/session_stats.hpp"
 #include "window/settings.hpp"
 #include "window/start_menu.hpp"
@@ -54,6 +55,11 @@ class GameLoop {
   StartMenuContext menuContext();
   std::optional<int> startMenu();
   void prepareFrames(const GameStart& start);
+  std::optional<int> startOnline(const GameStart& start);
+  bool beginOnline(OnlineConfig config, std::string& why);
+  void startOnlineFromMenu(MenuModel::Outcome outcome);
+  void updateOnline(double dt);
+  bool onlineCaptureDue() const;
 
   // The steps of one frame, in their order.
   bool handleEvents();
@@ -106,6 +112,8 @@ class GameLoop {
   int forgotten_rack_ = 0;
   long frame_ = 0;
   std::optional<int> setup_status_;
+  const bool online_start_;             // --host or --join
+  std::unique_ptr<OnlinePlay> online_;  // the game against a player at another computer
 };
 
 }  // namespace nineball::window

@@ -153,8 +153,8 @@ GameSession::GameSession(GameSession&&) noexcept = default;
 GameSession& GameSession::operator=(GameSession&&) noexcept = default;
 
 int GameSession::seatOf(rules::Player p) const {
-  // Player A breaks; the seats take turns at being A.
-  const int a = rack_ % 2;
+  // Player A breaks; the seats take turns at being A (online, the host is always A).
+  const int a = fixed_seats_ ? 0 : rack_ % 2;
   return p == rules::Player::A ? a : 1 - a;
 }
 
@@ -420,6 +420,11 @@ bool GameSession::shoot(const TurnInput& given) {
   } else {
     turn.cue.reset();
   }
+  if (relay_.prepare && !practice_) {
+    const std::optional<TurnInput> relayed = relay_.prepare(turn);
+    if (!relayed) return false;
+    turn = *relayed;
+  }
   ball_on_at_shot_ = match_->rack().ballOn();
   groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak();
@@ -429,6 +434,7 @@ bool GameSession::shoot(const TurnInput& given) {
     say(std::string("Not allowed: ") + e.what() + ".", render::Tone::Warning);
     return false;
   }
+  if (relay_.begun && !practice_) relay_.begun(turn);
   if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
   rack_turns_.push_back(turn);
   heading_ = turn.shot.heading_rad;
@@ -625,9 +631,15 @@ void GameSession::decide(bool shoot_now, bool replace) {
   turn.kind = TurnInput::Kind::Decision;
   turn.shoot = shoot_now && !replace;
   turn.replace = replace;
+  if (relay_.prepare) {
+    const std::optional<TurnInput> relayed = relay_.prepare(turn);
+    if (!relayed) return;
+    turn = *relayed;
+  }
   groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
+  if (relay_.begun) relay_.begun(turn);
   // A re-rack puts every ball back: the tray of balls down empties with it.
   if (match_->rack().isBreak()) pocketed_.clear();
   afterTurn(record, match_->rack().ballOn());
@@ -643,6 +655,7 @@ std::optional<int> GameSession::matchWinner() const {
 
 void GameSession::rematch() {
   if (practice_) return;
+  if (relay_.rematch && !relay_.rematch()) return;
   if (matchWinner()) racks_won_[0] = racks_won_[1] = 0;
   ++rack_;
   startRack();
@@ -662,6 +675,18 @@ void GameSession::playTurn(const TurnInput& turn) {
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
   afterTurn(record, ball_on);
+}
+
+void GameSession::restoreMatch(const MatchSnapshot& snapshot) {
+  if (phase_ == Phase::Rolling) return;
+  match_->restore(snapshot);
+  if (match_->rack().over()) {
+    shot_.current = shot_.previous = match_->balls();
+    shot_.current_time = shot_.previous_time = match_->world().time();
+    phase_ = Phase::GameOver;
+    return;
+  }
+  startTurn();
 }
 
 void GameSession::resumeRack(int rack_index, int racks_won0, int racks_won1) {

@@ -82,6 +82,21 @@ class GameSession {
   /// it was the rack's break (the session statistics).
   using TurnObserver = std::function<void(int seat, const TurnRecord& record, bool was_break)>;
   void setTurnObserver(TurnObserver observer) { observer_ = std::move(observer); }
+  /// Online play: every turn played through shoot() and decide() passes `prepare` first (the
+  /// turn to play instead, the wire's exact form; nothing refuses it) and `begun` once it is
+  /// under way; rematch() asks `rematch` (false: the rematch is only offered).
+  struct TurnRelay {
+    std::function<std::optional<TurnInput>(const TurnInput&)> prepare;
+    std::function<void(const TurnInput&)> begun;
+    std::function<bool()> rematch;
+  };
+  void setTurnRelay(TurnRelay relay) { relay_ = std::move(relay); }
+  bool hasTurnRelay() const { return static_cast<bool>(relay_.prepare); }
+  /// Online play: the seats keep their sides (seat 0 is Player A, and breaks, in every rack),
+  /// as the two sides of a network game do.
+  void setFixedSeats(bool fixed) { fixed_seats_ = fixed; }
+  /// Puts the rack in a state Match::snapshot() gave (online play's heal), between turns.
+  void restoreMatch(const MatchSnapshot& snapshot);
   Phase phase() const { return phase_; }
 
   /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
@@ -269,6 +284,8 @@ class GameSession {
   std::string message_;
   render::Tone tone_ = render::Tone::Info;
   TurnObserver observer_;
+  TurnRelay relay_;
+  bool fixed_seats_ = false;
 };
 
 }  // namespace nineball::window

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,12 @@ struct GameStart {
   MatchSetup setup;
   std::vector<TurnInput> turns;
   std::string script_name;  ///< for messages about the script's turns
+  /// Online (--host): the match offered to the joiner, a script without turns and players.
+  nlohmann::json online_match;
 };
+
+/// The match a host offers for `setup` (game, rules, seed, points): what the joiner plays.
+nlohmann::json onlineMatchOf(const MatchSetup& setup);
 
 /// Opens the game window and plays until the players quit; with --screenshot draws, saves
 /// the PNG and exits. Returns the exit status: 0, 1 without a display, a font or a writable

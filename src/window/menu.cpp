@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "net/wire.hpp"
 #include "nineball/games.hpp"
 #include "window/player_name.hpp"
 
@@ -23,6 +24,8 @@ const char* rulesLabel(rules::RuleSet r) {
 }
 
 constexpr int kVolumeStep = 10;
+// An address to join: a host name or IP and a port fit in this many characters.
+constexpr std::size_t kMaxAddressBytes = 80;
 
 std::string utf8(char32_t c) {
   std::string out;
@@ -85,11 +88,12 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   if (screen_ == Screen::Settings) {
     return {Item::Volume, Item::Sound, Item::Guide, Item::Bank, Item::FrameCap, Item::Back};
   }
+  if (screen_ == Screen::Online) return {Item::Host, Item::Join, Item::JoinAddress, Item::Back};
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
-  for (Item i :
-       {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
-        Item::Points, Item::Frames, Item::Name1, Item::Name2, Item::OpenSettings, Item::Quit}) {
+  for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
+                 Item::Points, Item::Frames, Item::Name1, Item::Name2, Item::OpenOnline,
+                 Item::OpenSettings, Item::Quit}) {
     // Only a game played in frames has a match length to choose.
     if (i == Item::Frames && bestOf() == 0) continue;
     v.push_back(i);
@@ -101,6 +105,8 @@ bool MenuModel::enabled(Item item) const {
   switch (item) {
     case Item::Practice:
       return true;
+    case Item::Join:
+      return joinable();
     case Item::Level:
       return computer_;
     case Item::Rules:
@@ -131,6 +137,24 @@ MenuRow MenuModel::row(Item item) const {
     case Item::Practice:
       r.label = "Practice";
       r.value = "no rules, any ball anywhere";
+      break;
+    case Item::OpenOnline:
+      r.label = "Play online: host / join";
+      r.value = "a friend at another computer";
+      break;
+    case Item::Host:
+      r.label = "Host";
+      r.value = "a friend joins you (port " + std::to_string(net::kDefaultPort) + ")";
+      break;
+    case Item::Join:
+      r.label = "Join";
+      r.value = joinable() ? settings_.join_address : std::string("type the address below");
+      break;
+    case Item::JoinAddress:
+      r.kind = Kind::Text;
+      r.label = "Friend's address";
+      r.value = settings_.join_address;
+      r.editing = editing_ && items()[selected_] == item;
       break;
     case Item::Versus:
       r = {Kind::Choice, "Opponent", computer_ ? "Computer" : "Human (2 players)", r.enabled,
@@ -200,6 +224,7 @@ MenuRow MenuModel::row(Item item) const {
 }
 
 std::string MenuModel::title() const {
+  if (screen_ == Screen::Online) return "Play online";
   return screen_ == Screen::Settings ? "Settings" : "nineball";
 }
 
@@ -313,12 +338,23 @@ void MenuModel::activate(Item item) {
       settings_.last = choice();
       outcome_ = Outcome::Play;
       break;
+    case Item::Host:
+    case Item::Join:
+      settings_.last.mode = GameMode::Match;
+      settings_.last = choice();
+      outcome_ = item == Item::Host ? Outcome::Host : Outcome::Join;
+      break;
     case Item::Name1:
     case Item::Name2:
+    case Item::JoinAddress:
       editing_ = true;
       break;
     case Item::OpenSettings:
       screen_ = Screen::Settings;
+      selectFirst();
+      break;
+    case Item::OpenOnline:
+      screen_ = Screen::Online;
       selectFirst();
       break;
     case Item::Quit:
@@ -342,13 +378,14 @@ void MenuModel::key(MenuKey k) {
   const auto v = items();
   const Item item = v[selected_];
   if (editing_) {
-    const int seat = item == Item::Name1 ? 0 : 1;
-    std::string& name = settings_.last.names[seat];
+    std::string& name = editedText();
     if (k == MenuKey::Backspace) popChar(name);
     if (k == MenuKey::Enter || k == MenuKey::Escape || k == MenuKey::Tab || k == MenuKey::Up ||
         k == MenuKey::Down) {
       editing_ = false;
-      if (name.empty()) name = seat == 0 ? "Player 1" : "Player 2";
+      if (name.empty() && item != Item::JoinAddress) {
+        name = item == Item::Name1 ? "Player 1" : "Player 2";
+      }
       if (k == MenuKey::Up) move(-1);
       if (k == MenuKey::Down || k == MenuKey::Tab) move(1);
     }
@@ -370,7 +407,7 @@ void MenuModel::key(MenuKey k) {
       activate(item);
       break;
     case MenuKey::Escape:
-      if (screen_ == Screen::Settings) {
+      if (screen_ != Screen::Main) {
         activate(Item::Back);
       } else {
         outcome_ = Outcome::Quit;
@@ -385,10 +422,27 @@ void MenuModel::text(char32_t c) {
   if (!editing_) return;
   // Printable characters only; control keys arrive as their own key events.
   if (c < 0x20 || c == 0x7F || (c >= 0xD800 && c <= 0xDFFF) || c > 0x10FFFF) return;
-  const int seat = items()[selected_] == Item::Name1 ? 0 : 1;
-  std::string& name = settings_.last.names[seat];
+  if (items()[selected_] == Item::JoinAddress) {
+    // A host name, an IPv4 address and a port: no spaces, nothing past ASCII.
+    if (c > 0x20 && c < 0x7F && settings_.join_address.size() < kMaxAddressBytes) {
+      settings_.join_address += static_cast<char>(c);
+    }
+    return;
+  }
+  std::string& name = editedText();
   const std::string add = utf8(c);
   if (name.size() + add.size() <= kMaxNameBytes) name += add;
+}
+
+std::string& MenuModel::editedText() {
+  const Item item = items()[selected_];
+  if (item == Item::JoinAddress) return settings_.join_address;
+  return settings_.last.names[item == Item::Name1 ? 0 : 1];
+}
+
+bool MenuModel::joinable() const {
+  std::string why;
+  return net::parseAddress(settings_.join_address, why).has_value();
 }
 
 void MenuModel::hover(int i) {
@@ -424,6 +478,8 @@ int MenuModel::bestOf() const {
 MenuChoice MenuModel::choice() const {
   MenuChoice c = settings_.last;
   c.opponent = computer_ ? Seat(ComputerSeat{level_}) : Seat(HumanSeat{});
+  // Online the other seat is the friend's, whatever the Opponent row says.
+  if (outcome_ == Outcome::Host || outcome_ == Outcome::Join) c.opponent = HumanSeat{};
   if (!gameDef(c.game).playedBy(c.rules)) c.rules = gameDef(c.game).rule_sets.front();
   c.points = pointsToWin();
   c.best_of = bestOf();

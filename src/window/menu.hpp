@@ -26,8 +26,9 @@ struct MenuRow {
 /// the keys and clicks do, and at the end what was chosen. No SFML.
 class MenuModel {
  public:
-  enum class Screen { Main, Settings };
-  enum class Outcome { None, Play, Resume, Quit, Close };
+  enum class Screen { Main, Settings, Online };
+  /// Host / Join: play online, hosting (on the default port) or joining settings().join_address.
+  enum class Outcome { None, Play, Resume, Quit, Close, Host, Join };
 
   /// The start menu, its choices preset from `settings.last`; `resume` labels the saved
   /// rack's entry ("Ann vs Computer: rack 4, racks 2-1") when there is one.
@@ -74,6 +75,10 @@ class MenuModel {
     Frames,
     Name1,
     Name2,
+    OpenOnline,
+    Host,
+    Join,
+    JoinAddress,
     OpenSettings,
     Quit,
     Volume,
@@ -91,6 +96,9 @@ class MenuModel {
   void change(Item item, int step);
   void activate(Item item);
   void selectFirst();
+  /// The text field being edited: a player's name or the address to join.
+  std::string& editedText();
+  bool joinable() const;  ///< the address to join reads as HOST[:PORT]
 
   Settings settings_;
   std::optional<std::string> resume_;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/log.hpp"
+#include "net/wire.hpp"
 #include "nineball/games.hpp"
 #include "window/player_name.hpp"
 #include "window/state_file.hpp"
@@ -54,7 +55,7 @@ bool Settings::operator==(const Settings& o) const {
          frame_cap == o.frame_cap && last.mode == o.last.mode && last.game == o.last.game &&
          last.opponent == o.last.opponent && last.rules == o.last.rules &&
          last.points == o.last.points && last.best_of == o.last.best_of &&
-         last.names == o.last.names;
+         last.names == o.last.names && join_address == o.join_address;
 }
 
 std::string xdgFile(const char* env, const char* fallback, const char* file) {
@@ -83,6 +84,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
                {"points", s.last.points},
                {"best_of", s.last.best_of},
                {"names", {s.last.names[0], s.last.names[1]}}};
+  j["join_address"] = s.join_address;
   return j;
 }
 
@@ -129,6 +131,15 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
       s.frame_cap = v->get<int>();
     } else {
       warn(warnings, "frame_cap: expected 30, 60, 120, 240 or 0 (vertical sync)");
+    }
+  }
+  if (const auto* v = field(j, "join_address")) {
+    std::string why;
+    if (v->is_string() &&
+        (v->get<std::string>().empty() || net::parseAddress(v->get<std::string>(), why))) {
+      s.join_address = v->get<std::string>();
+    } else {
+      warn(warnings, "join_address: expected HOST or HOST:PORT");
     }
   }
   const auto* last = field(j, "last");

@@ -23,9 +23,10 @@ struct Settings {
   int volume = 80;     ///< 0-100 % of the sounds' full loudness
   bool muted = false;  ///< M in the window
   GuideLength guide = GuideLength::Normal;
-  bool bank_line = false;  ///< draw the cue ball's path on from the first cushion it meets
-  int frame_cap = 60;      ///< frames per second at most; 0: as fast as vertical sync allows
-  MenuChoice last;         ///< the game chosen last time (resume is never kept)
+  bool bank_line = false;    ///< draw the cue ball's path on from the first cushion it meets
+  int frame_cap = 60;        ///< frames per second at most; 0: as fast as vertical sync allows
+  MenuChoice last;           ///< the game chosen last time (resume is never kept)
+  std::string join_address;  ///< the host last joined online, HOST[:PORT] (empty: none yet)
 
   bool operator==(const Settings& o) const;
   bool operator!=(const Settings& o) const { return !(*this == o); }
@@ -36,7 +37,7 @@ struct Settings {
 std::string settingsPath();
 
 /// The settings as JSON: {"volume", "muted", "aim_guide", "bank_line", "frame_cap", "last":
-/// {"game", "opponent", "rules", "points", "best_of", "names"}}.
+/// {"game", "opponent", "rules", "points", "best_of", "names"}, "join_address"}.
 nlohmann::ordered_json settingsToJson(const Settings& s);
 /// Reads what it can: a missing or wrong field keeps its default, with a warning in `warnings`.
 Settings settingsFromJson(const nlohmann::json& j, std::string& warnings);

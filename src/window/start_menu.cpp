@@ -58,7 +58,8 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
 }
 
 bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings, const GameSession::TurnObserver& observer) {
+                  Settings& settings, const GameSession::TurnObserver& observer,
+                  MenuModel::Outcome* outcome_out) {
   const std::string rack_path = rackSavePath();
   const std::optional<SavedRack> saved = loadRack(rack_path);
   MenuModel model = startModel(ctx, settings, saved);
@@ -70,7 +71,11 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   if (!saveSettings(settings, settingsPath(), why)) {
     logger("game")->warn("settings not saved: {}", why);
   }
-  if (outcome != MenuModel::Outcome::Play && outcome != MenuModel::Outcome::Resume) return false;
+  if (outcome_out) *outcome_out = outcome;
+  const bool online = outcome == MenuModel::Outcome::Host || outcome == MenuModel::Outcome::Join;
+  if (outcome != MenuModel::Outcome::Play && outcome != MenuModel::Outcome::Resume && !online) {
+    return false;
+  }
 
   MatchSetup setup = session.setup();
   if (outcome == MenuModel::Outcome::Resume && saved) {

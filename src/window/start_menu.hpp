@@ -42,7 +42,11 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings);
 /// forgets if it does not replay), the computer takes Player 2's seat if chosen, the names
 /// are set, and `settings` (the last choice included) are saved. The new session tells
 /// `observer` of its turns, the replayed ones included.
+///
+/// "Play online: host / join" start the game chosen as Play does (a joiner's is replaced by the
+/// host's once welcomed); `outcome`, when given, says which of them was chosen.
 bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings, const GameSession::TurnObserver& observer);
+                  Settings& settings, const GameSession::TurnObserver& observer,
+                  MenuModel::Outcome* outcome = nullptr);
 
 }  // namespace nineball::window

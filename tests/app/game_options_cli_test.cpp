@@ -27,5 +27,24 @@ TEST(GameOptionsCli, AnOptionGivenIsKnownAsGivenEvenAtItsDefault) {
   EXPECT_EQ(o.opponent, "human");
 }
 
+TEST(GameOptionsCli, HostTakesAnOptionalPortAndJoinAnAddress) {
+  EXPECT_FALSE(parse({}).host_port.has_value());
+  EXPECT_EQ(parse({"--host"}).host_port, std::optional<unsigned short>(47047));
+  EXPECT_EQ(parse({"--host", "5000"}).host_port, std::optional<unsigned short>(5000));
+  EXPECT_EQ(parse({"--join", "192.168.1.20:5000"}).join, "192.168.1.20:5000");
+  EXPECT_EQ(parse({"--join", "friend.example"}).join, "friend.example");
+  EXPECT_EQ(parse({"--name", "Ann"}).name, "Ann");
+}
+
+TEST(GameOptionsCli, BadPortsAddressesAndHostWithJoinAreRefused) {
+  EXPECT_THROW(parse({"--host", "0"}), CLI::ValidationError);
+  EXPECT_THROW(parse({"--host", "65536"}), CLI::ValidationError);
+  EXPECT_THROW(parse({"--host", "port"}), CLI::ValidationError);
+  EXPECT_THROW(parse({"--join", ":47047"}), CLI::ValidationError);
+  EXPECT_THROW(parse({"--join", "host:99999"}), CLI::ValidationError);
+  EXPECT_THROW(parse({"--host", "--join", "host"}), CLI::ExcludesError);
+  EXPECT_THROW(parse({"--name", ""}), CLI::ValidationError);
+}
+
 }  // namespace
 }  // namespace nineball::app

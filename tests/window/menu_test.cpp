@@ -223,5 +223,57 @@ TEST(Menu, SnookerChoosesTheMatchLengthInFrames) {
   EXPECT_EQ(MenuModel(odd, std::nullopt).choice().best_of, 1);
 }
 
+TEST(Menu, PlayOnlineOpensAScreenToHostOrJoin) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "Play online: host / join");
+  m.key(MenuKey::Enter);
+  ASSERT_EQ(m.screen(), MenuModel::Screen::Online);
+  EXPECT_EQ(m.title(), "Play online");
+  EXPECT_EQ(m.rows()[m.selected()].label, "Host");
+  // Nothing to join before an address is typed.
+  EXPECT_FALSE(m.rows()[rowNamed(m, "Join")].enabled);
+  m.key(MenuKey::Escape);
+  EXPECT_EQ(m.screen(), MenuModel::Screen::Main);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::None);
+}
+
+TEST(Menu, HostingStartsTheGameChosenWithAPersonInTheOtherSeat) {
+  Settings s;
+  s.last.opponent = ComputerSeat{ai::Level::Club};
+  MenuModel m(s, std::nullopt);
+  selectRow(m, "Play online: host / join");
+  m.key(MenuKey::Enter);
+  m.key(MenuKey::Enter);  // Host
+  ASSERT_EQ(m.outcome(), MenuModel::Outcome::Host);
+  EXPECT_EQ(m.choice().mode, GameMode::Match);
+  EXPECT_TRUE(std::holds_alternative<HumanSeat>(m.choice().opponent));
+}
+
+TEST(Menu, TheAddressIsTypedRememberedAndJoined) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "Play online: host / join");
+  m.key(MenuKey::Enter);
+  selectRow(m, "Friend's address");
+  m.key(MenuKey::Enter);
+  ASSERT_TRUE(m.editing());
+  for (char32_t c : std::u32string(U"10.0.0.7 :47047\u00e9")) m.text(c);  // no space, ASCII only
+  m.key(MenuKey::Enter);
+  EXPECT_EQ(m.settings().join_address, "10.0.0.7:47047");
+  ASSERT_TRUE(m.rows()[rowNamed(m, "Join")].enabled);
+  EXPECT_EQ(m.rows()[rowNamed(m, "Join")].value, "10.0.0.7:47047");
+  selectRow(m, "Join");
+  m.key(MenuKey::Enter);
+  EXPECT_EQ(m.outcome(), MenuModel::Outcome::Join);
+  // A bad port leaves Join greyed.
+  MenuModel bad(m.settings(), std::nullopt);
+  selectRow(bad, "Play online: host / join");
+  bad.key(MenuKey::Enter);
+  selectRow(bad, "Friend's address");
+  bad.key(MenuKey::Enter);
+  bad.text(U'9');
+  bad.key(MenuKey::Enter);
+  EXPECT_FALSE(bad.rows()[rowNamed(bad, "Join")].enabled);
+}
+
 }  // namespace
 }  // namespace nineball::window

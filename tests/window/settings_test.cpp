@@ -76,6 +76,7 @@ TEST_F(SettingsFiles, SaveThenLoadGivesTheSameSettings) {
   s.last.points = 40;
   s.last.best_of = 9;
   s.last.names = {"Ann \u00e9", "Bob"};
+  s.join_address = "192.168.1.20:5000";
   std::string why;
   ASSERT_TRUE(saveSettings(s, settingsPath(), why)) << why;
   EXPECT_TRUE(std::filesystem::exists(dir_ / "config" / "nineball" / "settings.json"));
@@ -90,6 +91,17 @@ TEST_F(SettingsFiles, SaveThenLoadGivesTheSameSettings) {
     ++files;
   }
   EXPECT_EQ(files, 1);
+}
+
+TEST(Settings, AnAddressToJoinThatIsNotOneIsDroppedWithAWarning) {
+  std::string warnings;
+  const Settings s = settingsFromJson({{"join_address", "host:99999"}}, warnings);
+  EXPECT_EQ(s.join_address, "");
+  EXPECT_NE(warnings.find("join_address"), std::string::npos) << warnings;
+  warnings.clear();
+  EXPECT_EQ(settingsFromJson({{"join_address", "friend.example"}}, warnings).join_address,
+            "friend.example");
+  EXPECT_EQ(warnings, "");
 }
 
 TEST_F(SettingsFiles, AMissingFileGivesTheDefaults) {

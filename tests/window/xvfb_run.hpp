@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -28,7 +29,10 @@ inline bool haveXvfbRun() {
 /// which does not fail the run.
 inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigned height,
                                 const std::string& env = "") {
-  const std::string err_path = "/tmp/nineball-xvfb-err-" + std::to_string(getpid());
+  // Runs at once from one test (two windows playing each other) keep their own files.
+  static std::atomic<int> runs{0};
+  const std::string err_path =
+      "/tmp/nineball-xvfb-err-" + std::to_string(getpid()) + "-" + std::to_string(runs++);
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const std::string cmd =
       env + " LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" xvfb-run -a -n " +

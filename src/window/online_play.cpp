@@ -1,0 +1,667 @@
+#include "window/online_play.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <type_traits>
+
+#include "common/log.hpp"
+#include "net/handshake.hpp"
+#include "render/cue_stick_shape.hpp"
+
+namespace nineball::window {
+namespace {
+
+// How long a goodbye may take to go out before the window closes.
+constexpr double kByeFlush = 0.5;
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+AimPose poseOf(const net::Aim& a) {
+  return {a.heading_rad, a.speed, a.tip, a.elevation_rad, a.cue};
+}
+
+std::string addressText(const net::Address& a) {
+  return a.host + ":" + std::to_string(a.port);
+}
+
+}  // namespace
+
+std::string clockText(double seconds) {
+  const int s = std::max(0, static_cast<int>(seconds + 0.999));
+  char text[16];
+  std::snprintf(text, sizeof text, "%d:%02d", s / 60, s % 60);
+  return text;
+}
+
+std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::string& why) {
+  std::unique_ptr<OnlinePlay> play(new OnlinePlay(config));
+  if (config.side == net::Side::Host) {
+    play->listener_ = net::Listener::open(config.address.port, why);
+    if (!play->listener_) return nullptr;
+    logger("online")->info("hosting on port {}: the friend joins with nineball --join {}:{}",
+                           config.address.port, net::localAddress(), config.address.port);
+  }
+  return play;
+}
+
+OnlinePlay::OnlinePlay(const OnlineConfig& config) : config_(config) {
+  peer_name_ = config_.side == net::Side::Host ? "Player 2" : "Player 1";
+  waiting_since_ = now();
+}
+
+OnlinePlay::~OnlinePlay() {
+  leave("the window closed");
+  if (session_) session_->setTurnRelay({});
+}
+
+double OnlinePlay::now() const {
+  using namespace std::chrono;
+  static const steady_clock::time_point origin = steady_clock::now();
+  return duration<double>(steady_clock::now() - origin).count();
+}
+
+void OnlinePlay::leave(const std::string& reason) {
+  if (link_ && !link_->closed()) {
+    if (!local_finished_) send(net::Bye{reason, false});
+    link_->pump(now());
+    link_->flush(kByeFlush);
+    link_->close(reason);
+  }
+  link_.reset();
+  if (stage_ != Stage::Over) {
+    stage_ = Stage::Over;
+    why_ = "You left the game.";
+  }
+}
+
+void OnlinePlay::send(const net::Message& message) {
+  if (!link_ || link_->closed()) return;
+  // Until the handshake is over only its own words go out: a hash of a turn that ended
+  // meanwhile must not come before the welcome (the rejoin exchanges the last hash anyway).
+  const bool greeting = std::holds_alternative<net::Hello>(message) ||
+                        std::holds_alternative<net::Welcome>(message) ||
+                        std::holds_alternative<net::Refuse>(message) ||
+                        std::holds_alternative<net::Bye>(message);
+  if (!greeting && (handshaking_ || stage_ != Stage::Playing)) return;
+  link_->send(net::toJson(message));
+}
+
+// --- the link ---
+
+void OnlinePlay::update(GameSession& session, double seconds) {
+  session_ = &session;
+  installRelay(session);
+  connectionStep(session);
+  finishTurns(session);
+  // A turn's messages wait while a shot rolls: the next is played once this one has ended.
+  while (!inbox_.empty() && stage_ != Stage::Over && session.phase() != Phase::Rolling) {
+    const net::Message message = std::move(inbox_.front());
+    inbox_.pop_front();
+    handle(*session_, message);
+    finishTurns(*session_);
+  }
+  if (stage_ == Stage::Playing && local_offer_ && peer_offer_ &&
+      session_->phase() == Phase::GameOver && lockstep_ && lockstep_->settled()) {
+    rematch_now_ = true;
+    session_->rematch();
+    rematch_now_ = false;
+    newRack(*session_);
+    session_->say("Rematch: rack " + std::to_string(session_->rackNumber()) + ", " +
+                  session_->seatName(session_->seatToMove()) + " breaks.");
+  }
+  if (stage_ == Stage::Playing) {
+    playScript(*session_);
+    sendAim(*session_);
+    if (config_.stall_s > 0.0 && now() - progress_at_ > config_.stall_s && !finished(*session_)) {
+      end("Nothing was played for " + clockText(config_.stall_s) + ": the game is stuck.", true);
+    }
+  }
+  showPeerAim(*session_, seconds);
+}
+
+void OnlinePlay::connectionStep(GameSession& session) {
+  if (stage_ == Stage::Over) return;
+  const double t = now();
+  if (!link_) {
+    if (config_.side == net::Side::Host) {
+      // A rejoin is welcomed between shots only: the welcome then holds every turn played.
+      if (session.phase() != Phase::Rolling) {
+        if (auto socket = listener_->accept()) linkUp(std::move(socket));
+      }
+    } else {
+      joinerConnect();
+    }
+  }
+  if (!link_) {
+    if (stage_ == Stage::Lost && t - lost_at_ > config_.rejoin_s) {
+      end(peer_name_ + " did not come back within " + clockText(config_.rejoin_s) +
+              ": the game is over.",
+          true);
+    } else if (stage_ == Stage::Waiting && config_.wait_s > 0.0 &&
+               t - waiting_since_ > config_.wait_s) {
+      end(config_.side == net::Side::Host
+              ? "Nobody joined within " + clockText(config_.wait_s) + "."
+              : "No host answered at " + addressText(config_.address) + " within " +
+                    clockText(config_.wait_s) + (why_.empty() ? "" : " (" + why_ + ")") + ".",
+          true);
+    }
+    return;
+  }
+  for (const nlohmann::json& j : link_->pump(t)) {
+    std::string why;
+    const std::optional<net::Message> message = net::readMessage(j, why);
+    if (!message) {
+      protocolError(peer_name_ + " sent a message this game refuses: " + why);
+      return;
+    }
+    inbox_.push_back(*message);
+  }
+  if (link_->closed()) linkLost(link_->reason());
+}
+
+void OnlinePlay::joinerConnect() {
+  if (connecting_.valid()) {
+    if (connecting_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    ConnectAttempt attempt = connecting_.get();
+    if (attempt.socket) {
+      linkUp(std::move(attempt.socket));
+    } else {
+      why_ = attempt.why;
+      next_attempt_ = now() + config_.retry_s;
+    }
+    return;
+  }
+  if (now() < next_attempt_) return;
+  const net::Address address = config_.address;
+  const double timeout = config_.connect_s;
+  // connectTo blocks up to its timeout: on a worker, so that frames keep drawing.
+  connecting_ = std::async(std::launch::async, [address, timeout] {
+    ConnectAttempt a;
+    a.socket = net::connectTo(address, timeout, a.why);
+    return a;
+  });
+}
+
+void OnlinePlay::linkUp(std::unique_ptr<sf::TcpSocket> socket) {
+  link_ = std::make_unique<net::Connection>(std::move(socket), now(), config_.limits);
+  logger("online")->info("linked with {}", link_->remote());
+  if (stage_ != Stage::Lost) stage_ = Stage::Handshake;
+  handshaking_ = true;
+  if (config_.side == net::Side::Joiner) send(net::helloFrom(config_.name));
+}
+
+void OnlinePlay::linkLost(const std::string& reason) {
+  logger("online")->warn("link lost: {}", reason);
+  link_.reset();
+  handshaking_ = false;
+  why_ = reason;
+  if (!lockstep_) {
+    // Lost before the rack began: wait (or try) again from the start.
+    if (stage_ != Stage::Lost) stage_ = Stage::Waiting;
+    return;
+  }
+  if (stage_ != Stage::Lost) {
+    stage_ = Stage::Lost;
+    lost_at_ = now();
+  }
+}
+
+void OnlinePlay::end(const std::string& reason, bool failure) {
+  if (stage_ == Stage::Over) return;
+  stage_ = Stage::Over;
+  why_ = reason;
+  failed_ = failure;
+  if (failure) {
+    logger("online")->warn("{}", reason);
+  } else {
+    logger("online")->info("{}", reason);
+  }
+}
+
+void OnlinePlay::protocolError(const std::string& reason) {
+  if (link_) {
+    link_->close(reason);
+    link_.reset();
+  }
+  end(reason + " - the link was closed.", true);
+}
+
+// --- the messages ---
+
+void OnlinePlay::handle(GameSession& session, const net::Message& message) {
+  // What arrived before a link dropped is still the rack's (a host that finished and left).
+  const bool playing = lockstep_ && (stage_ == Stage::Playing || stage_ == Stage::Lost);
+  auto outOfPlace = [&](const char* what) {
+    protocolError(peer_name_ + " sent " + what + " at the wrong time");
+  };
+  std::visit(Overloaded{
+                 [&](const net::Hello& m) {
+                   if (config_.side != net::Side::Host || !handshaking_)
+                     return outOfPlace("a hello");
+                   onHello(session, m);
+                 },
+                 [&](const net::Welcome& m) {
+                   if (config_.side != net::Side::Joiner || !handshaking_) {
+                     return outOfPlace("a welcome");
+                   }
+                   onWelcome(session, m);
+                 },
+                 [&](const net::Refuse& m) { end("The other side refused: " + m.reason, true); },
+                 [&](const net::TurnMessage& m) {
+                   if (!playing) return outOfPlace("a turn");
+                   onTurn(session, m);
+                 },
+                 [&](const net::HashMessage& m) {
+                   if (!playing) return outOfPlace("a state hash");
+                   onHash(session, m);
+                 },
+                 [&](const net::StateMessage& m) {
+                   if (!playing) return outOfPlace("a state");
+                   onState(session, m);
+                 },
+                 [&](const net::Aim& m) {
+                   if (!playing) return outOfPlace("an aim");
+                   if (!ourMove(session) && lockstep_ && lockstep_->settled())
+                     peer_aim_.heard(poseOf(m));
+                 },
+                 [&](const net::Rematch&) {
+                   if (!playing) return outOfPlace("a rematch");
+                   onRematch(session);
+                 },
+                 [&](const net::Bye& m) {
+                   if (m.finished) {
+                     peer_finished_ = true;
+                     end(peer_name_ + " has played out the rack.", false);
+                   } else {
+                     end(peer_name_ + " left the game (" + m.reason + ").", false);
+                   }
+                 },
+             },
+             message);
+}
+
+void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
+  progress_at_ = now();
+  if (const auto refusal = net::refusalOf(hello)) {
+    logger("online")->warn("refused {}: {}", hello.name, *refusal);
+    send(net::Refuse{*refusal});
+    link_->pump(now());
+    link_->flush(kByeFlush);
+    link_.reset();
+    handshaking_ = false;
+    if (stage_ == Stage::Handshake) stage_ = Stage::Waiting;  // waiting on for the friend
+    why_ = "Refused a player: " + *refusal;
+    session.say(why_, render::Tone::Warning);
+    return;
+  }
+  handshaking_ = false;
+  peer_name_ = hello.name.empty() ? std::string("Player 2") : net::cleanName(hello.name);
+  session.setSeatName(1, peer_name_);
+  if (!lockstep_) {
+    session.setFixedSeats(true);
+    if (session.bestOf() == 0) session.setBestOf(1);  // the race needs a length: one rack
+    newRack(session);
+  }
+  stage_ = Stage::Playing;
+  send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_));
+  if (!lockstep_->turns().empty()) {
+    // A rejoin: both sides say where they stand before anything more is played.
+    lockstep_->rejoined();
+    if (const auto h = lockstep_->lastHash()) send(*h);
+    session.say(peer_name_ + " is back: the rack goes on.");
+  } else {
+    session.say(peer_name_ + " joined. " + session.seatName(session.seatToMove()) + " breaks.");
+  }
+  logger("online")->info("{} joined ({} turns so far)", peer_name_, lockstep_->turns().size());
+}
+
+void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
+  progress_at_ = now();
+  handshaking_ = false;
+  if (const auto refusal = net::refusalOf(welcome)) {
+    if (link_) link_->close(*refusal);
+    link_.reset();
+    end("Cannot play this host: " + *refusal, true);
+    return;
+  }
+  std::string why;
+  const std::optional<MatchSetup> setup = net::setupOf(welcome, why);
+  if (!setup) return protocolError("The host's match is refused: " + why);
+  peer_name_ = welcome.name.empty() ? std::string("Player 1") : net::cleanName(welcome.name);
+  std::optional<GameSession> made;
+  try {
+    made.emplace(*setup);
+    made->setFixedSeats(true);
+    made->setBestOf(welcome.race.best_of);
+    made->resumeRack(welcome.race.rack, welcome.race.racks_won[0], welcome.race.racks_won[1]);
+  } catch (const std::exception& e) {
+    return protocolError(std::string("The host's match cannot be set up here: ") + e.what());
+  }
+  GameSession& fresh = *made;
+  fresh.setSeatName(0, peer_name_);
+  fresh.setSeatName(1, config_.name);
+  // The rack so far, replayed as a saved rack is (window/rack_save.cpp replayRack): the same
+  // build plays the same turns to the same position.
+  const rules::Player own = net::seatOf(config_.side);
+  std::vector<std::uint64_t> hashes;
+  std::size_t own_turns = 0;
+  for (std::size_t i = 0; i < welcome.turns.size(); ++i) {
+    const auto input = net::parseWireTurn(welcome.turns[i], fresh.rackSetup(), why);
+    if (!input)
+      return protocolError("The host's turn " + std::to_string(i) + " is refused: " + why);
+    if (fresh.match().rack().shooter() == own) ++own_turns;
+    try {
+      fresh.playTurn(*input);
+    } catch (const std::exception& e) {
+      return protocolError("The host's turn " + std::to_string(i) +
+                           " does not replay: " + e.what());
+    }
+    hashes.push_back(snapshotHash(fresh.match().snapshot()));
+  }
+  session = std::move(fresh);
+  replaced_ = true;
+  installRelay(session);  // this side's next turn may be played in this very frame
+  lockstep_.emplace(config_.side, session.rackSetup());
+  lockstep_->adopt(welcome.turns, hashes);
+  pending_.reset();
+  local_offer_ = peer_offer_ = false;
+  peer_aim_.reset();
+  script_next_ = std::min(own_turns, config_.script.size());
+  const bool rejoin = stage_ == Stage::Lost;
+  stage_ = Stage::Playing;
+  if (const auto h = lockstep_->lastHash()) send(*h);
+  session.say(rejoin ? "Back with " + peer_name_ + ": the rack goes on."
+                     : "Playing " + peer_name_ + " online. " +
+                           session.seatName(session.seatToMove()) + " breaks.");
+  logger("online")->info("{} {}: {} turns replayed", rejoin ? "rejoined" : "joined", peer_name_,
+                         welcome.turns.size());
+}
+
+void OnlinePlay::onTurn(GameSession& session, const net::TurnMessage& message) {
+  std::string why;
+  const std::optional<net::CheckedTurn> turn = lockstep_->peerTurn(message, session.match(), why);
+  if (!turn) return protocolError(peer_name_ + " sent a turn this game refuses: " + why);
+  playing_peer_turn_ = true;
+  const std::size_t before = session.rackTurns().size();
+  try {
+    if (turn->input.kind == TurnInput::Kind::Decision) {
+      session.decide(turn->input.shoot, turn->input.replace);
+    } else {
+      session.shoot(turn->input);
+    }
+  } catch (const std::exception& e) {
+    // The rules refused it here (the turn was checked, so the tables differ): never a crash.
+    session.say(e.what(), render::Tone::Warning);
+  }
+  playing_peer_turn_ = false;
+  if (session.rackTurns().size() == before) {
+    end(peer_name_ + "'s turn " + std::to_string(message.index) + " could not be played here (" +
+            session.message() + "): out of step.",
+        true);
+    return;
+  }
+  pending_ = message.turn;
+  peer_aim_.reset();
+  peer_aiming_ = false;
+}
+
+void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
+  std::string why;
+  const std::optional<net::HashVerdict> verdict = lockstep_->peerHash(message, why);
+  if (!verdict) return protocolError(peer_name_ + " sent a hash this game refuses: " + why);
+  progress_at_ = now();
+  const std::string turn = "turn " + std::to_string(message.index + 1);
+  switch (*verdict) {
+    case net::HashVerdict::Waiting:
+    case net::HashVerdict::Agreed:
+      return;
+    case net::HashVerdict::Mismatch:
+      logger("online")->warn("the two tables differ after {}: the host's state is sent whole",
+                             turn);
+      if (config_.side == net::Side::Host) {
+        const MatchSnapshot own = session.match().snapshot();
+        send(lockstep_->healMessage(own));
+        session.restoreMatch(own);
+        session.say(
+            "The two tables differed after " + turn + ": " + peer_name_ + "'s was set to this one.",
+            render::Tone::Warning);
+      }
+      return;
+    case net::HashVerdict::Unhealed:
+      end("Out of step with " + peer_name_ + " after " + turn +
+              ": the tables still differ after the heal.",
+          true);
+      return;
+  }
+}
+
+void OnlinePlay::onState(GameSession& session, const net::StateMessage& message) {
+  std::string why;
+  const std::optional<MatchSnapshot> state = lockstep_->healState(message, session.match(), why);
+  if (!state) return protocolError(peer_name_ + " sent a state this game refuses: " + why);
+  try {
+    session.restoreMatch(*state);
+  } catch (const std::exception& e) {
+    return protocolError(peer_name_ + " sent a state that does not restore: " + e.what());
+  }
+  bool took = false;
+  send(lockstep_->healed(session.match().snapshot(), took));
+  if (!took) {
+    end("Out of step with " + peer_name_ + ": the host's state does not take here.", true);
+    return;
+  }
+  logger("online")->warn("healed: the table was set to the host's after turn {}",
+                         message.index + 1);
+  session.say("The two tables differed: this one was set to " + peer_name_ + "'s.",
+              render::Tone::Warning);
+}
+
+void OnlinePlay::onRematch(GameSession& session) {
+  peer_offer_ = true;
+  if (!local_offer_) session.say(peer_name_ + " offers a rematch: R accepts.");
+}
+
+// --- the turns ---
+
+void OnlinePlay::installRelay(GameSession& session) {
+  if (session.hasTurnRelay()) return;
+  GameSession::TurnRelay relay;
+  relay.prepare = [this](const TurnInput& turn) -> std::optional<TurnInput> {
+    if (playing_peer_turn_) return turn;
+    if (!session_ || !ourMove(*session_)) return std::nullopt;
+    net::TurnMessage message;
+    const net::CheckedTurn checked = lockstep_->localTurn(turn, HumanSeat{}, message);
+    outgoing_ = message;
+    return checked.input;
+  };
+  relay.begun = [this](const TurnInput&) {
+    if (playing_peer_turn_ || !outgoing_) return;
+    send(*outgoing_);
+    pending_ = outgoing_->turn;
+    outgoing_.reset();
+    throttle_.reset();
+  };
+  relay.rematch = [this]() {
+    if (rematch_now_) return true;
+    if (stage_ != Stage::Playing || !session_) return false;
+    if (!local_offer_) {
+      local_offer_ = true;
+      send(net::Rematch{});
+      session_->say(peer_offer_ ? "Rematch accepted."
+                                : "Rematch offered: waiting for " + peer_name_ + " to accept.");
+    }
+    return false;
+  };
+  session.setTurnRelay(std::move(relay));
+}
+
+void OnlinePlay::newRack(GameSession& session) {
+  lockstep_.emplace(config_.side, session.rackSetup());
+  pending_.reset();
+  outgoing_.reset();
+  local_offer_ = peer_offer_ = false;
+  local_finished_ = peer_finished_ = false;
+  // A script's turns are played once: a rematch goes on from the next (none: it ends there).
+  peer_aim_.reset();
+  peer_aiming_ = false;
+}
+
+void OnlinePlay::finishTurns(GameSession& session) {
+  if (!pending_ || !lockstep_ || session.phase() == Phase::Rolling) return;
+  if (session.rackTurns().size() <= lockstep_->turns().size()) return;
+  progress_at_ = now();
+  send(lockstep_->played(*pending_, session.match().snapshot()));
+  pending_.reset();
+}
+
+void OnlinePlay::playScript(GameSession& session) {
+  if (!config_.scripted || local_finished_ || pending_ || !ourMove(session)) return;
+  const Phase phase = session.phase();
+  if (phase != Phase::Aiming && phase != Phase::PushOutChoice) return;
+  if (script_next_ >= config_.script.size()) {
+    local_finished_ = true;
+    send(net::Bye{"this side's script is over", true});
+    session.say("Your script is over: the rack ends here.");
+    return;
+  }
+  const std::size_t index = script_next_++;
+  const TurnInput& turn = config_.script[index];
+  const std::size_t before = session.rackTurns().size();
+  try {
+    if (turn.kind == TurnInput::Kind::Decision) {
+      if (phase == Phase::PushOutChoice) session.decide(turn.shoot, turn.replace);
+    } else if (phase == Phase::Aiming) {
+      session.shoot(turn);
+    }
+  } catch (const std::exception& e) {
+    session.say(e.what(), render::Tone::Warning);
+  }
+  if (session.rackTurns().size() == before) {
+    const bool decision = turn.kind == TurnInput::Kind::Decision;
+    const std::string why = decision != (phase == Phase::PushOutChoice)
+                                ? (decision ? "a shot is due, not a decision"
+                                            : "a decision is due (play on or pass), not a shot")
+                                : session.message();
+    end("The script's turn " + std::to_string(index) + " was refused" +
+            (why.empty() ? std::string(".") : ": " + why),
+        true);
+    leave("this side's script turn was refused");
+  }
+}
+
+// --- the aim ---
+
+void OnlinePlay::sendAim(const GameSession& session) {
+  if (config_.scripted || !ourMove(session) || session.phase() != Phase::Aiming) return;
+  AimPose pose{session.heading(), session.speed(), session.tip(), session.elevation(),
+               std::nullopt};
+  if (session.cueInHand()) pose.cue = session.cuePosition();
+  if (!throttle_.due(pose, now())) return;
+  net::Aim aim;
+  aim.heading_rad = pose.heading_rad;
+  aim.speed = pose.speed;
+  aim.tip = pose.tip;
+  aim.elevation_rad = pose.elevation_rad;
+  aim.cue = pose.cue;
+  send(aim);
+}
+
+void OnlinePlay::showPeerAim(GameSession& session, double seconds) {
+  peer_aiming_ = false;
+  if (stage_ != Stage::Playing || !lockstep_ || ourMove(session) || !lockstep_->settled() ||
+      session.phase() != Phase::Aiming) {
+    return;
+  }
+  const std::optional<AimPose> pose = peer_aim_.advance(seconds);
+  if (!pose) return;
+  peer_aiming_ = true;
+  session.setHeading(pose->heading_rad);
+  session.setSpeed(pose->speed);
+  session.setTip(pose->tip);
+  session.setElevation(pose->elevation_rad);
+  if (pose->cue && session.cueInHand() && !session.placementProblem(*pose->cue)) {
+    session.placeCue(*pose->cue);
+  }
+  peer_power_ = session.power();
+}
+
+bool OnlinePlay::ourMove(const GameSession& session) const {
+  return stage_ == Stage::Playing && lockstep_ && !pending_ && !outgoing_ &&
+         lockstep_->localToMove(session.match());
+}
+
+net::Race OnlinePlay::race(const GameSession& session) const {
+  net::Race r;
+  r.best_of = std::clamp(session.bestOf(), 1, 99);
+  r.rack = std::clamp(session.rackNumber() - 1, 0, 200);
+  r.racks_won = {std::clamp(session.racksWon(0), 0, 99), std::clamp(session.racksWon(1), 0, 99)};
+  return r;
+}
+
+// --- what the window shows ---
+
+bool OnlinePlay::controls(const GameSession& session) const {
+  const Phase phase = session.phase();
+  if (phase != Phase::Aiming && phase != Phase::PushOutChoice) return false;
+  return config_.scripted || !ourMove(session);
+}
+
+bool OnlinePlay::showsCue() const {
+  return peer_aiming_;
+}
+
+double OnlinePlay::pull() const {
+  return std::clamp(peer_power_, 0.0, 1.0) * render::CueStickShape::kMaxPull;
+}
+
+std::string OnlinePlay::banner(const GameSession& session) const {
+  const double t = now();
+  switch (stage_) {
+    case Stage::Waiting:
+      if (config_.side == net::Side::Host) {
+        return "Waiting for a friend to join: nineball --join " + net::localAddress() + ":" +
+               std::to_string(config_.address.port) + "  (Esc cancels)";
+      }
+      return "Connecting to " + addressText(config_.address) + "..." +
+             (why_.empty() ? std::string() : " (" + why_ + ")");
+    case Stage::Handshake:
+      return "Connected: greeting the other side...";
+    case Stage::Lost: {
+      const std::string left = clockText(config_.rejoin_s - (t - lost_at_));
+      return config_.side == net::Side::Host
+                 ? "Connection lost - waiting for " + peer_name_ + " to rejoin (" + left + ")"
+                 : "Connection lost - reconnecting to " + peer_name_ + " (" + left + ")";
+    }
+    case Stage::Over:
+      return why_ + " (Esc leaves)";
+    case Stage::Playing:
+      break;
+  }
+  (void)session;
+  return "";
+}
+
+std::string OnlinePlay::status(const GameSession& session) const {
+  if (stage_ != Stage::Playing) return banner(session);
+  if (pending_ || (lockstep_ && !lockstep_->settled())) {
+    return "Waiting for " + peer_name_ + "'s table to agree...";
+  }
+  if (local_finished_) return "Your script is over: the rack ends here.";
+  if (ourMove(session)) return "Your script plays your turn...";
+  if (session.phase() == Phase::PushOutChoice) return peer_name_ + " decides...";
+  return peer_aiming_ ? peer_name_ + " is aiming..." : peer_name_ + "'s turn...";
+}
+
+bool OnlinePlay::finished(const GameSession& session) const {
+  if (session.phase() == Phase::Rolling || pending_ || !inbox_.empty()) return false;
+  if (local_finished_ || peer_finished_) return true;
+  return lockstep_ && lockstep_->settled() && session.match().rack().over();
+}
+
+}  // namespace nineball::window
