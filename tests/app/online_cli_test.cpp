@@ -10,22 +10,18 @@
 
 #include "app/cli_runner.hpp"
 #include "net/connection.hpp"
+#include "net/free_port.hpp"
 #include "net/protocol.hpp"
 
 namespace {
+
+using nineball::testing::freePort;
 
 using nineball::testing::CliOutcome;
 using nineball::testing::runNineball;
 using nineball::testing::shellQuoted;
 using nineball::testing::TempFile;
 using nlohmann::json;
-
-// A port nobody listens on now (the system's pick).
-unsigned short freePort() {
-  sf::TcpListener l;
-  EXPECT_EQ(l.listen(sf::Socket::AnyPort), sf::Socket::Done);
-  return l.getLocalPort();
-}
 
 struct Pair {
   CliOutcome host;

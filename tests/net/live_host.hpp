@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <SFML/Network/TcpListener.hpp>
 #include <chrono>
 #include <future>
 #include <memory>
@@ -13,21 +12,16 @@
 #include <thread>
 
 #include "io/match_json.hpp"
+#include "net/free_port.hpp"
 #include "net/online_rack.hpp"
 
 namespace nineball::net_test {
 
+using nineball::testing::freePort;
+
 using net::OnlineRackOptions;
 using net::OnlineRackResult;
 using net::playOnlineRack;
-
-inline unsigned short freePort() {
-  sf::TcpListener l;
-  if (l.listen(sf::Socket::AnyPort) != sf::Socket::Done) return 0;
-  const unsigned short port = l.getLocalPort();
-  l.close();
-  return port;
-}
 
 inline io::MatchScript scriptOf(const std::string& text) {
   auto parsed = io::parseMatchScript(text);

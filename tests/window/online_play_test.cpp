@@ -10,21 +10,16 @@
 #include <SFML/System/Sleep.hpp>
 #include <functional>
 
+#include "net/free_port.hpp"
 #include "net/handshake.hpp"
 #include "window/game_window.hpp"
 
 namespace nineball::window {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using nineball::testing::freePort;
 
-unsigned short freePort() {
-  sf::TcpListener probe;
-  if (probe.listen(sf::Socket::AnyPort, sf::IpAddress::LocalHost) != sf::Socket::Done) return 0;
-  const unsigned short port = probe.getLocalPort();
-  probe.close();
-  return port;
-}
+constexpr double kFrame = 1.0 / 60.0;
 
 double clockNow() {
   static sf::Clock clock;

@@ -15,10 +15,13 @@
 #include <string>
 #include <thread>
 
+#include "net/free_port.hpp"
 #include "nineball/colours.hpp"
 #include "xvfb_run.hpp"
 
 namespace {
+
+using nineball::testing::freePort;
 
 constexpr unsigned kWidth = 1280;
 constexpr unsigned kHeight = 800;
@@ -36,15 +39,6 @@ std::string tempPath(const std::string& name) {
 
 void write(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
-}
-
-// A port nobody listens on now: the system's pick, let go again.
-unsigned short freePort() {
-  sf::TcpListener probe;
-  if (probe.listen(sf::Socket::AnyPort, sf::IpAddress::LocalHost) != sf::Socket::Done) return 0;
-  const unsigned short port = probe.getLocalPort();
-  probe.close();
-  return port;
 }
 
 // Pixels of the table region whose colour differs between the two pictures.
