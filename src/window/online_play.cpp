@@ -527,7 +527,6 @@ void OnlinePlay::playScript(GameSession& session) {
   if (script_next_ >= config_.script.size()) {
     local_finished_ = true;
     send(net::Bye{"this side's script is over", true});
-    session.say("Your script is over: the rack ends here.");
     return;
   }
   const std::size_t index = script_next_++;
