@@ -22,7 +22,7 @@ constexpr std::size_t kMaxTurns = kMostTurns;
 // How long the host waits for a connected peer's hello, and the joiner for the welcome.
 constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
-constexpr double kRetrySeconds = 0.5;
+constexpr double kRetrySeconds = 0.25;
 // Newcomers heard at once while a game is on; more are refused straight away.
 constexpr std::size_t kMostNewcomers = 4;
 
