@@ -61,6 +61,10 @@ class OnlineRack {
     if (match_) describeRack();
     if (link_ && !link_->closed()) {
       link_->flush(1.0);
+      // The side that closes first holds its port for a minute (TCP's TIME_WAIT), and SFML's
+      // listener cannot reuse a held port: the host lets the joiner close first, so it can
+      // host again at once.
+      if (o_.side == Side::Host) awaitClose(1.0);
       link_->close("done");
     }
     return result_;
@@ -68,6 +72,14 @@ class OnlineRack {
 
  private:
   // --- the link ---
+
+  void awaitClose(double limit) {
+    const double deadline = seconds() + limit;
+    while (!link_->closed() && seconds() < deadline) {
+      link_->pump(seconds());
+      nap();
+    }
+  }
 
   [[noreturn]] void end(Outcome outcome, const std::string& why) {
     result_.outcome = outcome;
