@@ -23,9 +23,11 @@ struct ComputerSeat {
   bool operator!=(const ComputerSeat& o) const { return level != o.level; }
 };
 
-/// Who plays one side of the table. Another kind of player (one at another computer over
-/// the network, say) is one more alternative here; the helpers below visit every alternative,
-/// so the compiler points at each of them that must learn it.
+/// Who plays one side of the table. Another kind of player is one more alternative here; the
+/// helpers below visit every alternative, so the compiler points at each of them that must
+/// learn it. A player at another computer is not one: online, each side's own seat is a person
+/// or the computer here, and the other seat's turns come over the link (src/net; the window's
+/// OnlinePlay), which carries each turn's Seat by name.
 using Seat = std::variant<HumanSeat, ComputerSeat>;
 
 /// True when the computer plays the seat.
