@@ -151,6 +151,54 @@ TEST_F(OnlineHost, WelcomesAFriendAndPlaysTheRackInStepWithIt) {
   EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Playing);
 }
 
+// The friend's table differs after the break (a ball moved a micrometre): the host sends its
+// state whole, restores it itself, and once the friend has taken it the game goes on in step.
+TEST_F(OnlineHost, ATableOutOfStepIsHealedWithTheHostsState) {
+  const net::Welcome welcome = join();
+  std::string why;
+  const auto setup = net::setupOf(welcome, why);
+  ASSERT_TRUE(setup) << why;
+  Match match(*setup);
+  net::Lockstep lockstep(net::Side::Joiner, *setup);
+  std::optional<net::TurnMessage> sent;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (sent = peer_.take<net::TurnMessage>()).has_value(); }));
+  const auto checked = lockstep.peerTurn(*sent, match, why);
+  ASSERT_TRUE(checked) << why;
+  match.play(checked->input);
+  MatchSnapshot nudged = match.snapshot();
+  nudged.balls.front().pos.x += 1e-6;
+  match.restore(nudged);
+  peer_.send(lockstep.played(sent->turn, match.snapshot()));
+  std::optional<net::HashMessage> hash;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (hash = peer_.take<net::HashMessage>()).has_value(); }));
+  ASSERT_EQ(lockstep.peerHash(*hash, why), net::HashVerdict::Mismatch) << why;
+  std::optional<net::StateMessage> state;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (state = peer_.take<net::StateMessage>()).has_value(); }));
+  const auto healed = lockstep.healState(*state, match, why);
+  ASSERT_TRUE(healed) << why;
+  match.restore(*healed);
+  bool took = false;
+  peer_.send(lockstep.healed(*healed, took));
+  EXPECT_TRUE(took);
+  EXPECT_EQ(snapshotHash(session_.match().snapshot()), snapshotHash(match.snapshot()));
+  // The host's second shot comes once the heal is agreed, and both tables agree after it.
+  std::optional<net::TurnMessage> next;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (next = peer_.take<net::TurnMessage>()).has_value(); }));
+  const auto second = lockstep.peerTurn(*next, match, why);
+  ASSERT_TRUE(second) << why;
+  match.play(second->input);
+  peer_.send(lockstep.played(next->turn, match.snapshot()));
+  std::optional<net::HashMessage> after;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (after = peer_.take<net::HashMessage>()).has_value(); }));
+  EXPECT_EQ(lockstep.peerHash(*after, why), net::HashVerdict::Agreed) << why;
+  EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Playing);
+}
+
 TEST_F(OnlineHost, ATurnOutOfTurnEndsTheGameWithItsReason) {
   join();
   // Player A breaks: a turn from B now is out of turn.
