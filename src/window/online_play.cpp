@@ -196,7 +196,7 @@ void OnlinePlay::linkUp(std::unique_ptr<sf::TcpSocket> socket) {
   if (config_.side == net::Side::Joiner) send(net::helloFrom(config_.name));
 }
 
-void OnlinePlay::linkLost(const std::string& reason) {
+void OnlinePlay::linkLost(std::string reason) {
   logger("online")->warn("link lost: {}", reason);
   link_.reset();
   handshaking_ = false;

@@ -103,7 +103,8 @@ class OnlinePlay : public RemoteControl {
   void connectionStep(GameSession& session);
   void joinerConnect();
   void linkUp(std::unique_ptr<sf::TcpSocket> socket);
-  void linkLost(const std::string& reason);
+  // By value: the reason is often the dropped link's own, which goes with it.
+  void linkLost(std::string reason);
   void end(const std::string& reason, bool failure);
   void protocolError(const std::string& reason);
   void send(const net::Message& message);
