@@ -112,6 +112,38 @@ class OnlineHost : public ::testing::Test {
     return welcome.value_or(net::Welcome{});
   }
 
+  // The host's next message of type T, or nothing when none came in time.
+  template <class T>
+  std::optional<T> await() {
+    std::optional<T> got;
+    runUntil(*play_, session_, peer_, [&] { return (got = peer_.take<T>()).has_value(); });
+    return got;
+  }
+
+  // The friend plays the host's next turn on its own table (a ball moved `nudge` m after it),
+  // answers with its hash, and judges the host's: the verdict, or nothing (with a failure).
+  std::optional<net::HashVerdict> friendPlaysHostsTurn(Match& match, net::Lockstep& lockstep,
+                                                       double nudge = 0.0) {
+    std::string why;
+    const auto sent = await<net::TurnMessage>();
+    const auto checked = sent ? lockstep.peerTurn(*sent, match, why) : std::nullopt;
+    if (!checked) {
+      ADD_FAILURE() << "no turn from the host, or a refused one: " << why;
+      return std::nullopt;
+    }
+    match.play(checked->input);
+    if (nudge != 0.0) {
+      MatchSnapshot nudged = match.snapshot();
+      nudged.balls.front().pos.x += nudge;
+      match.restore(nudged);
+    }
+    peer_.send(lockstep.played(sent->turn, match.snapshot()));
+    const auto hash = await<net::HashMessage>();
+    const auto verdict = hash ? lockstep.peerHash(*hash, why) : std::nullopt;
+    if (!verdict) ADD_FAILURE() << "no hash from the host, or a refused one: " << why;
+    return verdict;
+  }
+
   unsigned short port_ = 0;
   GameSession session_{nineBall()};
   std::unique_ptr<OnlinePlay> play_;
@@ -131,19 +163,7 @@ TEST_F(OnlineHost, WelcomesAFriendAndPlaysTheRackInStepWithIt) {
   net::Lockstep lockstep(net::Side::Joiner, *setup);
   // The host's script: the break, then (the 6 down) its second shot, a foul.
   for (int turn = 0; turn < 2; ++turn) {
-    std::optional<net::TurnMessage> sent;
-    ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                         [&] { return (sent = peer_.take<net::TurnMessage>()).has_value(); }));
-    const auto checked = lockstep.peerTurn(*sent, match, why);
-    ASSERT_TRUE(checked) << why;
-    match.play(checked->input);
-    peer_.send(lockstep.played(sent->turn, match.snapshot()));
-    std::optional<net::HashMessage> hash;
-    ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                         [&] { return (hash = peer_.take<net::HashMessage>()).has_value(); }));
-    auto verdict = lockstep.peerHash(*hash, why);
-    ASSERT_TRUE(verdict) << why;
-    EXPECT_EQ(*verdict, net::HashVerdict::Agreed) << "turn " << turn;
+    EXPECT_EQ(friendPlaysHostsTurn(match, lockstep), net::HashVerdict::Agreed) << "turn " << turn;
   }
   // Now it is the friend's move: the host's input is blocked, and its table is the friend's.
   EXPECT_TRUE(play_->controls(session_));
@@ -160,23 +180,9 @@ TEST_F(OnlineHost, ATableOutOfStepIsHealedWithTheHostsState) {
   ASSERT_TRUE(setup) << why;
   Match match(*setup);
   net::Lockstep lockstep(net::Side::Joiner, *setup);
-  std::optional<net::TurnMessage> sent;
-  ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                       [&] { return (sent = peer_.take<net::TurnMessage>()).has_value(); }));
-  const auto checked = lockstep.peerTurn(*sent, match, why);
-  ASSERT_TRUE(checked) << why;
-  match.play(checked->input);
-  MatchSnapshot nudged = match.snapshot();
-  nudged.balls.front().pos.x += 1e-6;
-  match.restore(nudged);
-  peer_.send(lockstep.played(sent->turn, match.snapshot()));
-  std::optional<net::HashMessage> hash;
-  ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                       [&] { return (hash = peer_.take<net::HashMessage>()).has_value(); }));
-  ASSERT_EQ(lockstep.peerHash(*hash, why), net::HashVerdict::Mismatch) << why;
-  std::optional<net::StateMessage> state;
-  ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                       [&] { return (state = peer_.take<net::StateMessage>()).has_value(); }));
+  ASSERT_EQ(friendPlaysHostsTurn(match, lockstep, 1e-6), net::HashVerdict::Mismatch);
+  const auto state = await<net::StateMessage>();
+  ASSERT_TRUE(state);
   const auto healed = lockstep.healState(*state, match, why);
   ASSERT_TRUE(healed) << why;
   match.restore(*healed);
@@ -185,17 +191,7 @@ TEST_F(OnlineHost, ATableOutOfStepIsHealedWithTheHostsState) {
   EXPECT_TRUE(took);
   EXPECT_EQ(snapshotHash(session_.match().snapshot()), snapshotHash(match.snapshot()));
   // The host's second shot comes once the heal is agreed, and both tables agree after it.
-  std::optional<net::TurnMessage> next;
-  ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                       [&] { return (next = peer_.take<net::TurnMessage>()).has_value(); }));
-  const auto second = lockstep.peerTurn(*next, match, why);
-  ASSERT_TRUE(second) << why;
-  match.play(second->input);
-  peer_.send(lockstep.played(next->turn, match.snapshot()));
-  std::optional<net::HashMessage> after;
-  ASSERT_TRUE(runUntil(*play_, session_, peer_,
-                       [&] { return (after = peer_.take<net::HashMessage>()).has_value(); }));
-  EXPECT_EQ(lockstep.peerHash(*after, why), net::HashVerdict::Agreed) << why;
+  EXPECT_EQ(friendPlaysHostsTurn(match, lockstep), net::HashVerdict::Agreed);
   EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Playing);
 }
 
