@@ -84,7 +84,8 @@ constexpr const char* kJoinScript =
          {"heading_deg": 200, "speed": 2.5}, {"heading_deg": -30, "speed": 3}]})";
 
 TEST(OnlineWindow, TwoWindowsPlayOneRackAndShowTheSameTable) {
-  if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run not installed";
+  ASSERT_TRUE(haveXvfbRun())
+      << "xvfb-run not found: the online window tests need a virtual display";
   const unsigned short port = freePort();
   ASSERT_NE(port, 0);
   const std::string host_script = tempPath("host.json"), join_script = tempPath("join.json");
@@ -136,7 +137,8 @@ TEST(OnlineWindow, TwoWindowsPlayOneRackAndShowTheSameTable) {
 // The first joiner is killed in the middle of the rack; a second one (the same player started
 // again) rejoins, replays the turns so far from the host's welcome, and the rack goes on.
 TEST(OnlineWindow, AJoinerKilledMidRackRejoinsAndTheRackEndsInStep) {
-  if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run not installed";
+  ASSERT_TRUE(haveXvfbRun())
+      << "xvfb-run not found: the online window tests need a virtual display";
   const unsigned short port = freePort();
   ASSERT_NE(port, 0);
   const std::string host_script = tempPath("rhost.json"), join_script = tempPath("rjoin.json");
@@ -179,7 +181,8 @@ TEST(OnlineWindow, AJoinerKilledMidRackRejoinsAndTheRackEndsInStep) {
 }
 
 TEST(OnlineWindow, AJoinerNobodyAnswersFailsWithAMessage) {
-  if (!haveXvfbRun()) GTEST_SKIP() << "xvfb-run not installed";
+  ASSERT_TRUE(haveXvfbRun())
+      << "xvfb-run not found: the online window tests need a virtual display";
   const unsigned short port = freePort();
   ASSERT_NE(port, 0);
   const std::string script = tempPath("lonely.json"), png = tempPath("lonely.png");
