@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
@@ -10,6 +11,24 @@ namespace {
 
 // Beyond this a tracked position is no tracking noise but another table (m).
 constexpr double kOffTable = 0.1;
+
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// No cue drives a ball faster than fit::kMaxSpeed: samples further apart than that in their
+// time are a tracker's (or its clock's) mistake, and a first guess of the strike from them
+// would be nonsense. A time recorded twice (a coarse clock) defines no speed.
+std::string speedFault(const RecordedPath& b, const std::string& at, std::size_t i) {
+  const double dt = b.t[i] - b.t[i - 1];
+  if (!(dt > 0.0)) return {};
+  const double speed = std::hypot(b.x[i] - b.x[i - 1], b.y[i] - b.y[i - 1]) / dt;
+  if (speed <= fit::kMaxSpeed) return {};
+  return at + ": samples " + std::to_string(i - 1) + "-" + std::to_string(i) + " imply " +
+         shortNumber(speed) + " m/s";
+}
 
 std::string pathFault(const RecordedPath& b, const std::string& at) {
   if (b.t.size() != b.x.size() || b.t.size() != b.y.size()) {
@@ -21,9 +40,13 @@ std::string pathFault(const RecordedPath& b, const std::string& at) {
     if (!std::isfinite(b.t[i]) || !std::isfinite(b.x[i]) || !std::isfinite(b.y[i])) {
       return at + ": sample " + std::to_string(i) + " is not a finite number";
     }
-    if (i > 0 && !(b.t[i] > b.t[i - 1])) {
-      return at + ".t: not increasing at sample " + std::to_string(i);
-    }
+    if (i == 0) continue;
+    // A time may repeat (real trackers have coarse clocks), never go back.
+    if (b.t[i] < b.t[i - 1]) return at + ".t: decreasing at sample " + std::to_string(i);
+    if (std::string why = speedFault(b, at, i); !why.empty()) return why;
+  }
+  if (!(b.t.back() > b.t.front())) {
+    return at + ".t: every sample at one time (needs two different times at least)";
   }
   return {};
 }
@@ -134,8 +157,24 @@ Line lineThrough(const RecordedPath& b, std::size_t from, std::size_t to) {
     stt += dt * dt;
     stp += (at(b, i) - l.a) * dt;
   }
-  if (stt > 0.0) l.v = stp * (1.0 / stt);
+  // Samples all but at one instant give no velocity (1 / stt overflows).
+  const Vec2 v = stp * (1.0 / stt);
+  if (stt > 0.0 && std::isfinite(v.x) && std::isfinite(v.y)) l.v = v;
   return l;
+}
+
+// The last sample that has a later one at a later time (times may repeat).
+std::size_t lastStepFrom(const RecordedPath& b) {
+  std::size_t i = b.t.size() - 2;
+  while (i > 0 && !(b.t[i] < b.t.back())) --i;
+  return i;
+}
+
+// The first sample after `i` whose time is later than its time.
+std::size_t laterSample(const RecordedPath& b, std::size_t i) {
+  std::size_t next = i + 1;
+  while (next + 1 < b.t.size() && !(b.t[next] > b.t[i])) ++next;
+  return next;
 }
 
 bool nearCushion(Vec2 p, const TableDef& table, double radius) {
@@ -193,7 +232,7 @@ RecordedShot readRecording(const Recording& r) {
   const RecordedPath& c = r.balls[cue];
   const Onset o = onsets[cue];
   const std::size_t n = c.t.size();
-  const std::size_t start = std::min(o.index, n - 2);
+  const std::size_t start = std::min(o.index, lastStepFrom(c));
   s.cue_onset = c.t[start];
   // The early line ends before a cushion: a ball struck near one meets it within a frame or two.
   std::size_t stop = start + 2;
@@ -203,10 +242,12 @@ RecordedShot readRecording(const Recording& r) {
   }
   const Line line = lineThrough(c, start, stop);
   // Its first step in motion bounds the speed from below: a line through a turn is slower.
-  const double first_step = length(at(c, start + 1) - at(c, start)) / (c.t[start + 1] - c.t[start]);
-  const double speed = std::max({length(line.v), first_step, 0.05});
+  // A coarse clock repeats times: the first step runs to the next sample at a later time.
+  const std::size_t next = laterSample(c, start);
+  const double sample = c.t[next] - c.t[start];
+  const double first_step = length(at(c, next) - at(c, start)) / sample;
+  const double speed = std::clamp(std::max(length(line.v), first_step), kMinSpeed, kMaxSpeed);
   const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
-  const double sample = c.t[start + 1] - c.t[start];
   if (o.from_start) {
     // Struck half a frame before the first sample, as far as the samples can tell.
     s.cue_moving_at_start = true;
@@ -223,7 +264,7 @@ RecordedShot readRecording(const Recording& r) {
   s.heading = std::atan2(dir.y, dir.x);
   const PhysicsParams& p = r.physics;
   const double mu = p.spin() ? p.sliding_friction : p.rolling_friction;
-  s.speed = speed + mu * p.gravity * std::max(0.0, line.tm - s.strike);
+  s.speed = std::min(speed + mu * p.gravity * std::max(0.0, line.tm - s.strike), kMaxSpeed);
 
   s.first_event = s.end;
   for (std::size_t k = 1; k < s.order.size(); ++k) {
