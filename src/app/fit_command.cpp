@@ -140,6 +140,35 @@ class StopOnSignals {
   std::vector<void (*)(int)> previous_;
 };
 
+// Memory held back for the way out of an allocation that fails: given back at the first
+// failure, so that what unwinds from it (a destructor that allocates among it) still finds
+// some and the failure is reported, not an abort; the next failure throws std::bad_alloc.
+class MemoryReserve {
+ public:
+  MemoryReserve() {
+    held_.store(::operator new(kBytes, std::nothrow));
+    previous_ = std::set_new_handler(&giveBack);
+  }
+  ~MemoryReserve() {
+    std::set_new_handler(previous_);
+    ::operator delete(held_.exchange(nullptr));
+  }
+  MemoryReserve(const MemoryReserve&) = delete;
+  MemoryReserve& operator=(const MemoryReserve&) = delete;
+
+ private:
+  static constexpr std::size_t kBytes = 16u << 20;
+
+  static void giveBack() {
+    void* held = held_.exchange(nullptr);
+    if (!held) throw std::bad_alloc();
+    ::operator delete(held);
+  }
+
+  static inline std::atomic<void*> held_{nullptr};
+  std::new_handler previous_ = nullptr;
+};
+
 std::string prefixOf(const std::string& command, const std::string& path) {
   return "nineball " + command + ": " + shownPath(path) + ": ";
 }
@@ -225,6 +254,7 @@ int calibrateAndPrint(const CalibrateCommandOptions& options, const StopOnSignal
 int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
            std::ostream& err) {
   const StopOnSignals signals;
+  const MemoryReserve reserve;
   try {
     return fitAndPrint(options, signals, in, out, err);
   } catch (const std::bad_alloc&) {
@@ -236,6 +266,7 @@ int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out
 int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
                  std::ostream& err) {
   const StopOnSignals signals;
+  const MemoryReserve reserve;
   try {
     return calibrateAndPrint(options, signals, in, out, err);
   } catch (const std::bad_alloc&) {

@@ -83,6 +83,20 @@ ordered_json tableToJson(const TableDef& t) {
   return j;
 }
 
+// A parsed document, freed without needing memory (dismantle).
+class Document {
+ public:
+  explicit Document(json v) : v_(std::move(v)) {}
+  ~Document() { dismantle(v_); }
+  Document(const Document&) = delete;
+  Document& operator=(const Document&) = delete;
+
+  const json& operator*() const { return v_; }
+
+ private:
+  json v_;
+};
+
 ShotInput shotFrom(const json& v, std::string where) {
   ShotInput in;
   in.where = std::move(where);
@@ -130,7 +144,8 @@ std::vector<ShotInput> linesOf(std::string_view text) {
   forEachLine(text, [&](int number, std::string_view line) {
     std::string where = "line " + std::to_string(number);
     try {
-      shots.push_back(shotFrom(readJson(line), where));
+      const Document doc(readJson(line));
+      shots.push_back(shotFrom(*doc, where));
     } catch (const ParseError& e) {
       ShotInput unreadable;
       unreadable.where = std::move(where);
@@ -185,15 +200,15 @@ std::string ShotInput::namedRefusal() const {
 }
 
 std::variant<std::vector<ShotInput>, ParseError> readRecordings(std::string_view text) {
-  json doc;
+  std::optional<Document> doc;
   try {
-    doc = readJson(text);
+    doc.emplace(readJson(text));
   } catch (const ParseError& e) {
     // One document that does not parse whole, unless it is one shot a line.
     if (!firstLineIsAnObject(text)) return e;
     return linesOf(text);
   }
-  return shotsOf(doc);
+  return shotsOf(**doc);
 }
 
 std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text) {

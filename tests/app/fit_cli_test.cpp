@@ -9,6 +9,7 @@
 
 #include "app/cli_runner.hpp"
 #include "app/fit_command.hpp"
+#include "common/limits.hpp"
 #include "fit/carom_shot.hpp"
 #include "io/recording_json.hpp"
 #include "io/scene_json.hpp"
@@ -275,6 +276,35 @@ TEST(FitCli, StopsAtSigtermAndExits130) {
   EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_NE(r.err.find("interrupted: 0 of 2 shots printed"), std::string::npos) << r.err;
   EXPECT_LT(seconds, 10.0);
+}
+
+// A ball at rest sampled every millisecond for 1000 s, the most samples a ball may have:
+// 12 MB of JSON, over 100 MB parsed.
+std::string longestRecording() {
+  std::string t, x;
+  for (std::size_t i = 0; i < limits::kMaxRecordedSamples; ++i) {
+    t += (i ? "," : "") + std::to_string(i) + "e-3";
+    x += i ? ",0" : "0";
+  }
+  return R"({"balls": {"white": {"t": [)" + t + "], \"x\": [" + x + "], \"y\": [" + x + "]}}}";
+}
+
+TEST(FitCli, SaysWhenMemoryRunsOutInsteadOfAborting) {
+#ifdef NINEBALL_SANITIZED
+  GTEST_SKIP() << "the sanitizers' shadow memory does not fit under an address-space limit";
+#endif
+  TempFile file(longestRecording());
+  // Address-space limits (KiB) above what nineball needs to start, below what the file needs.
+  for (int limit : {30000, 60000}) {
+    for (const std::string command : {"fit", "calibrate"}) {
+      const std::string params = command == "calibrate" ? " --params rolling_friction" : "";
+      const CliOutcome r =
+          runNineball(command + " " + shellQuoted(file.path()) + params + " --threads 2",
+                      "/dev/null", "ulimit -v " + std::to_string(limit) + "; ");
+      EXPECT_EQ(r.status, 1) << limit << " KiB: " << r.err;
+      EXPECT_EQ(r.err, "nineball " + command + ": out of memory\n") << limit << " KiB";
+    }
+  }
 }
 
 TEST(CalibrateCli, RefusesTheRunNamingARefusedShot) {
