@@ -4,6 +4,7 @@
 #include <chrono>
 #include <csignal>
 #include <istream>
+#include <mutex>
 #include <new>
 #include <ostream>
 #include <sstream>
@@ -202,8 +203,11 @@ int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, 
   o.seed = options.seed;
   o.threads = options.threads;
   o.cancel = signals.flag();
+  // Progress and refusals come from different threads: one line on stderr at a time.
+  std::mutex stderr_lines;
   Progress progress(err, "nineball fit: ");
   o.progress = [&](std::size_t done, std::size_t total) {
+    const std::lock_guard<std::mutex> lock(stderr_lines);
     if (total > 1) progress(done, total);
   };
   std::size_t printed = 0;
@@ -211,7 +215,9 @@ int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, 
   const auto run = fitJsonLines(*text, o, [&](const FitLine& line) {
     out << line.text << '\n' << std::flush;
     ++printed;
-    if (!line.refusal.empty()) err << prefix << line.refusal << '\n' << std::flush;
+    if (line.refusal.empty()) return;
+    const std::lock_guard<std::mutex> lock(stderr_lines);
+    err << prefix << line.refusal << '\n' << std::flush;
   });
   if (const auto* refused = std::get_if<SceneRefusal>(&run)) {
     err << prefix << refused->message << '\n';

@@ -6,6 +6,8 @@
 #include <limits>
 #include <set>
 
+#include "common/limits.hpp"
+
 namespace nineball {
 namespace {
 
@@ -51,6 +53,21 @@ std::string pathFault(const RecordedPath& b, const std::string& at) {
   return {};
 }
 
+// A fit simulates from the strike to the last sample: a recording longer than the longest run
+// is no shot (and its runs would trace for ages).
+std::string spanFault(const Recording& r) {
+  double first = std::numeric_limits<double>::infinity();
+  for (const RecordedPath& b : r.balls) first = std::min(first, b.t.front());
+  for (const RecordedPath& b : r.balls) {
+    const auto late = std::upper_bound(b.t.begin(), b.t.end(), first + limits::kMaxSimTime);
+    if (late == b.t.end()) continue;
+    return "balls." + b.name + ".t: sample " + std::to_string(late - b.t.begin()) + " lies " +
+           shortNumber(*late - first) + " s after the recording's first, more than the " +
+           shortNumber(limits::kMaxSimTime) + " s a run may last";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::optional<std::string> recordingFault(const Recording& r) {
@@ -69,6 +86,7 @@ std::optional<std::string> recordingFault(const Recording& r) {
       }
     }
   }
+  if (std::string why = spanFault(r); !why.empty()) return why;
   if (!r.cue_ball.empty() && !names.count(r.cue_ball)) {
     return "cue_ball: no ball named \"" + r.cue_ball + "\" is recorded";
   }

@@ -72,6 +72,16 @@ TEST(RecordingFault, SkipsThePairsAtOneTimeWhoseSpeedIsNotDefined) {
                 "balls.white.t: every sample at one time (needs two different times at least)"));
 }
 
+TEST(RecordingFault, RefusesARecordingLongerThanARunMayLast) {
+  Recording r = caromRecording();
+  r.balls[2].t.back() = 1e6;
+  EXPECT_EQ(
+      recordingFault(r),
+      std::optional<std::string>("balls.red.t: sample " + std::to_string(r.balls[2].t.size() - 1) +
+                                 " lies 1e+06 s after the recording's first, more than "
+                                 "the 3600 s a run may last"));
+}
+
 // The first guess of the strike is a legal, finite shot whatever the clock did at the cue
 // ball's first move.
 void expectALegalFirstGuess(const Recording& r) {
