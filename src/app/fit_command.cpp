@@ -6,6 +6,7 @@
 #include <istream>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <vector>
@@ -188,21 +189,31 @@ int fitStatus(const FitSummary& run, std::size_t printed, const std::string& pre
   return out ? kExitOk : kExitInternal;
 }
 
-int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, std::istream& in,
-                std::ostream& out, std::ostream& err) {
-  const std::string prefix = prefixOf("fit", options.path);
+// The shots' text, or nothing when it cannot be read (said on `err`).
+std::optional<std::string> shotsText(const std::string& path, const std::string& prefix,
+                                     std::istream& in, std::ostream& err) {
   std::string why;
-  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
-  if (!text) {
-    err << prefix << why << '\n';
-    return kExitBadInput;
-  }
+  auto text = readInput(path, in, why, limits::kMaxRecordingBytes);
+  if (!text) err << prefix << why << '\n';
+  return text;
+}
+
+FitOptions fitOptionsOf(const FitCommandOptions& options, const StopOnSignals& signals) {
   FitOptions o;
   o.evals = options.evals;
   o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
   o.seed = options.seed;
   o.threads = options.threads;
   o.cancel = signals.flag();
+  return o;
+}
+
+int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, std::istream& in,
+                std::ostream& out, std::ostream& err) {
+  const std::string prefix = prefixOf("fit", options.path);
+  const auto text = shotsText(options.path, prefix, in, err);
+  if (!text) return kExitBadInput;
+  FitOptions o = fitOptionsOf(options, signals);
   // Progress and refusals come from different threads: one line on stderr at a time.
   std::mutex stderr_lines;
   Progress progress(err, "nineball fit: ");
@@ -229,12 +240,8 @@ int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, 
 int calibrateAndPrint(const CalibrateCommandOptions& options, const StopOnSignals& signals,
                       std::istream& in, std::ostream& out, std::ostream& err) {
   const std::string prefix = prefixOf("calibrate", options.path);
-  std::string why;
-  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
-  if (!text) {
-    err << prefix << why << '\n';
-    return kExitBadInput;
-  }
+  const auto text = shotsText(options.path, prefix, in, err);
+  if (!text) return kExitBadInput;
   CalibrateRequest r = options.settings;
   r.params = splitNames(options.params);
   r.progress = [&](const std::string& line) {

@@ -112,10 +112,8 @@ ShotInput shotFrom(const json& v, std::string where) {
 std::variant<std::vector<ShotInput>, ParseError> shotsOf(const json& doc) {
   if (doc.is_object()) return std::vector<ShotInput>{shotFrom(doc, "")};
   if (!doc.is_array()) {
-    return ParseError{
-        "expected a recorded shot (an object), an array of them or JSON Lines, "
-        "found " +
-        describe(doc)};
+    return ParseError{"expected a recorded shot, an array of them or JSON Lines, found " +
+                      describe(doc)};
   }
   if (doc.empty()) return ParseError{"expected at least one recorded shot"};
   std::vector<ShotInput> shots;
