@@ -5,6 +5,8 @@
 #include <limits>
 #include <set>
 
+#include "common/limits.hpp"
+
 namespace nineball {
 namespace {
 
@@ -64,6 +66,11 @@ constexpr double kEarlyWindow = 0.1;
 constexpr double kTurn = 30.0 * kPi / 180.0;
 // Off its early line by this much, the cue ball has met something (m).
 constexpr double kTurned = 0.03;
+// The first guess of the cue ball's speed lies in the range a shot can have (m/s); a frame is
+// taken to last at least this long (s), whatever a coarse or broken clock says.
+constexpr double kSlowest = 0.05;
+constexpr double kFastest = limits::kMaxSpeed;
+constexpr double kShortestFrame = 1e-3;
 
 Vec2 medianOf(const RecordedPath& b, std::size_t from, std::size_t to) {
   std::vector<double> xs(b.x.begin() + from, b.x.begin() + to);
@@ -78,40 +85,6 @@ Vec2 medianOf(const RecordedPath& b, std::size_t from, std::size_t to) {
 
 Vec2 at(const RecordedPath& b, std::size_t i) {
   return {b.x[i], b.y[i]};
-}
-
-struct Onset {
-  std::size_t index = 0;  // the first sample in motion; size() when it never moves
-  bool from_start = false;
-};
-
-// A ball moving from the first sample: the median of its first three samples lies kMoved
-// from that of the next three (medians, so that one sample of noise moves neither).
-bool movingFromStart(const RecordedPath& b) {
-  if (b.t.size() < 6) return length(at(b, b.t.size() - 1) - at(b, 0)) > kMoved;
-  return length(medianOf(b, 3, 6) - medianOf(b, 0, 3)) > kMoved;
-}
-
-Onset onsetOf(const RecordedPath& b) {
-  const std::size_t n = b.t.size();
-  if (movingFromStart(b)) return {0, true};
-  const Vec2 first = medianOf(b, 0, std::min<std::size_t>(5, n));
-  auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - first) > kMoved; };
-  // Three samples running, each kMoved away: noise alone all but never does that.
-  for (std::size_t i = 0; i < n; ++i) {
-    if (far(i) && far(i + 1) && far(i + 2)) return {i, false};
-  }
-  return {n, false};
-}
-
-// Where a ball stood before it moved: the samples up to 0.1 s before its onset when there are
-// any (a slow ball creeps before it reaches kMoved), else all before it.
-Vec2 restOf(const RecordedPath& b, const Onset& o) {
-  if (o.index == 0) return at(b, 0);
-  if (o.index >= b.t.size()) return medianOf(b, 0, b.t.size());  // it never moves
-  std::size_t last = o.index;
-  while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
-  return medianOf(b, 0, last);
 }
 
 // Least squares line p(t) = a + v (t - tm) through samples [from, to).
@@ -136,6 +109,70 @@ Line lineThrough(const RecordedPath& b, std::size_t from, std::size_t to) {
   }
   if (stt > 0.0) l.v = stp * (1.0 / stt);
   return l;
+}
+
+struct Onset {
+  std::size_t index = 0;  // the first sample in motion; size() when it never moves
+  bool from_start = false;
+  double time = 0.0;  // when it began to move, as its first samples in motion tell
+};
+
+// The first sample, from `from` on, that lies kMoved from `origin` with the next one (if any)
+// too: noise alone all but never moves two samples running that far.
+std::size_t firstAway(const RecordedPath& b, Vec2 origin, std::size_t from) {
+  const std::size_t n = b.t.size();
+  auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - origin) > kMoved; };
+  for (std::size_t i = from; i < n; ++i) {
+    if (far(i) && far(i + 1)) return i;
+  }
+  return n;
+}
+
+// Where a ball stood before it moved: the samples up to 0.1 s before its onset when there are
+// any (a slow ball creeps before it reaches kMoved), else all before it.
+Vec2 restOf(const RecordedPath& b, const Onset& o) {
+  if (o.index == 0) return at(b, 0);
+  if (o.index >= b.t.size()) return medianOf(b, 0, b.t.size());  // it never moves
+  std::size_t last = o.index;
+  while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
+  return medianOf(b, 0, last);
+}
+
+// The end of the samples from `from` that a line through the first motion takes: those up to
+// kEarlyWindow after it, at least two, and at least one at a later time (clocks repeat).
+std::size_t earlyEnd(const RecordedPath& b, std::size_t from) {
+  const std::size_t n = b.t.size();
+  std::size_t to = std::min(from + 2, n);
+  while (to < n && (b.t[to] <= b.t[from] + kEarlyWindow || !(b.t[to - 1] > b.t[from]))) ++to;
+  return to;
+}
+
+// A tracker samples a ball at rest only when it moves again, so its first sample in motion
+// can follow its last at rest by seconds, and its first samples can all be moving: when it
+// began to move is read off the line through its first moving samples, carried back to
+// where it stood. At or before the first sample: it was moving when the recording began
+// (the cue ball of a recording that starts at the strike).
+Onset onsetOf(const RecordedPath& b) {
+  const std::size_t n = b.t.size();
+  Onset o;
+  o.index = firstAway(b, at(b, 0), 1);
+  if (o.index >= n) {
+    o.time = b.t.back();
+    return o;
+  }
+  const Vec2 rest = restOf(b, o);
+  const Line line = lineThrough(b, o.index, earlyEnd(b, o.index));
+  const double speed2 = dot(line.v, line.v);
+  const double back = speed2 > 0.0 ? line.tm + dot(rest - line.a, line.v) / speed2 : b.t[0];
+  const double frame = b.t[1] - b.t[0];
+  if (o.index == 1 && back <= b.t[0] + 0.25 * frame) {
+    o.index = 0;
+    o.from_start = true;
+    o.time = std::min(back, b.t[0]);
+    return o;
+  }
+  o.time = std::clamp(back, b.t[o.index - 1], b.t[o.index]);
+  return o;
 }
 
 bool nearCushion(Vec2 p, const TableDef& table, double radius) {
@@ -163,8 +200,8 @@ std::size_t cueIndex(const Recording& r, const std::vector<Onset>& onsets) {
   for (std::size_t i = 0; i < r.balls.size(); ++i) {
     const RecordedPath& b = r.balls[i];
     if (onsets[i].index >= b.t.size()) continue;
-    // Ties (two balls moving from the first sample) go to the one listed first.
-    const double when = b.t[onsets[i].index];
+    // Ties go to the one listed first.
+    const double when = onsets[i].time;
     if (when < earliest) {
       best = i;
       earliest = when;
@@ -202,11 +239,14 @@ RecordedShot readRecording(const Recording& r) {
     ++stop;
   }
   const Line line = lineThrough(c, start, stop);
-  // Its first step in motion bounds the speed from below: a line through a turn is slower.
-  const double first_step = length(at(c, start + 1) - at(c, start)) / (c.t[start + 1] - c.t[start]);
-  const double speed = std::max({length(line.v), first_step, 0.05});
+  // Its first step in motion bounds the speed from below: a line through a turn is slower. A
+  // repeated time says nothing of the speed, so the step is to the first later sample.
+  std::size_t next = start + 1;
+  while (next + 1 < n && !(c.t[next] > c.t[start])) ++next;
+  const double sample = std::max(c.t[next] - c.t[start], kShortestFrame);
+  const double first_step = length(at(c, next) - at(c, start)) / sample;
+  const double speed = std::clamp(std::max(length(line.v), first_step), kSlowest, kFastest);
   const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
-  const double sample = c.t[start + 1] - c.t[start];
   if (o.from_start) {
     // Struck half a frame before the first sample, as far as the samples can tell.
     s.cue_moving_at_start = true;
@@ -229,7 +269,7 @@ RecordedShot readRecording(const Recording& r) {
   for (std::size_t k = 1; k < s.order.size(); ++k) {
     const RecordedPath& b = r.balls[s.order[k]];
     const Onset& ob = onsets[s.order[k]];
-    if (ob.index < b.t.size()) s.first_event = std::min(s.first_event, b.t[ob.index]);
+    if (ob.index < b.t.size()) s.first_event = std::min(s.first_event, ob.time);
   }
   for (std::size_t i = start; i < n && c.t[i] < s.first_event; ++i) {
     const Vec2 off = at(c, i) - (line.a + line.v * (c.t[i] - line.tm));
