@@ -161,11 +161,18 @@ Onset onsetOf(const RecordedPath& b) {
     return o;
   }
   const Vec2 rest = restOf(b, o);
-  const Line line = lineThrough(b, o.index, earlyEnd(b, o.index));
+  const std::size_t end = earlyEnd(b, o.index);
+  // Samples seconds apart (a ball nudged while the tracker looked away) carry no line back:
+  // it moved by the first of them.
+  if (b.t[end - 1] - b.t[o.index] > 2.0 * kEarlyWindow || !(b.t[end - 1] > b.t[o.index])) {
+    o.time = b.t[o.index];
+    return o;
+  }
+  const Line line = lineThrough(b, o.index, end);
   const double speed2 = dot(line.v, line.v);
   const double back = speed2 > 0.0 ? line.tm + dot(rest - line.a, line.v) / speed2 : b.t[0];
   const double frame = b.t[1] - b.t[0];
-  if (o.index == 1 && back <= b.t[0] + 0.25 * frame) {
+  if (o.index == 1 && frame <= kEarlyWindow && back <= b.t[0] + 0.25 * frame) {
     o.index = 0;
     o.from_start = true;
     o.time = std::min(back, b.t[0]);
