@@ -60,6 +60,9 @@ namespace {
 // A ball has moved once it lies this far from where it stood, at two samples running: five
 // times a good tracker's noise, and twice over, so that noise alone almost never moves it (m).
 constexpr double kMoved = 0.02;
+// Samples this near where a ball stood are the ball at rest seen through the tracker's noise:
+// with 5 mm on each coordinate, 1 % of them fall further out (m).
+constexpr double kStill = 0.012;
 // The cue ball's first samples in motion that give the first guess of its line (s).
 constexpr double kEarlyWindow = 0.1;
 // A turn this sharp between frames is a contact (rad).
@@ -117,25 +120,44 @@ struct Onset {
   double time = 0.0;  // when it began to move, as its first samples in motion tell
 };
 
-// The first sample, from `from` on, that lies kMoved from `origin` with the next one (if any)
-// too: noise alone all but never moves two samples running that far.
-std::size_t firstAway(const RecordedPath& b, Vec2 origin, std::size_t from) {
+// Three samples running kMoved from `origin`: noise alone all but never does that.
+std::size_t firstAway(const RecordedPath& b, Vec2 origin) {
   const std::size_t n = b.t.size();
   auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - origin) > kMoved; };
-  for (std::size_t i = from; i < n; ++i) {
-    if (far(i) && far(i + 1)) return i;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (far(i) && far(i + 1) && far(i + 2)) return i;
   }
   return n;
 }
 
-// Where a ball stood before it moved: the samples up to 0.1 s before its onset when there are
-// any (a slow ball creeps before it reaches kMoved), else all before it.
+// Where a ball stood from its first sample, less the tracker's noise: the median of its
+// first samples up to `limit` that follow each other without a gap (after a gap the tracker
+// saw it move again), then of those the ones within kStill of that median. With `near_first`,
+// only samples within kMoved of the first count (the ball may move from it at once).
+Vec2 leadingRest(const RecordedPath& b, std::size_t limit, bool near_first) {
+  const std::size_t end = std::min(limit, b.t.size());
+  std::size_t k = 1;
+  while (k < end && b.t[k] - b.t[k - 1] <= kEarlyWindow &&
+         (!near_first || length(at(b, k) - at(b, 0)) <= kMoved)) {
+    ++k;
+  }
+  const Vec2 around = medianOf(b, 0, k);
+  RecordedPath still;
+  for (std::size_t i = 0; i < k; ++i) {
+    if (length(at(b, i) - around) > kStill) continue;
+    still.x.push_back(b.x[i]);
+    still.y.push_back(b.y[i]);
+  }
+  return still.x.empty() ? around : medianOf(still, 0, still.x.size());
+}
+
+// A ball struck slowly creeps before it lies kMoved away: its samples in the 0.1 s before its
+// onset are left out when there are others.
 Vec2 restOf(const RecordedPath& b, const Onset& o) {
   if (o.index == 0) return at(b, 0);
-  if (o.index >= b.t.size()) return medianOf(b, 0, b.t.size());  // it never moves
-  std::size_t last = o.index;
-  while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
-  return medianOf(b, 0, last);
+  std::size_t last = std::min(o.index, b.t.size());
+  while (last > 1 && o.index < b.t.size() && b.t[last - 1] > b.t[o.index] - 0.1) --last;
+  return leadingRest(b, last, false);
 }
 
 // The end of the samples from `from` that a line through the first motion takes: those up to
@@ -155,7 +177,7 @@ std::size_t earlyEnd(const RecordedPath& b, std::size_t from) {
 Onset onsetOf(const RecordedPath& b) {
   const std::size_t n = b.t.size();
   Onset o;
-  o.index = firstAway(b, at(b, 0), 1);
+  o.index = firstAway(b, leadingRest(b, b.t.size(), true));
   if (o.index >= n) {
     o.time = b.t.back();
     return o;
