@@ -83,6 +83,8 @@ def main():
 
     recorded = first_shot(args.shots) if args.shots else synthetic_shot()
     fit = nineball.fit(recorded, evals=args.evals)[0]
+    if "error" in fit:
+        raise SystemExit("the shot is refused: " + fit["error"])
     paths = simulated_paths(fit, recorded)
     table = nineball.Table(fit["scene"]["table"], fit["scene"]["physics"])
 

@@ -25,6 +25,8 @@ struct RecordedPath {
 /// A recorded shot: every tracked ball, on a table with its physics.
 struct Recording {
   std::string id;
+  /// The id came as a JSON integer (its digits in `id`): printed back as one.
+  bool integer_id = false;
   TableDef table;
   PhysicsParams physics;
   std::vector<RecordedPath> balls;
@@ -32,8 +34,9 @@ struct Recording {
   std::string cue_ball;
 };
 
-/// Empty when the recording can be fitted, else a message naming what is wrong ("balls.white:
-/// t is not increasing at sample 12").
+/// Empty when the recording can be fitted, else a message naming what is wrong
+/// ("balls.white.t: decreasing at sample 12", "balls.white: samples 0-1 imply 6e+196 m/s").
+/// A time may repeat (a coarse clock); no pair of samples may imply more than a cue gives.
 std::optional<std::string> recordingFault(const Recording& r);
 
 /// How a tracker sees a table: its frame rate, its noise, and when on its clock the shot
@@ -77,6 +80,12 @@ struct ShotFit {
   FitErrors rmse;
   /// Simulations the search ran.
   int evals = 0;
+  /// Why the fit may mislead, in short phrases ("nothing moves", "did not converge", ...;
+  /// docs/calibrating.md); empty when nothing is amiss.
+  std::vector<std::string> warnings;
+  /// The recorded balls the fitted scene does not reproduce: moving (beyond 2 cm) in the
+  /// recording and not in the simulation, or the other way round.
+  std::vector<std::string> unreproduced;
 };
 
 struct FitOptions {
@@ -97,8 +106,15 @@ constexpr int kMinFitEvals = 50;
 FitErrors fitErrors(const Recording& r, const Scene& scene, const std::vector<std::string>& names,
                     double strike_time);
 
-/// Fits one checked recording (see recordingFault). Deterministic for a seed.
+/// Fits one checked recording (see recordingFault), its warnings and unreproduced balls
+/// included (reviewFit). Deterministic for a seed.
 ShotFit fitShot(const Recording& r, const FitOptions& options);
+
+/// Sets the warnings and unreproduced balls of `fit`, a fit of the checked recording `r` under
+/// `physics`: whether a short search from it (a few % of `evals`) still lowers its error under
+/// `objective`, and the fitted scene simulated once against the recording.
+void reviewFit(const Recording& r, const PhysicsParams& physics, ShotFit& fit, int evals,
+               FitObjective objective, const std::atomic<bool>* cancel = nullptr);
 
 /// Fits every recording, on up to options.threads threads; the results, in order, do not
 /// depend on the threads.
@@ -131,7 +147,9 @@ struct Calibration {
   double train_median = 0.0;                ///< m, the median full RMSE of the training shots
   double holdout_median = 0.0;              ///< m; 0 without held-out shots
   std::vector<std::size_t> train, holdout;  ///< indices into the shots
-  std::vector<ShotFit> fits;                ///< every shot refitted under the calibrated physics
+  /// Every shot refitted under the calibrated physics (its warnings and unreproduced balls
+  /// left to reviewFit).
+  std::vector<ShotFit> fits;
 };
 
 /// Calibrates the physics of checked recordings that share one table and physics.

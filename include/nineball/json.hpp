@@ -49,8 +49,35 @@ std::variant<std::string, SceneRefusal> matchJsonText(std::string_view text);
 /// intended. Or why the scene is refused.
 std::variant<std::string, SceneRefusal> planJsonText(std::string_view text);
 
+/// One line of what `nineball fit` prints: a shot's fit, or its refusal.
+struct FitLine {
+  /// The line's compact JSON, without its newline: the fit, or {"id", "error"}.
+  std::string text;
+  /// For a refused shot, the message named by where the shot stands ("line 4: balls.red.t:
+  /// decreasing at sample 5"); empty for a fit.
+  std::string refusal;
+};
+
+/// How `nineball fit` went over a text of shots.
+struct FitSummary {
+  std::size_t shots = 0;
+  std::size_t refused = 0;
+  /// options.cancel was raised: only the shots done before it have their lines.
+  bool cancelled = false;
+};
+
+/// `nineball fit` shot by shot (docs/cli.md): `line` is called with each shot's line in the
+/// input's order, as soon as that shot and every one before it are done (a refused shot at
+/// once), one call at a time, from any thread. Once options.cancel is raised no fit starts,
+/// the fits it cut short have no line, and the lines of every shot done still come, in order.
+/// Or why the text holds no shots at all (not JSON, nor JSON Lines; an empty array).
+std::variant<FitSummary, SceneRefusal> fitJsonLines(
+    std::string_view text, const FitOptions& options,
+    const std::function<void(const FitLine&)>& line);
+
 /// What `nineball fit` prints for the recorded shots in `text` (one object, an array, or JSON
-/// Lines; docs/cli.md): one JSON line per shot, in order. Or why the shots are refused.
+/// Lines; docs/cli.md): one JSON line per shot, in order, a refused shot's line its
+/// {"id", "error"}. Or why the text holds no shots at all.
 std::variant<std::string, SceneRefusal> fitJsonText(std::string_view text,
                                                     const FitOptions& options);
 

@@ -380,10 +380,14 @@ def fit(shots: Shots, evals: int = 12000, objective: str = "full", seed: int = 1
 
     Each answer: ``id``, ``scene`` (a complete scene: simulate it to see the fit), ``names``
     (scene ball id as a string -> recorded name; the cue ball is "0"), ``strike_time`` (the
-    recording's time of the strike), ``rmse_m`` (``full`` and ``early``) and ``evals``.
-    ``objective``: "full" (every sample) or "early" (4 s after the strike, the cue ball
-    weighted 1.5, each sample by 1/(1 + t)). Deterministic for a seed; both cores used
-    (``threads``: 0 for one per core). A bad recording raises ValueError naming it.
+    recording's time of the strike), ``rmse_m`` (``full`` and ``early``), ``evals``,
+    ``warnings`` (why the fit may mislead: "nothing moves", "did not converge", ...) and
+    ``unreproduced`` (the recorded balls the fit moves and the recording does not, or the
+    other way round). ``objective``: "full" (every sample) or "early" (4 s after the strike,
+    the cue ball weighted 1.5, each sample by 1/(1 + t)). Deterministic for a seed; both cores
+    used (``threads``: 0 for one per core). A refused shot's answer is ``{"id", "error"}``
+    (``id`` only when it had one; the message names the field), in its place, the others
+    fitted; text that holds no shot at all (not JSON) raises ValueError.
     """
     return _core.fit(_shots(shots), int(evals), objective, int(seed), threads)
 
@@ -398,7 +402,8 @@ def calibrate(shots: Shots, params: Iterable[str], holdout: float = 0.5, seed: i
     takes, e.g. "rolling_friction", "cushion_restitution", "ball_friction.a"). A share
     ``holdout`` of the shots (drawn by ``seed``) is kept out of the training and measured
     under the result. Returns ``physics`` (ready for a scene), ``train`` and ``holdout``
-    (``median_rmse_m``, ``shots``) and ``per_shot`` (each shot's fit, with ``set``).
+    (``median_rmse_m``, ``shots``, ``unreproduced_balls``) and ``per_shot`` (each shot's fit,
+    with ``set``). A refused shot raises ValueError naming it ("shot 3: balls.white: ...").
     """
     if isinstance(params, str):
         params = params.split(",")

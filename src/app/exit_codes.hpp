@@ -17,4 +17,7 @@ constexpr int kExitOutOfStep = 4;
 /// `nineball online`: the link failed (nobody came, or the other side left, stopped answering
 /// or misbehaved, and did not come back in time).
 constexpr int kExitLinkFailed = 5;
+/// `nineball fit`, `calibrate`: stopped by Ctrl-C (SIGINT) or SIGTERM, as a shell reports a
+/// process Ctrl-C ended (128 + SIGINT).
+constexpr int kExitInterrupted = 130;
 }  // namespace nineball::app

@@ -1,10 +1,14 @@
 #include "app/fit_command.hpp"
 
+#include <atomic>
 #include <chrono>
-#include <functional>
+#include <csignal>
 #include <istream>
+#include <mutex>
+#include <new>
 #include <ostream>
 #include <sstream>
+#include <vector>
 
 #include "app/cli_checks.hpp"
 #include "app/exit_codes.hpp"
@@ -75,7 +79,8 @@ CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
   cmd->add_option("--params", options.params,
                   "Physics parameters to calibrate, comma-separated (rolling_friction,...)")
       ->required();
-  cmd->add_option("--holdout", options.settings.holdout, "Share of the shots kept out of the training")
+  cmd->add_option("--holdout", options.settings.holdout,
+                  "Share of the shots kept out of the training")
       ->check(CLI::Range(0.0, 0.9))
       ->capture_default_str();
   cmd->add_option("--seed", options.settings.seed, "Seed of the held-out draw and the searches")
@@ -88,7 +93,8 @@ CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
                   "Simulations of each training shot's refit under each candidate physics")
       ->check(CLI::Range(10, 100000))
       ->capture_default_str();
-  cmd->add_option("--candidates", options.settings.candidates, "Physics candidates the search tries")
+  cmd->add_option("--candidates", options.settings.candidates,
+                  "Physics candidates the search tries")
       ->check(CLI::Range(2, 10000))
       ->capture_default_str();
   cmd->add_option("--threads", options.settings.threads, "Threads (0: one per core)")
@@ -97,20 +103,150 @@ CLI::App* addCalibrateCommand(CLI::App& app, CalibrateCommandOptions& options) {
   return cmd;
 }
 
-// Reads the shots' text and prints what `answer` makes of it: the JSON on `out`, or a refusal
-// on `err` (kExitBadInput).
-static int answerShots(const std::string& command, const std::string& path, std::istream& in,
-                std::ostream& out, std::ostream& err,
-                const std::function<std::variant<std::string, SceneRefusal>(std::string_view)>&
-                    answer) {
-  const std::string prefix = "nineball " + command + ": " + shownPath(path) + ": ";
+namespace {
+
+// Ctrl-C or a kill stops the search. The handler only raises the flag (about all a handler
+// may do) and gives the signal back its default, so that a second one ends the process at
+// once.
+std::atomic<bool> stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only set this");
+constexpr int kStopSignals[] = {SIGINT, SIGTERM};
+
+extern "C" void requestFitStop(int sig) {
+  stop_requested.store(true);
+  std::signal(sig, SIG_DFL);
+}
+
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    stop_requested.store(false);
+    for (int sig : kStopSignals) {
+      previous_.push_back(std::signal(sig, requestFitStop));
+      // A signal ignored at the start (a background job's Ctrl-C) stays ignored.
+      if (previous_.back() == SIG_IGN) std::signal(sig, SIG_IGN);
+    }
+  }
+  ~StopOnSignals() {
+    std::size_t i = 0;
+    for (int sig : kStopSignals) std::signal(sig, previous_[i++]);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+  const std::atomic<bool>* flag() const { return &stop_requested; }
+  bool raised() const { return stop_requested.load(); }
+
+ private:
+  std::vector<void (*)(int)> previous_;
+};
+
+// Memory held back for the way out of an allocation that fails: given back at the first
+// failure, so that what unwinds from it (a destructor that allocates among it) still finds
+// some and the failure is reported, not an abort; the next failure throws std::bad_alloc.
+class MemoryReserve {
+ public:
+  MemoryReserve() {
+    held_.store(::operator new(kBytes, std::nothrow));
+    previous_ = std::set_new_handler(&giveBack);
+  }
+  ~MemoryReserve() {
+    std::set_new_handler(previous_);
+    ::operator delete(held_.exchange(nullptr));
+  }
+  MemoryReserve(const MemoryReserve&) = delete;
+  MemoryReserve& operator=(const MemoryReserve&) = delete;
+
+ private:
+  static constexpr std::size_t kBytes = 16u << 20;
+
+  static void giveBack() {
+    void* held = held_.exchange(nullptr);
+    if (!held) throw std::bad_alloc();
+    ::operator delete(held);
+  }
+
+  static inline std::atomic<void*> held_{nullptr};
+  std::new_handler previous_ = nullptr;
+};
+
+std::string prefixOf(const std::string& command, const std::string& path) {
+  return "nineball " + command + ": " + shownPath(path) + ": ";
+}
+
+// How a run of fit ends: interrupted, with refused shots, or whole.
+int fitStatus(const FitSummary& run, std::size_t printed, const std::string& prefix,
+              std::ostream& out, std::ostream& err) {
+  if (run.cancelled) {
+    err << prefix << "interrupted: " << printed << " of " << run.shots << " shots printed\n";
+    return kExitInterrupted;
+  }
+  if (run.refused > 0) {
+    err << prefix << run.refused << " of " << run.shots << " shots refused\n";
+    return kExitBadInput;
+  }
+  return out ? kExitOk : kExitInternal;
+}
+
+int fitAndPrint(const FitCommandOptions& options, const StopOnSignals& signals, std::istream& in,
+                std::ostream& out, std::ostream& err) {
+  const std::string prefix = prefixOf("fit", options.path);
   std::string why;
-  const auto text = readInput(path, in, why, limits::kMaxRecordingBytes);
+  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
   if (!text) {
     err << prefix << why << '\n';
     return kExitBadInput;
   }
-  const auto answered = answer(*text);
+  FitOptions o;
+  o.evals = options.evals;
+  o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
+  o.seed = options.seed;
+  o.threads = options.threads;
+  o.cancel = signals.flag();
+  // Progress and refusals come from different threads: one line on stderr at a time.
+  std::mutex stderr_lines;
+  Progress progress(err, "nineball fit: ");
+  o.progress = [&](std::size_t done, std::size_t total) {
+    const std::lock_guard<std::mutex> lock(stderr_lines);
+    if (total > 1) progress(done, total);
+  };
+  std::size_t printed = 0;
+  // Each line out as soon as it is due, so that a failure later loses none of them.
+  const auto run = fitJsonLines(*text, o, [&](const FitLine& line) {
+    out << line.text << '\n' << std::flush;
+    ++printed;
+    if (line.refusal.empty()) return;
+    const std::lock_guard<std::mutex> lock(stderr_lines);
+    err << prefix << line.refusal << '\n' << std::flush;
+  });
+  if (const auto* refused = std::get_if<SceneRefusal>(&run)) {
+    err << prefix << refused->message << '\n';
+    return kExitBadInput;
+  }
+  return fitStatus(std::get<FitSummary>(run), printed, prefix, out, err);
+}
+
+int calibrateAndPrint(const CalibrateCommandOptions& options, const StopOnSignals& signals,
+                      std::istream& in, std::ostream& out, std::ostream& err) {
+  const std::string prefix = prefixOf("calibrate", options.path);
+  std::string why;
+  const auto text = readInput(options.path, in, why, limits::kMaxRecordingBytes);
+  if (!text) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
+  }
+  CalibrateRequest r = options.settings;
+  r.params = splitNames(options.params);
+  r.progress = [&](const std::string& line) {
+    err << "nineball calibrate: " << line << '\n' << std::flush;
+  };
+  r.cancel = signals.flag();
+  const auto answered = calibrateJsonText(*text, r);
+  // Physics searched only partly are no calibration.
+  if (signals.raised()) {
+    err << prefix << "interrupted: nothing printed\n";
+    return kExitInterrupted;
+  }
   if (const auto* refused = std::get_if<SceneRefusal>(&answered)) {
     err << prefix << refused->message << '\n';
     return kExitBadInput;
@@ -119,30 +255,30 @@ static int answerShots(const std::string& command, const std::string& path, std:
   return out ? kExitOk : kExitInternal;
 }
 
+}  // namespace
+
 int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
            std::ostream& err) {
-  FitOptions o;
-  o.evals = options.evals;
-  o.objective = options.objective == "early" ? FitObjective::Early : FitObjective::Full;
-  o.seed = options.seed;
-  o.threads = options.threads;
-  Progress progress(err, "nineball fit: ");
-  o.progress = [&](std::size_t done, std::size_t total) {
-    if (total > 1) progress(done, total);
-  };
-  return answerShots("fit", options.path, in, out, err,
-                     [&](std::string_view text) { return fitJsonText(text, o); });
+  const StopOnSignals signals;
+  const MemoryReserve reserve;
+  try {
+    return fitAndPrint(options, signals, in, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "nineball fit: out of memory\n";
+    return kExitInternal;
+  }
 }
 
 int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
                  std::ostream& err) {
-  CalibrateRequest r = options.settings;
-  r.params = splitNames(options.params);
-  r.progress = [&](const std::string& line) {
-    err << "nineball calibrate: " << line << '\n' << std::flush;
-  };
-  return answerShots("calibrate", options.path, in, out, err,
-                     [&](std::string_view text) { return calibrateJsonText(text, r); });
+  const StopOnSignals signals;
+  const MemoryReserve reserve;
+  try {
+    return calibrateAndPrint(options, signals, in, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "nineball calibrate: out of memory\n";
+    return kExitInternal;
+  }
 }
 
 }  // namespace nineball::app

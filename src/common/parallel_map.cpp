@@ -4,7 +4,6 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
-#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -36,8 +35,10 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
   for (std::size_t t = 0; t < helpers; ++t) {
     try {
       pool.emplace_back(drain);
-    } catch (const std::system_error&) {
-      break;  // no more threads to be had (address space, a process limit): fewer do the work
+    } catch (const std::exception&) {
+      // No more threads to be had (address space, memory, a process limit): fewer do the
+      // work, and the threads started are joined rather than left to end the process.
+      break;
     }
   }
   drain();

@@ -5,7 +5,9 @@
 #include <stdexcept>
 
 #include "common/parallel_map.hpp"
+#include "fit/fit_warnings.hpp"
 #include "fit/shot_search.hpp"
+#include "nineball/cancel.hpp"
 
 namespace nineball {
 
@@ -32,12 +34,24 @@ FitErrors fitErrors(const Recording& r, const Scene& scene, const std::vector<st
 }
 
 ShotFit fitShot(const Recording& r, const FitOptions& options) {
+  // A cancelled fit is thrown away: its simulations may stop at their next event too.
+  const CancelScope scope(options.cancel);
   fit::RecordedShot s = fit::readRecording(r);
   fit::separate(s.rest, r.table, r.physics.ball_radius);
   const int evals = std::max(options.evals, kMinFitEvals);
   const fit::Found found =
       fit::searchShot(s, r.physics, evals, options.objective, options.seed, options.cancel);
-  return fit::shotFitOf(s, r.physics, found);
+  ShotFit f = fit::shotFitOf(s, r.physics, found);
+  fit::review(s, r.physics, f, {evals, options.objective, options.cancel});
+  return f;
+}
+
+void reviewFit(const Recording& r, const PhysicsParams& physics, ShotFit& fit, int evals,
+               FitObjective objective, const std::atomic<bool>* cancel) {
+  const CancelScope scope(cancel);
+  fit::RecordedShot s = fit::readRecording(r);
+  fit::separate(s.rest, r.table, r.physics.ball_radius);
+  fit::review(s, physics, fit, {evals, objective, cancel});
 }
 
 std::vector<ShotFit> fitShots(const std::vector<Recording>& shots, const FitOptions& options) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 
@@ -13,6 +14,24 @@ namespace {
 // Beyond this a tracked position is no tracking noise but another table (m).
 constexpr double kOffTable = 0.1;
 
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// No cue drives a ball faster than fit::kMaxSpeed: samples further apart than that in their
+// time are a tracker's (or its clock's) mistake, and a first guess of the strike from them
+// would be nonsense. A time recorded twice (a coarse clock) defines no speed.
+std::string speedFault(const RecordedPath& b, const std::string& at, std::size_t i) {
+  const double dt = b.t[i] - b.t[i - 1];
+  if (!(dt > 0.0)) return {};
+  const double speed = std::hypot(b.x[i] - b.x[i - 1], b.y[i] - b.y[i - 1]) / dt;
+  if (speed <= fit::kMaxSpeed) return {};
+  return at + ": samples " + std::to_string(i - 1) + "-" + std::to_string(i) + " imply " +
+         shortNumber(speed) + " m/s";
+}
+
 std::string pathFault(const RecordedPath& b, const std::string& at) {
   if (b.t.size() != b.x.size() || b.t.size() != b.y.size()) {
     return at + ": t, x and y have different lengths (" + std::to_string(b.t.size()) + ", " +
@@ -23,9 +42,28 @@ std::string pathFault(const RecordedPath& b, const std::string& at) {
     if (!std::isfinite(b.t[i]) || !std::isfinite(b.x[i]) || !std::isfinite(b.y[i])) {
       return at + ": sample " + std::to_string(i) + " is not a finite number";
     }
-    if (i > 0 && !(b.t[i] > b.t[i - 1])) {
-      return at + ".t: not increasing at sample " + std::to_string(i);
-    }
+    if (i == 0) continue;
+    // A time may repeat (real trackers have coarse clocks), never go back.
+    if (b.t[i] < b.t[i - 1]) return at + ".t: decreasing at sample " + std::to_string(i);
+    if (std::string why = speedFault(b, at, i); !why.empty()) return why;
+  }
+  if (!(b.t.back() > b.t.front())) {
+    return at + ".t: every sample at one time (needs two different times at least)";
+  }
+  return {};
+}
+
+// A fit simulates from the strike to the last sample: a recording longer than the longest run
+// is no shot (and its runs would trace for ages).
+std::string spanFault(const Recording& r) {
+  double first = std::numeric_limits<double>::infinity();
+  for (const RecordedPath& b : r.balls) first = std::min(first, b.t.front());
+  for (const RecordedPath& b : r.balls) {
+    const auto late = std::upper_bound(b.t.begin(), b.t.end(), first + limits::kMaxSimTime);
+    if (late == b.t.end()) continue;
+    return "balls." + b.name + ".t: sample " + std::to_string(late - b.t.begin()) + " lies " +
+           shortNumber(*late - first) + " s after the recording's first, more than the " +
+           shortNumber(limits::kMaxSimTime) + " s a run may last";
   }
   return {};
 }
@@ -48,6 +86,7 @@ std::optional<std::string> recordingFault(const Recording& r) {
       }
     }
   }
+  if (std::string why = spanFault(r); !why.empty()) return why;
   if (!r.cue_ball.empty() && !names.count(r.cue_ball)) {
     return "cue_ball: no ball named \"" + r.cue_ball + "\" is recorded";
   }
@@ -69,11 +108,6 @@ constexpr double kEarlyWindow = 0.1;
 constexpr double kTurn = 30.0 * kPi / 180.0;
 // Off its early line by this much, the cue ball has met something (m).
 constexpr double kTurned = 0.03;
-// The first guess of the cue ball's speed lies in the range a shot can have (m/s); a frame is
-// taken to last at least this long (s), whatever a coarse or broken clock says.
-constexpr double kSlowest = 0.05;
-constexpr double kFastest = limits::kMaxSpeed;
-constexpr double kShortestFrame = 1e-3;
 
 Vec2 medianOf(const RecordedPath& b, std::size_t from, std::size_t to) {
   std::vector<double> xs(b.x.begin() + from, b.x.begin() + to);
@@ -110,8 +144,24 @@ Line lineThrough(const RecordedPath& b, std::size_t from, std::size_t to) {
     stt += dt * dt;
     stp += (at(b, i) - l.a) * dt;
   }
-  if (stt > 0.0) l.v = stp * (1.0 / stt);
+  // Samples all but at one instant give no velocity (1 / stt overflows).
+  const Vec2 v = stp * (1.0 / stt);
+  if (stt > 0.0 && std::isfinite(v.x) && std::isfinite(v.y)) l.v = v;
   return l;
+}
+
+// The last sample that has a later one at a later time (times may repeat).
+std::size_t lastStepFrom(const RecordedPath& b) {
+  std::size_t i = b.t.size() - 2;
+  while (i > 0 && !(b.t[i] < b.t.back())) --i;
+  return i;
+}
+
+// The first sample after `i` whose time is later than its time.
+std::size_t laterSample(const RecordedPath& b, std::size_t i) {
+  std::size_t next = i + 1;
+  while (next + 1 < b.t.size() && !(b.t[next] > b.t[i])) ++next;
+  return next;
 }
 
 struct Onset {
@@ -193,7 +243,7 @@ Onset onsetOf(const RecordedPath& b) {
   const Line line = lineThrough(b, o.index, end);
   const double speed2 = dot(line.v, line.v);
   const double back = speed2 > 0.0 ? line.tm + dot(rest - line.a, line.v) / speed2 : b.t[0];
-  const double frame = b.t[1] - b.t[0];
+  const double frame = b.t[laterSample(b, 0)] - b.t[0];
   if (o.index == 1 && frame <= kEarlyWindow && back <= b.t[0] + 0.25 * frame) {
     o.index = 0;
     o.from_start = true;
@@ -259,7 +309,7 @@ RecordedShot readRecording(const Recording& r) {
   const RecordedPath& c = r.balls[cue];
   const Onset o = onsets[cue];
   const std::size_t n = c.t.size();
-  const std::size_t start = std::min(o.index, n - 2);
+  const std::size_t start = std::min(o.index, lastStepFrom(c));
   s.cue_onset = c.t[start];
   // The early line ends before a cushion: a ball struck near one meets it within a frame or two.
   std::size_t stop = start + 2;
@@ -268,13 +318,12 @@ RecordedShot readRecording(const Recording& r) {
     ++stop;
   }
   const Line line = lineThrough(c, start, stop);
-  // Its first step in motion bounds the speed from below: a line through a turn is slower. A
-  // repeated time says nothing of the speed, so the step is to the first later sample.
-  std::size_t next = start + 1;
-  while (next + 1 < n && !(c.t[next] > c.t[start])) ++next;
-  const double sample = std::max(c.t[next] - c.t[start], kShortestFrame);
+  // Its first step in motion bounds the speed from below: a line through a turn is slower.
+  // A coarse clock repeats times: the first step runs to the next sample at a later time.
+  const std::size_t next = laterSample(c, start);
+  const double sample = c.t[next] - c.t[start];
   const double first_step = length(at(c, next) - at(c, start)) / sample;
-  const double speed = std::clamp(std::max(length(line.v), first_step), kSlowest, kFastest);
+  const double speed = std::clamp(std::max(length(line.v), first_step), kMinSpeed, kMaxSpeed);
   const Vec2 dir = length(line.v) > 0.0 ? normalized(line.v) : Vec2{1.0, 0.0};
   if (o.from_start) {
     // Struck half a frame before the first sample, as far as the samples can tell.
@@ -292,7 +341,7 @@ RecordedShot readRecording(const Recording& r) {
   s.heading = std::atan2(dir.y, dir.x);
   const PhysicsParams& p = r.physics;
   const double mu = p.spin() ? p.sliding_friction : p.rolling_friction;
-  s.speed = speed + mu * p.gravity * std::max(0.0, line.tm - s.strike);
+  s.speed = std::min(speed + mu * p.gravity * std::max(0.0, line.tm - s.strike), kMaxSpeed);
 
   s.first_event = s.end;
   for (std::size_t k = 1; k < s.order.size(); ++k) {

@@ -8,6 +8,11 @@
 
 namespace nineball::fit {
 
+/// The speeds a cue gives a ball (m/s): the search's legal range, and the most a recording's
+/// samples may imply (no cue strikes harder than a hard break).
+constexpr double kMinSpeed = 0.05;
+constexpr double kMaxSpeed = 12.0;
+
 /// What a recording says before any simulation: which ball was struck, where every ball
 /// stood at the strike, and a first guess of the strike from the cue ball's early samples.
 struct RecordedShot {

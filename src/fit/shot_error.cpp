@@ -13,8 +13,6 @@ namespace {
 constexpr double kEarlyWindow = 4.0;
 constexpr double kEarlyCueWeight = 1.5;
 constexpr double kMaxElevation = 35.0 * kPi / 180.0;
-constexpr double kMinSpeed = 0.05;
-constexpr double kMaxSpeed = 12.0;
 // Inside the miscue limit by this share, so that a tip on the search's edge still strikes.
 constexpr double kTipMargin = 0.95;
 // A simulation at least this long (s), so that a window that ends at the strike still runs.

@@ -1,7 +1,11 @@
+#include <algorithm>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "common/limits.hpp"
+#include "common/parallel_map.hpp"
 #include "io/recording_json.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_parts.hpp"
@@ -13,16 +17,76 @@ namespace nineball {
 namespace {
 
 using Shots = std::vector<Recording>;
+using Inputs = std::vector<io::ShotInput>;
 
-std::variant<Shots, SceneRefusal> shotsIn(std::string_view text) {
-  if (text.size() > limits::kMaxRecordingBytes) {
-    return SceneRefusal{"larger than " + std::to_string(limits::kMaxRecordingBytes >> 20) + " MiB"};
+std::optional<SceneRefusal> sizeFault(std::string_view text) {
+  if (text.size() <= limits::kMaxRecordingBytes) return std::nullopt;
+  return SceneRefusal{"larger than " + std::to_string(limits::kMaxRecordingBytes >> 20) + " MiB"};
+}
+
+std::variant<Inputs, SceneRefusal> inputsIn(std::string_view text) {
+  if (auto fault = sizeFault(text)) return *fault;
+  auto read = io::readRecordings(text);
+  if (const auto* refused = std::get_if<io::ParseError>(&read)) {
+    return SceneRefusal{refused->message};
   }
+  return std::get<Inputs>(std::move(read));
+}
+
+// Every shot read, or the first refused, named by where it stands.
+std::variant<Shots, SceneRefusal> shotsIn(std::string_view text) {
+  if (auto fault = sizeFault(text)) return *fault;
   auto parsed = io::parseRecordings(text);
   if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
     return SceneRefusal{refused->message};
   }
   return std::get<Shots>(std::move(parsed));
+}
+
+bool raised(const std::atomic<bool>* flag) {
+  return flag && flag->load();
+}
+
+// Each shot's line handed on in the input's order, as soon as it and every line before it
+// are done: a file of many shots shows its first fits while the rest are searched.
+class InOrder {
+ public:
+  InOrder(std::size_t count, const std::function<void(const FitLine&)>& hand_on)
+      : lines_(count), hand_on_(hand_on) {}
+
+  void done(std::size_t i, FitLine line) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    lines_[i] = std::move(line);
+    while (next_ < lines_.size() && lines_[next_]) handOn(next_++);
+  }
+
+  // After a cancel: the lines of every shot done, past those that never will be.
+  void handOnTheRest() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (; next_ < lines_.size(); ++next_) {
+      if (lines_[next_]) handOn(next_);
+    }
+  }
+
+ private:
+  void handOn(std::size_t i) {
+    hand_on_(*lines_[i]);
+    lines_[i].reset();
+  }
+
+  std::mutex mutex_;
+  std::vector<std::optional<FitLine>> lines_;
+  std::size_t next_ = 0;
+  const std::function<void(const FitLine&)>& hand_on_;
+};
+
+FitLine refusedLine(const io::ShotInput& in) {
+  return {io::refusalToJson(in).dump(), in.namedRefusal()};
+}
+
+std::size_t refusedIn(const Inputs& inputs) {
+  return static_cast<std::size_t>(std::count_if(
+      inputs.begin(), inputs.end(), [](const io::ShotInput& in) { return !in.recording; }));
 }
 
 std::optional<std::string> paramsFault(const std::vector<std::string>& names) {
@@ -48,14 +112,44 @@ std::optional<std::string> physicsFault(const Shots& shots) {
 
 }  // namespace
 
+std::variant<FitSummary, SceneRefusal> fitJsonLines(
+    std::string_view text, const FitOptions& options,
+    const std::function<void(const FitLine&)>& line) {
+  auto read = inputsIn(text);
+  if (auto* refused = std::get_if<SceneRefusal>(&read)) return *refused;
+  const Inputs& inputs = std::get<Inputs>(read);
+  FitSummary summary;
+  summary.shots = inputs.size();
+  summary.refused = refusedIn(inputs);
+  InOrder order(inputs.size(), line);
+  std::mutex reporting;
+  std::size_t fitted = 0;
+  parallelFor(inputs.size(), threadsFor(options.threads), [&](std::size_t i) {
+    const io::ShotInput& in = inputs[i];
+    if (!in.recording) {
+      order.done(i, refusedLine(in));
+      return;
+    }
+    if (raised(options.cancel)) return;
+    const ShotFit f = fitShot(*in.recording, options);
+    // A fit the cancel cut short is no fit of the shot.
+    if (raised(options.cancel)) return;
+    order.done(i, {io::fitToJson(f, *in.recording).dump(), ""});
+    if (!options.progress) return;
+    const std::lock_guard<std::mutex> lock(reporting);
+    options.progress(++fitted, summary.shots - summary.refused);
+  });
+  summary.cancelled = raised(options.cancel);
+  if (summary.cancelled) order.handOnTheRest();
+  return summary;
+}
+
 std::variant<std::string, SceneRefusal> fitJsonText(std::string_view text,
                                                     const FitOptions& options) {
-  auto shots = shotsIn(text);
-  if (auto* refused = std::get_if<SceneRefusal>(&shots)) return *refused;
   std::string out;
-  for (const ShotFit& f : fitShots(std::get<Shots>(shots), options)) {
-    out += io::fitToJson(f).dump() + "\n";
-  }
+  const auto run =
+      fitJsonLines(text, options, [&](const FitLine& line) { out += line.text + "\n"; });
+  if (const auto* refused = std::get_if<SceneRefusal>(&run)) return *refused;
   return out;
 }
 
@@ -85,7 +179,11 @@ std::variant<std::string, SceneRefusal> calibrateJsonText(std::string_view text,
   o.threads = request.threads;
   o.progress = request.progress;
   o.cancel = request.cancel;
-  return io::calibrationToJson(calibrate(shots, o), shots).dump(2) + "\n";
+  Calibration c = calibrate(shots, o);
+  parallelFor(c.fits.size(), threadsFor(o.threads), [&](std::size_t i) {
+    reviewFit(shots[i], c.physics, c.fits[i], o.evals, FitObjective::Full, o.cancel);
+  });
+  return io::calibrationToJson(c, shots).dump(2) + "\n";
 }
 
 std::variant<std::string, SceneRefusal> recordingJsonText(std::string_view scene,

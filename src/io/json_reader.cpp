@@ -19,6 +19,13 @@ class PathTrackingBuilder {
  public:
   using string_t = json::string_t;
 
+  PathTrackingBuilder() = default;
+  // A document cut short (by a syntax error, or by memory running out) is freed without
+  // allocating.
+  ~PathTrackingBuilder() { dismantle(root_); }
+  PathTrackingBuilder(const PathTrackingBuilder&) = delete;
+  PathTrackingBuilder& operator=(const PathTrackingBuilder&) = delete;
+
   bool null() { return add(nullptr); }
   bool boolean(bool v) { return add(v); }
   bool number_integer(json::number_integer_t v) { return add(v); }
@@ -123,7 +130,26 @@ class PathTrackingBuilder {
   ParseError error_;
 };
 
+// Deeper than any document nineball reads (a recorded shot's samples are five levels down),
+// with room; a deeper one is left to nlohmann's destructor below it.
+constexpr int kDismantledDepth = 8;
+
+void dismantleTo(json& v, int depth) {
+  if (depth == 0) return;
+  if (v.is_array()) {
+    for (json& element : v.get_ref<json::array_t&>()) dismantleTo(element, depth - 1);
+    v.get_ref<json::array_t&>().clear();
+  } else if (v.is_object()) {
+    for (auto& member : v.get_ref<json::object_t&>()) dismantleTo(member.second, depth - 1);
+    v.get_ref<json::object_t&>().clear();
+  }
+}
+
 }  // namespace
+
+void dismantle(json& v) {
+  dismantleTo(v, kDismantledDepth);
+}
 
 json readJson(std::string_view text) {
   const bool blank = std::all_of(text.begin(), text.end(), [](char c) {

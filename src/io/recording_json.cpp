@@ -42,6 +42,23 @@ std::string idOf(const json& v) {
   refuse("id", "expected a string or an integer, found " + describe(v));
 }
 
+// The id a shot gives, whatever else is wrong with it: a refusal's line carries it back.
+ordered_json idGiven(const json& shot) {
+  if (!shot.is_object()) return nullptr;
+  const json* id = optional(shot, "id");
+  if (!id || !(id->is_string() || id->is_number_integer())) return nullptr;
+  return ordered_json::parse(id->dump());
+}
+
+// The id as the recording gave it: an integer's digits as a JSON integer again.
+ordered_json idToJson(const Recording& r) {
+  if (r.integer_id) {
+    ordered_json n = ordered_json::parse(r.id, nullptr, false);
+    if (n.is_number_integer()) return n;
+  }
+  return r.id;
+}
+
 ordered_json tableToJson(const TableDef& t) {
   for (const std::string& name : TableDef::names()) {
     const TableDef n = *TableDef::named(name);
@@ -66,21 +83,44 @@ ordered_json tableToJson(const TableDef& t) {
   return j;
 }
 
-// The refusal of a shot, named by where it stands in the input.
-ParseError refusedShot(const std::string& where, const std::string& why) {
-  return {where + ": " + why};
+// A parsed document, freed without needing memory (dismantle).
+class Document {
+ public:
+  explicit Document(json v) : v_(std::move(v)) {}
+  ~Document() { dismantle(v_); }
+  Document(const Document&) = delete;
+  Document& operator=(const Document&) = delete;
+
+  const json& operator*() const { return v_; }
+
+ private:
+  json v_;
+};
+
+ShotInput shotFrom(const json& v, std::string where) {
+  ShotInput in;
+  in.where = std::move(where);
+  in.id = idGiven(v);
+  try {
+    in.recording = recordingFromJson(v);
+  } catch (const ParseError& e) {
+    in.refusal = e.message;
+  }
+  return in;
 }
 
-std::variant<std::vector<Recording>, ParseError> shotsOf(const json& doc) {
-  std::vector<Recording> shots;
-  const bool many = doc.is_array();
-  if (many && doc.empty()) return ParseError{"expected at least one recorded shot"};
-  for (std::size_t i = 0; i < (many ? doc.size() : 1); ++i) {
-    try {
-      shots.push_back(recordingFromJson(many ? doc[i] : doc));
-    } catch (const ParseError& e) {
-      return many ? refusedShot("shot " + std::to_string(i + 1), e.message) : e;
-    }
+std::variant<std::vector<ShotInput>, ParseError> shotsOf(const json& doc) {
+  if (doc.is_object()) return std::vector<ShotInput>{shotFrom(doc, "")};
+  if (!doc.is_array()) {
+    return ParseError{
+        "expected a recorded shot (an object), an array of them or JSON Lines, "
+        "found " +
+        describe(doc)};
+  }
+  if (doc.empty()) return ParseError{"expected at least one recorded shot"};
+  std::vector<ShotInput> shots;
+  for (std::size_t i = 0; i < doc.size(); ++i) {
+    shots.push_back(shotFrom(doc[i], "shot " + std::to_string(i + 1)));
   }
   return shots;
 }
@@ -97,6 +137,24 @@ void forEachLine(std::string_view text, const std::function<bool(int, std::strin
     if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
     if (!each(number, line)) return;
   }
+}
+
+std::vector<ShotInput> linesOf(std::string_view text) {
+  std::vector<ShotInput> shots;
+  forEachLine(text, [&](int number, std::string_view line) {
+    std::string where = "line " + std::to_string(number);
+    try {
+      const Document doc(readJson(line));
+      shots.push_back(shotFrom(*doc, where));
+    } catch (const ParseError& e) {
+      ShotInput unreadable;
+      unreadable.where = std::move(where);
+      unreadable.refusal = e.message;
+      shots.push_back(std::move(unreadable));
+    }
+    return true;
+  });
+  return shots;
 }
 
 // The first line that holds something, when it is a whole JSON object by itself: the text is
@@ -119,7 +177,10 @@ Recording recordingFromJson(const json& v) {
   expectObject(v, "");
   allowOnly(v, "", {"id", "table", "physics", "balls", "cue_ball"});
   Recording r;
-  if (const json* id = optional(v, "id")) r.id = idOf(*id);
+  if (const json* id = optional(v, "id")) {
+    r.id = idOf(*id);
+    r.integer_id = id->is_number_integer();
+  }
   if (const json* t = optional(v, "table")) r.table = parseTable(*t);
   if (const json* p = optional(v, "physics")) r.physics = parsePhysics(*p);
   const json& balls = required(v, "", "balls");
@@ -134,31 +195,36 @@ Recording recordingFromJson(const json& v) {
   return r;
 }
 
-std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text) {
+std::string ShotInput::namedRefusal() const {
+  return where.empty() ? refusal : where + ": " + refusal;
+}
+
+std::variant<std::vector<ShotInput>, ParseError> readRecordings(std::string_view text) {
+  std::optional<Document> doc;
   try {
-    return shotsOf(readJson(text));
+    doc.emplace(readJson(text));
   } catch (const ParseError& e) {
     // One document that does not parse whole, unless it is one shot a line.
     if (!firstLineIsAnObject(text)) return e;
+    return linesOf(text);
   }
+  return shotsOf(**doc);
+}
+
+std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text) {
+  auto read = readRecordings(text);
+  if (auto* refused = std::get_if<ParseError>(&read)) return *refused;
   std::vector<Recording> shots;
-  std::optional<ParseError> refused;
-  forEachLine(text, [&](int number, std::string_view line) {
-    try {
-      shots.push_back(recordingFromJson(readJson(line)));
-      return true;
-    } catch (const ParseError& e) {
-      refused = refusedShot("line " + std::to_string(number), e.message);
-      return false;
-    }
-  });
-  if (refused) return *refused;
+  for (ShotInput& in : std::get<std::vector<ShotInput>>(read)) {
+    if (!in.recording) return ParseError{in.namedRefusal()};
+    shots.push_back(std::move(*in.recording));
+  }
   return shots;
 }
 
 ordered_json recordingToJson(const Recording& r) {
   ordered_json j;
-  j["id"] = r.id;
+  j["id"] = idToJson(r);
   j["table"] = tableToJson(r.table);
   j["physics"] = physicsToJson(r.physics);
   ordered_json balls = ordered_json::object();
@@ -188,31 +254,53 @@ ordered_json sceneToJson(const Scene& scene) {
   return j;
 }
 
-ordered_json fitToJson(const ShotFit& fit) {
+ordered_json fitToJson(const ShotFit& fit, const Recording& shot) {
   ordered_json names;
   for (std::size_t i = 0; i < fit.names.size(); ++i) names[std::to_string(i)] = fit.names[i];
   ordered_json j;
-  j["id"] = fit.id;
+  j["id"] = idToJson(shot);
   j["scene"] = sceneToJson(fit.scene);
   j["names"] = names;
   j["strike_time"] = fit.strike_time;
   j["rmse_m"] = {{"full", fit.rmse.full}, {"early", fit.rmse.early}};
   j["evals"] = fit.evals;
+  j["warnings"] = fit.warnings;
+  j["unreproduced"] = fit.unreproduced;
   return j;
 }
+
+ordered_json refusalToJson(const ShotInput& shot) {
+  ordered_json j = ordered_json::object();
+  if (!shot.id.is_null()) j["id"] = shot.id;
+  j["error"] = shot.refusal;
+  return j;
+}
+
+namespace {
+
+std::size_t unreproducedBalls(const Calibration& c, const std::vector<std::size_t>& set) {
+  std::size_t balls = 0;
+  for (std::size_t i : set) balls += c.fits.at(i).unreproduced.size();
+  return balls;
+}
+
+}  // namespace
 
 ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots) {
   ordered_json j;
   j["physics"] = physicsToJson(c.physics);
-  j["train"] = {{"median_rmse_m", c.train_median}, {"shots", c.train.size()}};
+  j["train"] = {{"median_rmse_m", c.train_median},
+                {"shots", c.train.size()},
+                {"unreproduced_balls", unreproducedBalls(c, c.train)}};
   j["holdout"] = {
       {"median_rmse_m", c.holdout.empty() ? ordered_json(nullptr) : ordered_json(c.holdout_median)},
-      {"shots", c.holdout.size()}};
+      {"shots", c.holdout.size()},
+      {"unreproduced_balls", unreproducedBalls(c, c.holdout)}};
   ordered_json per_shot = ordered_json::array();
   std::vector<bool> held(shots.size(), false);
   for (std::size_t i : c.holdout) held[i] = true;
   for (std::size_t i = 0; i < c.fits.size(); ++i) {
-    ordered_json one = fitToJson(c.fits[i]);
+    ordered_json one = fitToJson(c.fits[i], shots[i]);
     one["set"] = held[i] ? "holdout" : "train";
     per_shot.push_back(one);
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -13,8 +14,28 @@
 // fitted shots and calibrated physics out.
 namespace nineball::io {
 
-/// Recorded shots: one JSON object, an array of them, or JSON Lines (one object a line). Each
-/// is checked (recordingFault); a refusal names the shot ("shot 3: balls.red.t: ...").
+/// One shot of a text of recorded shots: read and checked, or refused by itself.
+struct ShotInput {
+  /// Where it stands: "shot 3" (of an array), "line 4" (of JSON Lines), "" (a lone object).
+  std::string where;
+  /// The shot, read and checked (recordingFault); nothing when it is refused.
+  std::optional<Recording> recording;
+  /// Why it is refused, naming the field ("balls.red.t: decreasing at sample 5").
+  std::string refusal;
+  /// Its id as given (a string or an integer), else null: a refusal's line carries it.
+  nlohmann::ordered_json id;
+
+  /// The refusal named by where the shot stands: "shot 3: balls.red.t: ...".
+  std::string namedRefusal() const;
+};
+
+/// Recorded shots: one JSON object, an array of them, or JSON Lines (one object a line), each
+/// read and checked by itself. Refused whole (a ParseError) only when the text holds no shots:
+/// not JSON (nor JSON Lines), an empty array, a document neither an object nor an array.
+std::variant<std::vector<ShotInput>, ParseError> readRecordings(std::string_view text);
+
+/// The shots of readRecordings all read, or the first refusal, named by where the shot stands
+/// ("shot 3: balls.red.t: ...").
 std::variant<std::vector<Recording>, ParseError> parseRecordings(std::string_view text);
 
 /// One recorded shot from its object.
@@ -26,11 +47,15 @@ nlohmann::ordered_json recordingToJson(const Recording& r);
 /// A scene as `nineball sim` reads it: table, physics, balls, shot, step.
 nlohmann::ordered_json sceneToJson(const Scene& scene);
 
-/// A fitted shot: {"id", "scene", "names", "strike_time", "rmse_m": {"full", "early"},
-/// "evals"}.
-nlohmann::ordered_json fitToJson(const ShotFit& fit);
+/// A fitted shot of the recording `shot`: {"id" (as the recording gave it), "scene", "names",
+/// "strike_time", "rmse_m": {"full", "early"}, "evals", "warnings", "unreproduced"}.
+nlohmann::ordered_json fitToJson(const ShotFit& fit, const Recording& shot);
 
-/// {"physics", "train": {"median_rmse_m", "shots"}, "holdout": {...}, "per_shot": [...]}.
+/// A refused shot's line: {"id" (only when it had one), "error"}.
+nlohmann::ordered_json refusalToJson(const ShotInput& shot);
+
+/// {"physics", "train": {"median_rmse_m", "shots", "unreproduced_balls"}, "holdout": {...},
+/// "per_shot": [...]}.
 nlohmann::ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots);
 
 /// Sets the named physics parameters as a scene's "physics" object would ("rolling_friction",

@@ -1,17 +1,22 @@
 // The `nineball fit` and `nineball calibrate` contracts, run through the real binary.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
 #include "app/cli_runner.hpp"
+#include "app/fit_command.hpp"
+#include "common/limits.hpp"
 #include "fit/carom_shot.hpp"
 #include "io/recording_json.hpp"
 #include "io/scene_json.hpp"
 
 using nineball::testing::CliOutcome;
 using nineball::testing::runNineball;
+using nineball::testing::runOnDocument;
 using nineball::testing::shellQuoted;
 using nineball::testing::TempFile;
 
@@ -48,8 +53,10 @@ TEST(FitCli, PrintsOneLineAShotWhoseSceneReproducesTheFit) {
   std::size_t n = 0;
   while (std::getline(lines, line)) {
     const auto j = nlohmann::ordered_json::parse(line);
-    EXPECT_EQ(keys(j),
-              (std::vector<std::string>{"id", "scene", "names", "strike_time", "rmse_m", "evals"}));
+    EXPECT_EQ(keys(j), (std::vector<std::string>{"id", "scene", "names", "strike_time", "rmse_m",
+                                                 "evals", "warnings", "unreproduced"}));
+    EXPECT_TRUE(j["warnings"].is_array());
+    EXPECT_EQ(j["unreproduced"], nlohmann::ordered_json::array());
     EXPECT_EQ(j["id"], shots[n].id);
     // The cue ball (the first to move) is 0; the others follow as the recording lists them.
     EXPECT_EQ(j["names"]["0"], "white");
@@ -92,8 +99,9 @@ TEST(FitCli, RefusesBadRecordingsByName) {
   backwards["balls"]["red"]["t"][5] = 0.0;
   CliOutcome r = refused(backwards);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("balls.red.t: not increasing at sample 5"), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find("balls.red.t: decreasing at sample 5"), std::string::npos) << r.err;
+  // The refused shot's line in its place.
+  EXPECT_EQ(r.out, "{\"id\":\"shot-1\",\"error\":\"balls.red.t: decreasing at sample 5\"}\n");
 
   nlohmann::json unknown = good;
   unknown["speed"] = 3;
@@ -116,6 +124,7 @@ TEST(FitCli, RefusesBadRecordingsByName) {
   r = refused(nlohmann::json::array({good, nlohmann::json{{"balls", 3}}}));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("shot 2: balls"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 of 2 shots refused"), std::string::npos) << r.err;
 
   r = refused(good, " --objective middle");
   EXPECT_EQ(r.status, 2);
@@ -135,11 +144,178 @@ TEST(FitCli, ReadsOneShotPrettyPrintedAnArrayOfThemAndJsonLines) {
   EXPECT_EQ(lines(a.dump(2)), 1u);
   EXPECT_EQ(lines(nlohmann::json::array({a, b}).dump(2)), 2u);
   EXPECT_EQ(lines(a.dump() + "\n\n" + b.dump() + "\n"), 2u);
-  // A bad line of JSON Lines is named by its number.
+  // A bad line of JSON Lines is named by its number, and has its line.
   TempFile file(a.dump() + "\n{\"balls\": }\n");
   const CliOutcome r = runNineball("fit " + shellQuoted(file.path()) + " --evals 60");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("line 2:"), std::string::npos) << r.err;
+  std::istringstream out(r.out);
+  std::string first, second;
+  std::getline(out, first);
+  std::getline(out, second);
+  EXPECT_TRUE(nlohmann::json::parse(first).contains("scene")) << first;
+  EXPECT_EQ(keys(nlohmann::ordered_json::parse(second)), std::vector<std::string>{"error"});
+}
+
+std::vector<nlohmann::json> linesOf(const std::string& out) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+// Two samples 1e-200 s apart imply 6e+196 m/s: once a crash (SIGSEGV), now a refusal by name.
+const char* const kImpossible =
+    R"({"id": "impossible", "balls": {"white": {"t": [0, 1e-200], "x": [-0.6, -0.5994],)"
+    R"( "y": [0, 0]}}})";
+
+TEST(FitCli, ARefusedShotHasItsLineInItsPlaceAndTheOthersAreFitted) {
+  const Recording a = recorded(19.0, 3.0, 1);
+  const Recording b = recorded(25.0, 2.0, 2);
+  TempFile file(io::recordingToJson(a).dump() + "\n" + kImpossible + "\n" +
+                io::recordingToJson(b).dump() + "\n");
+  const CliOutcome r = runNineball("fit " + shellQuoted(file.path()) + " --evals 200");
+  EXPECT_EQ(r.status, 2) << r.err;
+  const std::vector<nlohmann::json> lines = linesOf(r.out);
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_EQ(lines[0]["id"], "shot-1");
+  EXPECT_TRUE(lines[0]["rmse_m"]["full"].is_number());
+  EXPECT_EQ(lines[1], (nlohmann::json{{"id", "impossible"},
+                                      {"error", "balls.white: samples 0-1 imply 6e+196 m/s"}}));
+  EXPECT_EQ(lines[2]["id"], "shot-2");
+  EXPECT_TRUE(lines[2]["rmse_m"]["full"].is_number());
+  EXPECT_NE(r.err.find("line 2: balls.white: samples 0-1 imply 6e+196 m/s"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("1 of 3 shots refused"), std::string::npos) << r.err;
+}
+
+TEST(FitCli, ARefusedShotWithoutAnIdHasAnErrorAlone) {
+  CliOutcome r = runOnDocument("fit", R"({"balls": {"white": {"t": [0, 1e-200],)"
+                                      R"( "x": [-0.6, -0.5994], "y": [0, 0]}}})");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "{\"error\":\"balls.white: samples 0-1 imply 6e+196 m/s\"}\n");
+  EXPECT_NE(r.err.find(": balls.white: samples 0-1 imply 6e+196 m/s"), std::string::npos) << r.err;
+  // What is no JSON at all is refused whole.
+  r = runOnDocument("fit", "[{\"balls\": ");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST(FitCli, FitsRepeatedTimes) {
+  Recording shot = recorded(19.0, 3.0, 1);
+  for (RecordedPath& b : shot.balls) {
+    for (std::size_t i = 3; i < b.t.size(); i += 3) b.t[i] = b.t[i - 1];
+  }
+  const CliOutcome r = runOnDocument("fit --evals 200", io::recordingToJson(shot).dump());
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::vector<nlohmann::json> lines = linesOf(r.out);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(lines[0]["rmse_m"]["full"].is_number()) << r.out;
+}
+
+TEST(FitCli, PrintsAnIdAsItCame) {
+  nlohmann::json a = io::recordingToJson(recorded(19.0, 3.0, 1));
+  nlohmann::json b = a;
+  a["id"] = 123;
+  b["id"] = "123";
+  const CliOutcome r = runOnDocument(
+      "fit --evals 60", nlohmann::json::array({a, b, nlohmann::json::parse(kImpossible)}).dump());
+  const std::vector<nlohmann::json> lines = linesOf(r.out);
+  ASSERT_EQ(lines.size(), 3u) << r.out << r.err;
+  EXPECT_EQ(lines[0]["id"], 123);
+  EXPECT_EQ(lines[1]["id"], "123");
+}
+
+// Standard output that raises SIGINT once its first line is out, as if Ctrl-C were pressed
+// then.
+class CtrlCAfterTheFirstLine : public std::stringbuf {
+ protected:
+  int sync() override {
+    if (!pressed_ && str().find('\n') != std::string::npos) {
+      pressed_ = true;
+      std::raise(SIGINT);
+    }
+    return std::stringbuf::sync();
+  }
+
+ private:
+  bool pressed_ = false;
+};
+
+TEST(FitCli, PrintsEachLineOnceDoneAndStopsAtCtrlC) {
+  TempFile file(jsonLines({recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2)}));
+  app::FitCommandOptions options;
+  options.path = file.path();
+  options.evals = 200;
+  options.threads = 1;
+  CtrlCAfterTheFirstLine printed;
+  std::ostream out(&printed);
+  std::istringstream in;
+  std::ostringstream err;
+  void (*const before)(int) = std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGINT, before);
+  // The first shot's line is out while the second is still to fit: Ctrl-C then stops it.
+  EXPECT_EQ(app::runFit(options, in, out, err), 130);
+  const std::vector<nlohmann::json> lines = linesOf(printed.str());
+  ASSERT_EQ(lines.size(), 1u) << printed.str();
+  EXPECT_EQ(lines[0]["id"], "shot-1");
+  EXPECT_NE(err.str().find("interrupted: 1 of 2 shots printed"), std::string::npos) << err.str();
+  // Ctrl-C does again what it did before the run.
+  EXPECT_EQ(std::signal(SIGINT, before), before);
+}
+
+TEST(FitCli, StopsAtSigtermAndExits130) {
+  TempFile file(jsonLines({recorded(19.0, 3.0, 1), recorded(25.0, 2.0, 2)}));
+  const auto start = std::chrono::steady_clock::now();
+  const CliOutcome r =
+      runNineball("fit " + shellQuoted(file.path()) + " --evals 1000000 --threads 1", "/dev/null",
+                  "timeout --preserve-status -s TERM 1 ");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.status, 130) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("interrupted: 0 of 2 shots printed"), std::string::npos) << r.err;
+  EXPECT_LT(seconds, 10.0);
+}
+
+// A ball at rest sampled every millisecond for 1000 s, the most samples a ball may have:
+// 12 MB of JSON, over 100 MB parsed.
+std::string longestRecording() {
+  std::string t, x;
+  for (std::size_t i = 0; i < limits::kMaxRecordedSamples; ++i) {
+    t += (i ? "," : "") + std::to_string(i) + "e-3";
+    x += i ? ",0" : "0";
+  }
+  return R"({"balls": {"white": {"t": [)" + t + "], \"x\": [" + x + "], \"y\": [" + x + "]}}}";
+}
+
+TEST(FitCli, SaysWhenMemoryRunsOutInsteadOfAborting) {
+#ifdef NINEBALL_SANITIZED
+  GTEST_SKIP() << "the sanitizers' shadow memory does not fit under an address-space limit";
+#endif
+  TempFile file(longestRecording());
+  // Address-space limits (KiB) above what nineball needs to start, below what the file needs.
+  for (int limit : {30000, 60000}) {
+    for (const std::string command : {"fit", "calibrate"}) {
+      const std::string params = command == "calibrate" ? " --params rolling_friction" : "";
+      const CliOutcome r =
+          runNineball(command + " " + shellQuoted(file.path()) + params + " --threads 2",
+                      "/dev/null", "ulimit -v " + std::to_string(limit) + "; ");
+      EXPECT_EQ(r.status, 1) << limit << " KiB: " << r.err;
+      EXPECT_EQ(r.err, "nineball " + command + ": out of memory\n") << limit << " KiB";
+    }
+  }
+}
+
+TEST(CalibrateCli, RefusesTheRunNamingARefusedShot) {
+  const nlohmann::json good = io::recordingToJson(recorded(19.0, 3.0, 1));
+  const CliOutcome r =
+      runOnDocument("calibrate --params rolling_friction",
+                    nlohmann::json::array({good, good, nlohmann::json::parse(kImpossible)}).dump());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("shot 3: balls.white: samples 0-1 imply 6e+196 m/s"), std::string::npos)
+      << r.err;
 }
 
 TEST(CalibrateCli, PrintsThePhysicsAndTheMediansOfBothSets) {
@@ -153,8 +329,12 @@ TEST(CalibrateCli, PrintsThePhysicsAndTheMediansOfBothSets) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
   EXPECT_EQ(keys(j), (std::vector<std::string>{"physics", "train", "holdout", "per_shot"}));
+  EXPECT_EQ(keys(j["train"]),
+            (std::vector<std::string>{"median_rmse_m", "shots", "unreproduced_balls"}));
   EXPECT_EQ(j["train"]["shots"], 2);
   EXPECT_EQ(j["holdout"]["shots"], 1);
+  EXPECT_TRUE(j["holdout"]["unreproduced_balls"].is_number_integer());
+  EXPECT_TRUE(j["per_shot"][0]["warnings"].is_array());
   EXPECT_TRUE(j["holdout"]["median_rmse_m"].is_number());
   EXPECT_EQ(j["per_shot"].size(), 3u);
   // The calibrated block reads back as a scene's physics.

@@ -631,7 +631,9 @@ def test_fit_is_what_the_command_line_prints_and_finds_the_shot(tmp_path):
     out = subprocess.run([BINARY, "fit", str(path), "--evals", "3000"], check=True,
                          capture_output=True, text=True).stdout
     assert json.loads(out) == got
-    assert list(got) == ["id", "scene", "names", "strike_time", "rmse_m", "evals"]
+    assert list(got) == ["id", "scene", "names", "strike_time", "rmse_m", "evals", "warnings",
+                         "unreproduced"]
+    assert got["unreproduced"] == []
     # The printed scene simulates (it is a complete scene of nineball sim).
     assert nineball.simulate(got["scene"])["end"] == "rest"
     assert abs(got["strike_time"] - 0.83) < 0.01
@@ -641,12 +643,32 @@ def test_fit_and_calibrate_refuse_bad_input_by_name():
     shot = nineball.record(carom_scene(), ["white", "yellow", "red"])
     broken = json.loads(json.dumps(shot))
     broken["balls"]["red"]["x"] = broken["balls"]["red"]["x"][:-1]
-    with pytest.raises(ValueError, match="balls.red"):
-        nineball.fit(broken, evals=100)
+    # A refused shot has its dict in its place, as the command line's line; the others are fitted.
+    impossible = {"id": 7, "balls": {"white": {"t": [0, 1e-200], "x": [-0.6, -0.5994],
+                                               "y": [0, 0]}}}
+    got = nineball.fit([shot, broken, impossible], evals=100)
+    assert len(got) == 3 and "rmse_m" in got[0]
+    assert list(got[1]) == ["id", "error"] and got[1]["error"].startswith("balls.red")
+    assert got[2] == {"id": 7, "error": "balls.white: samples 0-1 imply 6e+196 m/s"}
+    # What holds no shot at all is refused whole.
+    with pytest.raises(ValueError, match="invalid JSON"):
+        nineball.fit("[{", evals=100)
     with pytest.raises(ValueError, match="objective"):
         nineball.fit(shot, objective="late")
     with pytest.raises(ValueError, match="nonsense"):
         nineball.calibrate([shot], ["nonsense"])
+    with pytest.raises(ValueError, match="shot 2: balls.white: samples 0-1 imply 6e"):
+        nineball.calibrate([shot, impossible], ["rolling_friction"])
+
+
+def test_fit_takes_repeated_times_and_gives_an_integer_id_back():
+    shot = nineball.record(carom_scene(), ["white", "yellow", "red"])
+    shot["id"] = 123
+    for ball in shot["balls"].values():
+        ball["t"][5::5] = ball["t"][4:-1:5]
+    got = nineball.fit(shot, evals=200)[0]
+    assert got["id"] == 123
+    assert isinstance(got["warnings"], list)
 
 
 def test_calibrate_returns_physics_a_scene_takes():
@@ -655,6 +677,7 @@ def test_calibrate_returns_physics_a_scene_takes():
     got = nineball.calibrate(shots, "rolling_friction", holdout=0.0, evals=300, refit_evals=20,
                              candidates=4)
     assert list(got) == ["physics", "train", "holdout", "per_shot"]
+    assert list(got["train"]) == ["median_rmse_m", "shots", "unreproduced_balls"]
     assert got["train"]["shots"] == 3 and got["holdout"]["shots"] == 0
     assert got["holdout"]["median_rmse_m"] is None
     assert nineball.simulate(dict(carom_scene(), physics=got["physics"]))["end"] == "rest"
