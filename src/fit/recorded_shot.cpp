@@ -99,6 +99,9 @@ namespace {
 // A ball has moved once it lies this far from where it stood, at two samples running: five
 // times a good tracker's noise, and twice over, so that noise alone almost never moves it (m).
 constexpr double kMoved = 0.02;
+// Samples this near where a ball stood are the ball at rest seen through the tracker's noise:
+// with 5 mm on each coordinate, 1 % of them fall further out (m).
+constexpr double kStill = 0.012;
 // The cue ball's first samples in motion that give the first guess of its line (s).
 constexpr double kEarlyWindow = 0.1;
 // A turn this sharp between frames is a contact (rad).
@@ -119,40 +122,6 @@ Vec2 medianOf(const RecordedPath& b, std::size_t from, std::size_t to) {
 
 Vec2 at(const RecordedPath& b, std::size_t i) {
   return {b.x[i], b.y[i]};
-}
-
-struct Onset {
-  std::size_t index = 0;  // the first sample in motion; size() when it never moves
-  bool from_start = false;
-};
-
-// A ball moving from the first sample: the median of its first three samples lies kMoved
-// from that of the next three (medians, so that one sample of noise moves neither).
-bool movingFromStart(const RecordedPath& b) {
-  if (b.t.size() < 6) return length(at(b, b.t.size() - 1) - at(b, 0)) > kMoved;
-  return length(medianOf(b, 3, 6) - medianOf(b, 0, 3)) > kMoved;
-}
-
-Onset onsetOf(const RecordedPath& b) {
-  const std::size_t n = b.t.size();
-  if (movingFromStart(b)) return {0, true};
-  const Vec2 first = medianOf(b, 0, std::min<std::size_t>(5, n));
-  auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - first) > kMoved; };
-  // Three samples running, each kMoved away: noise alone all but never does that.
-  for (std::size_t i = 0; i < n; ++i) {
-    if (far(i) && far(i + 1) && far(i + 2)) return {i, false};
-  }
-  return {n, false};
-}
-
-// Where a ball stood before it moved: the samples up to 0.1 s before its onset when there are
-// any (a slow ball creeps before it reaches kMoved), else all before it.
-Vec2 restOf(const RecordedPath& b, const Onset& o) {
-  if (o.index == 0) return at(b, 0);
-  if (o.index >= b.t.size()) return medianOf(b, 0, b.t.size());  // it never moves
-  std::size_t last = o.index;
-  while (last > 1 && b.t[last - 1] > b.t[o.index] - 0.1) --last;
-  return medianOf(b, 0, last);
 }
 
 // Least squares line p(t) = a + v (t - tm) through samples [from, to).
@@ -195,6 +164,96 @@ std::size_t laterSample(const RecordedPath& b, std::size_t i) {
   return next;
 }
 
+struct Onset {
+  std::size_t index = 0;  // the first sample in motion; size() when it never moves
+  bool from_start = false;
+  double time = 0.0;  // when it began to move, as its first samples in motion tell
+};
+
+// Three samples running kMoved from `origin`: noise alone all but never does that.
+std::size_t firstAway(const RecordedPath& b, Vec2 origin) {
+  const std::size_t n = b.t.size();
+  auto far = [&](std::size_t i) { return i >= n || length(at(b, i) - origin) > kMoved; };
+  for (std::size_t i = 1; i < n; ++i) {
+    if (far(i) && far(i + 1) && far(i + 2)) return i;
+  }
+  return n;
+}
+
+// Where a ball stood from its first sample, less the tracker's noise: the median of its
+// first samples up to `limit` that follow each other without a gap (after a gap the tracker
+// saw it move again), then of those the ones within kStill of that median. With `near_first`,
+// only samples within kMoved of the first count (the ball may move from it at once).
+Vec2 leadingRest(const RecordedPath& b, std::size_t limit, bool near_first) {
+  const std::size_t end = std::min(limit, b.t.size());
+  std::size_t k = 1;
+  while (k < end && b.t[k] - b.t[k - 1] <= kEarlyWindow &&
+         (!near_first || length(at(b, k) - at(b, 0)) <= kMoved)) {
+    ++k;
+  }
+  const Vec2 around = medianOf(b, 0, k);
+  RecordedPath still;
+  for (std::size_t i = 0; i < k; ++i) {
+    if (length(at(b, i) - around) > kStill) continue;
+    still.x.push_back(b.x[i]);
+    still.y.push_back(b.y[i]);
+  }
+  return still.x.empty() ? around : medianOf(still, 0, still.x.size());
+}
+
+// A ball struck slowly creeps before it lies kMoved away: its samples in the 0.1 s before its
+// onset are left out when there are others.
+Vec2 restOf(const RecordedPath& b, const Onset& o) {
+  if (o.index == 0) return at(b, 0);
+  std::size_t last = std::min(o.index, b.t.size());
+  while (last > 1 && o.index < b.t.size() && b.t[last - 1] > b.t[o.index] - 0.1) --last;
+  return leadingRest(b, last, false);
+}
+
+// The end of the samples from `from` that a line through the first motion takes: those up to
+// kEarlyWindow after it, at least two, and at least one at a later time (clocks repeat).
+std::size_t earlyEnd(const RecordedPath& b, std::size_t from) {
+  const std::size_t n = b.t.size();
+  std::size_t to = std::min(from + 2, n);
+  while (to < n && (b.t[to] <= b.t[from] + kEarlyWindow || !(b.t[to - 1] > b.t[from]))) ++to;
+  return to;
+}
+
+// A tracker samples a ball at rest only when it moves again, so its first sample in motion
+// can follow its last at rest by seconds, and its first samples can all be moving: when it
+// began to move is read off the line through its first moving samples, carried back to
+// where it stood. At or before the first sample: it was moving when the recording began
+// (the cue ball of a recording that starts at the strike).
+Onset onsetOf(const RecordedPath& b) {
+  const std::size_t n = b.t.size();
+  Onset o;
+  o.index = firstAway(b, leadingRest(b, b.t.size(), true));
+  if (o.index >= n) {
+    o.time = b.t.back();
+    return o;
+  }
+  const Vec2 rest = restOf(b, o);
+  const std::size_t end = earlyEnd(b, o.index);
+  // Samples seconds apart (a ball nudged while the tracker looked away) carry no line back:
+  // it moved by the first of them.
+  if (b.t[end - 1] - b.t[o.index] > 2.0 * kEarlyWindow || !(b.t[end - 1] > b.t[o.index])) {
+    o.time = b.t[o.index];
+    return o;
+  }
+  const Line line = lineThrough(b, o.index, end);
+  const double speed2 = dot(line.v, line.v);
+  const double back = speed2 > 0.0 ? line.tm + dot(rest - line.a, line.v) / speed2 : b.t[0];
+  const double frame = b.t[laterSample(b, 0)] - b.t[0];
+  if (o.index == 1 && frame <= kEarlyWindow && back <= b.t[0] + 0.25 * frame) {
+    o.index = 0;
+    o.from_start = true;
+    o.time = std::min(back, b.t[0]);
+    return o;
+  }
+  o.time = std::clamp(back, b.t[o.index - 1], b.t[o.index]);
+  return o;
+}
+
 bool nearCushion(Vec2 p, const TableDef& table, double radius) {
   const double margin = radius + 0.01;
   return std::abs(p.x) > table.length / 2.0 - margin || std::abs(p.y) > table.width / 2.0 - margin;
@@ -220,8 +279,8 @@ std::size_t cueIndex(const Recording& r, const std::vector<Onset>& onsets) {
   for (std::size_t i = 0; i < r.balls.size(); ++i) {
     const RecordedPath& b = r.balls[i];
     if (onsets[i].index >= b.t.size()) continue;
-    // Ties (two balls moving from the first sample) go to the one listed first.
-    const double when = b.t[onsets[i].index];
+    // Ties go to the one listed first.
+    const double when = onsets[i].time;
     if (when < earliest) {
       best = i;
       earliest = when;
@@ -288,7 +347,7 @@ RecordedShot readRecording(const Recording& r) {
   for (std::size_t k = 1; k < s.order.size(); ++k) {
     const RecordedPath& b = r.balls[s.order[k]];
     const Onset& ob = onsets[s.order[k]];
-    if (ob.index < b.t.size()) s.first_event = std::min(s.first_event, b.t[ob.index]);
+    if (ob.index < b.t.size()) s.first_event = std::min(s.first_event, ob.time);
   }
   for (std::size_t i = start; i < n && c.t[i] < s.first_event; ++i) {
     const Vec2 off = at(c, i) - (line.a + line.v * (c.t[i] - line.tm));

@@ -17,6 +17,16 @@ constexpr double kMaxElevation = 35.0 * kPi / 180.0;
 constexpr double kTipMargin = 0.95;
 // A simulation at least this long (s), so that a window that ends at the strike still runs.
 constexpr double kMinRun = 1e-3;
+// How far a searched place may stray from where the samples put the ball (m): a tracker
+// places a ball at rest to a few millimetres, and a search left free trades centimetres of a
+// ball's place, which a few samples at rest barely see, against a better fit of a chaotic end.
+constexpr double kPlaceReach = 0.01;
+
+Vec2 withinReach(Vec2 place, Vec2 recorded) {
+  const Vec2 d = place - recorded;
+  const double far = length(d);
+  return far > kPlaceReach ? recorded + d * (kPlaceReach / far) : place;
+}
 
 }  // namespace
 
@@ -37,16 +47,23 @@ Variables withPlaces(const RecordedShot& s, Variables x) {
   return x;
 }
 
-Vec2 placeOf(const RecordedShot& s, const Variables& x, std::size_t i) {
-  const std::size_t at = kVariables + 2 * i;
-  if (x.size() > at + 1) return {x[at], x[at + 1]};
+Vec2 recordedPlace(const RecordedShot& s, const Variables& x, std::size_t i) {
   return i == 0 ? s.cueAtStrike(x[kStrike]) : s.rest[i];
 }
 
+Vec2 placeOf(const RecordedShot& s, const Variables& x, std::size_t i) {
+  const std::size_t at = kVariables + 2 * i;
+  if (x.size() > at + 1) return {x[at], x[at + 1]};
+  return recordedPlace(s, x, i);
+}
+
 Variables legal(const RecordedShot& s, const PhysicsParams& p, Variables x) {
+  x[kStrike] = std::clamp(x[kStrike], s.earliest, s.latest);
   if (x.size() > kVariables) {
     std::vector<Vec2> places;
-    for (std::size_t i = 0; i < s.rest.size(); ++i) places.push_back(placeOf(s, x, i));
+    for (std::size_t i = 0; i < s.rest.size(); ++i) {
+      places.push_back(withinReach(placeOf(s, x, i), recordedPlace(s, x, i)));
+    }
     separate(places, s.recording->table, p.ball_radius);
     for (std::size_t i = 0; i < places.size(); ++i) {
       x[kVariables + 2 * i] = places[i].x;
@@ -61,7 +78,6 @@ Variables legal(const RecordedShot& s, const PhysicsParams& p, Variables x) {
     x[kHeight] *= reach / tip;
   }
   x[kElevation] = std::clamp(x[kElevation], 0.0, kMaxElevation);
-  x[kStrike] = std::clamp(x[kStrike], s.earliest, s.latest);
   return x;
 }
 

@@ -18,6 +18,9 @@ using Variables = std::vector<double>;
 /// The shot's variables and every ball's place at the strike.
 Variables withPlaces(const RecordedShot& s, Variables x);
 
+/// Ball i's place at the strike as the recording's samples put it.
+Vec2 recordedPlace(const RecordedShot& s, const Variables& x, std::size_t i);
+
 /// Ball i's place at the strike: searched, or as the recording's samples put it.
 Vec2 placeOf(const RecordedShot& s, const Variables& x, std::size_t i);
 
@@ -33,8 +36,8 @@ struct Window {
 Window wholeShot(FitObjective objective);
 
 /// The variables made legal: a speed the scene takes, a tip inside the miscue limit, an
-/// elevation from 0 to 35 degrees, a strike before the cue ball moves, balls apart and on
-/// the table.
+/// elevation from 0 to 35 degrees, a strike before the cue ball moves, balls within a
+/// centimetre of where the samples put them, apart and on the table.
 Variables legal(const RecordedShot& s, const PhysicsParams& p, Variables x);
 
 /// The scene the variables describe, simulated up to the window's end (the reference engine,
