@@ -30,7 +30,9 @@ nlohmann::ordered_json sceneToJson(const Scene& scene);
 /// "evals"}.
 nlohmann::ordered_json fitToJson(const ShotFit& fit);
 
-/// {"physics", "train": {"median_rmse_m", "shots"}, "holdout": {...}, "per_shot": [...]}.
+/// {"physics", "parameters": {name: {"value", "stderr"}}, "uncertainty": {"method",
+/// "resamples"}, "correlation": [[...]], "converged", "convergence", "train": {"median_rmse_m",
+/// "shots"}, "holdout": {...}, "per_shot": [...]}.
 nlohmann::ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots);
 
 /// Sets the named physics parameters as a scene's "physics" object would ("rolling_friction",
