@@ -87,20 +87,6 @@ std::vector<fit::Found> searchAll(const std::vector<fit::RecordedShot>& read,
   return found;
 }
 
-template <typename T>
-std::vector<T> picked(const std::vector<T>& all, const std::vector<std::size_t>& which) {
-  std::vector<T> out;
-  for (std::size_t i : which) out.push_back(all[i]);
-  return out;
-}
-
-std::vector<const fit::RecordedShot*> pointersTo(const std::vector<fit::RecordedShot>& read,
-                                                 const std::vector<std::size_t>& which) {
-  std::vector<const fit::RecordedShot*> out;
-  for (std::size_t i : which) out.push_back(&read[i]);
-  return out;
-}
-
 fit::PhysicsScorer::Settings scorerSettings(const PhysicsParams& base, const CalibrateOptions& o) {
   fit::PhysicsScorer::Settings s;
   s.base = base;
@@ -111,11 +97,25 @@ fit::PhysicsScorer::Settings scorerSettings(const PhysicsParams& base, const Cal
   return s;
 }
 
-// The training shots and the fits a refit of each starts from.
+// The training shots, the fits a refit of each starts from, and the seed of each one's searches
+// (the shot's own, whatever else is trained).
 struct Training {
   std::vector<const fit::RecordedShot*> shots;
   std::vector<fit::Found> anchors;
+  std::vector<std::uint64_t> seeds;
 };
+
+Training trainingOf(const std::vector<fit::RecordedShot>& read,
+                    const std::vector<fit::Found>& first, const std::vector<std::size_t>& train,
+                    std::uint64_t seed) {
+  Training t;
+  for (std::size_t i : train) {
+    t.shots.push_back(&read[i]);
+    t.anchors.push_back(first[i]);
+    t.seeds.push_back(seed + i);
+  }
+  return t;
+}
 
 // Where the locating rounds left the search: the best physics, the steps of the next round, the
 // training shots fitted under the best, and how many physics they scored.
@@ -138,7 +138,7 @@ std::vector<fit::Found> anchoredAt(const Training& t, const std::vector<fit::Fou
   if (!afresh) return out;
   parallelFor(out.size(), threadsFor(o.threads), [&](std::size_t k) {
     const fit::Found fresh =
-        fit::searchShot(*t.shots[k], p, o.evals, FitObjective::Full, o.seed + k, o.cancel);
+        fit::searchShot(*t.shots[k], p, o.evals, FitObjective::Full, t.seeds[k], o.cancel);
     if (fresh.error < out[k].error) out[k] = fresh;
   });
   return out;
@@ -217,20 +217,24 @@ PhysicsSearch searchScored(fit::PhysicsScorer& scorer, const Located& l, int bud
   return search;
 }
 
-// Each shot fitted under the calibrated physics from where the search left it (the training
-// shots' refits under the best physics, the held-out shots' first fits), and afresh, the better
-// kept: a shot refitted only from where other physics left it may sit in a false minimum the
-// new physics has moved.
+// Each shot fitted under the calibrated physics from where the search left it: a training
+// shot from its refit under the best physics (from its fit searched afresh at the located
+// physics, a step or two away), a held-out shot from its first fit, and that one afresh too, the
+// better kept (a shot refitted only from where other physics left it may sit in a false minimum
+// the new physics has moved).
 std::vector<ShotFit> finalFits(const std::vector<fit::RecordedShot>& read,
-                               const PhysicsParams& physics, std::vector<fit::Found> from,
-                               const CalibrateOptions& o) {
+                               const PhysicsParams& physics, const std::vector<fit::Found>& from,
+                               const std::vector<bool>& afresh, const CalibrateOptions& o) {
   std::vector<ShotFit> fits(read.size());
   parallelFor(read.size(), threadsFor(o.threads), [&](std::size_t i) {
-    const fit::Found refined =
+    fit::Found best =
         fit::refineShot(read[i], physics, from[i].x, o.evals / 2, FitObjective::Full, o.cancel);
-    const fit::Found fresh =
-        fit::searchShot(read[i], physics, o.evals, FitObjective::Full, o.seed + i, o.cancel);
-    fits[i] = fit::shotFitOf(read[i], physics, fresh.error < refined.error ? fresh : refined);
+    if (afresh[i]) {
+      const fit::Found fresh =
+          fit::searchShot(read[i], physics, o.evals, FitObjective::Full, o.seed + i, o.cancel);
+      if (fresh.error < best.error) best = fresh;
+    }
+    fits[i] = fit::shotFitOf(read[i], physics, best);
   });
   return fits;
 }
@@ -346,7 +350,7 @@ Calibration calibrate(const std::vector<Recording>& shots, const CalibrateOption
   say(o, "fitting " + std::to_string(shots.size()) + " shots under the recordings' physics");
   const std::vector<fit::Found> first = searchAll(read, base, o);
 
-  const Located located = locate({pointersTo(read, c.train), picked(first, c.train)}, base, o);
+  const Located located = locate(trainingOf(read, first, c.train, o.seed), base, o);
   fit::PhysicsScorer scorer(located.training.shots, located.training.anchors,
                             scorerSettings(base, o));
   const PhysicsSearch search =
@@ -355,11 +359,15 @@ Calibration calibrate(const std::vector<Recording>& shots, const CalibrateOption
   std::string why;
   c.physics = *o.set(base, c.values, why);
 
-  say(o, "fitting every shot afresh under the calibrated physics");
+  say(o, "fitting every shot under the calibrated physics, the held-out ones afresh too");
   std::vector<fit::Found> from = first;
+  std::vector<bool> afresh(shots.size(), true);
   const std::vector<fit::Found>& refits = scorer.refitsOf(c.values);
-  for (std::size_t k = 0; k < c.train.size(); ++k) from[c.train[k]] = refits[k];
-  c.fits = finalFits(read, c.physics, from, o);
+  for (std::size_t k = 0; k < c.train.size(); ++k) {
+    from[c.train[k]] = refits[k];
+    afresh[c.train[k]] = false;
+  }
+  c.fits = finalFits(read, c.physics, from, afresh, o);
   c.train_median = medianOf(c.fits, c.train);
   c.holdout_median = medianOf(c.fits, c.holdout);
 
