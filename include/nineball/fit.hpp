@@ -135,14 +135,40 @@ struct CalibrateOptions {
   int evals = 6000;       ///< simulations of each shot's first fit
   int refit_evals = 900;  ///< simulations of each shot's refit under each candidate physics
   int candidates = 60;    ///< physics candidates the search tries
+  int resamples = 200;    ///< of the training shots, for the standard errors
   int threads = 0;
   /// Called with a line of progress (a stage, a candidate and its median).
   std::function<void(const std::string&)> progress;
   const std::atomic<bool>* cancel = nullptr;
 };
 
+/// A physics the calibration scored: a pure function of its values, the shots, the options and
+/// the seed (however often, and in whichever round, it is tried).
+struct ScoredPhysics {
+  std::vector<double> values;  ///< the searched parameters, in options.params' order
+  /// m: each training shot's full RMSE refitted under this physics, in Calibration::train's
+  /// order; empty for a physics the setter refuses.
+  std::vector<double> errors;
+  double median = 0.0;  ///< m, of `errors`; infinite for a physics refused
+};
+
+/// How far the calibrated values can be trusted: the spread of the calibration's result over
+/// resamples of the training shots (a bootstrap), which needs no further simulation.
+struct CalibrationUncertainty {
+  std::string method = "bootstrap over shots";
+  int resamples = 0;
+  /// Each parameter's standard error, in options.params' order; empty where it cannot be
+  /// determined (`why_not` says why).
+  std::vector<std::optional<double>> stderrs;
+  /// Rows and columns in options.params' order: ones on the diagonal, empty where either
+  /// parameter's standard error is.
+  std::vector<std::vector<std::optional<double>>> correlation;
+  std::string why_not;  ///< empty when every standard error is determined
+};
+
 struct Calibration {
   PhysicsParams physics;
+  std::vector<std::string> params;          ///< the parameters' names: options.params
   std::vector<double> values;               ///< the calibrated parameters, in options.params' order
   double train_median = 0.0;                ///< m, the median full RMSE of the training shots
   double holdout_median = 0.0;              ///< m; 0 without held-out shots
@@ -150,6 +176,13 @@ struct Calibration {
   /// Every shot refitted under the calibrated physics (its warnings and unreproduced balls
   /// left to reviewFit).
   std::vector<ShotFit> fits;
+  CalibrationUncertainty uncertainty;
+  /// The search's last round closed in and no longer lowered the median, and every standard
+  /// error is determined; `convergence` says why, or why not, in a few words.
+  bool converged = false;
+  std::string convergence;
+  /// Every physics the scoring rounds tried (docs/calibrating.md), in the order first tried.
+  std::vector<ScoredPhysics> tried;
 };
 
 /// Calibrates the physics of checked recordings that share one table and physics.

@@ -401,9 +401,13 @@ def calibrate(shots: Shots, params: Iterable[str], holdout: float = 0.5, seed: i
     ``params``: the physics parameters searched, by name (any number the scene's physics
     takes, e.g. "rolling_friction", "cushion_restitution", "ball_friction.a"). A share
     ``holdout`` of the shots (drawn by ``seed``) is kept out of the training and measured
-    under the result. Returns ``physics`` (ready for a scene), ``train`` and ``holdout``
-    (``median_rmse_m``, ``shots``, ``unreproduced_balls``) and ``per_shot`` (each shot's fit,
-    with ``set``). A refused shot raises ValueError naming it ("shot 3: balls.white: ...").
+    under the result. Returns ``physics`` (ready for a scene), ``parameters`` (each one's
+    ``value`` and ``stderr``, None where it cannot be determined), ``uncertainty`` (the
+    standard errors' ``method`` and ``resamples``), ``correlation`` (a list of rows, in
+    ``params`` order), ``converged`` and ``convergence`` (why, or why not), ``train`` and
+    ``holdout`` (``median_rmse_m``, ``shots``, ``unreproduced_balls``) and ``per_shot`` (each
+    shot's fit, with ``set``). A refused shot raises ValueError naming it ("shot 3: balls.white:
+    ...").
     """
     if isinstance(params, str):
         params = params.split(",")

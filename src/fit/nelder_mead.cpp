@@ -47,6 +47,16 @@ bool converged(const std::vector<Point>& v, const Point& step, double tolerance)
   return true;
 }
 
+// A simplex not yet whole (the budget ran out while it was built) spans at least the steps.
+Point extentOf(const std::vector<Point>& v, const Point& step) {
+  Point extent(step.size(), 0.0);
+  for (std::size_t i = 0; i < step.size(); ++i) {
+    if (v.size() < step.size() + 1) extent[i] = std::abs(step[i]);
+    for (const Point& p : v) extent[i] = std::max(extent[i], std::abs(p[i] - v[0][i]));
+  }
+  return extent;
+}
+
 }  // namespace
 
 Minimum nelderMead(const std::function<double(const Point&)>& f, const Point& x0, const Point& step,
@@ -108,7 +118,8 @@ Minimum nelderMead(const std::function<double(const Point&)>& f, const Point& x0
     }
     sort();
   }
-  return {v[0], fv[0], s.evals()};
+  return {v[0], fv[0], s.evals(), v.size() == n + 1 && converged(v, step, tolerance),
+          extentOf(v, step)};
 }
 
 }  // namespace nineball::fit

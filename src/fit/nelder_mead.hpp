@@ -11,6 +11,12 @@ struct Minimum {
   std::vector<double> x;
   double f = 0.0;
   int evals = 0;
+  /// The search stopped because its simplex closed in within the tolerance, not because the
+  /// budget ran out or it was cancelled.
+  bool converged = false;
+  /// Along each coordinate, the furthest the simplex's last vertices lie from `x`: how closely
+  /// the search has pinned the least down.
+  std::vector<double> extent;
 };
 
 /// Nelder and Mead's downhill simplex (Computer Journal 7, 1965) with the standard

@@ -282,11 +282,38 @@ std::size_t unreproducedBalls(const Calibration& c, const std::vector<std::size_
   return balls;
 }
 
+ordered_json numberOrNull(const std::optional<double>& v) {
+  return v ? ordered_json(*v) : ordered_json(nullptr);
+}
+
+ordered_json parametersToJson(const Calibration& c) {
+  ordered_json out = ordered_json::object();
+  for (std::size_t k = 0; k < c.params.size(); ++k) {
+    out[c.params[k]] = {{"value", c.values[k]}, {"stderr", numberOrNull(c.uncertainty.stderrs[k])}};
+  }
+  return out;
+}
+
+ordered_json correlationToJson(const CalibrationUncertainty& u) {
+  ordered_json rows = ordered_json::array();
+  for (const auto& row : u.correlation) {
+    ordered_json out = ordered_json::array();
+    for (const std::optional<double>& r : row) out.push_back(numberOrNull(r));
+    rows.push_back(out);
+  }
+  return rows;
+}
+
 }  // namespace
 
 ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots) {
   ordered_json j;
   j["physics"] = physicsToJson(c.physics);
+  j["parameters"] = parametersToJson(c);
+  j["uncertainty"] = {{"method", c.uncertainty.method}, {"resamples", c.uncertainty.resamples}};
+  j["correlation"] = correlationToJson(c.uncertainty);
+  j["converged"] = c.converged;
+  j["convergence"] = c.convergence;
   j["train"] = {{"median_rmse_m", c.train_median},
                 {"shots", c.train.size()},
                 {"unreproduced_balls", unreproducedBalls(c, c.train)}};

@@ -54,8 +54,9 @@ nlohmann::ordered_json fitToJson(const ShotFit& fit, const Recording& shot);
 /// A refused shot's line: {"id" (only when it had one), "error"}.
 nlohmann::ordered_json refusalToJson(const ShotInput& shot);
 
-/// {"physics", "train": {"median_rmse_m", "shots", "unreproduced_balls"}, "holdout": {...},
-/// "per_shot": [...]}.
+/// {"physics", "parameters": {name: {"value", "stderr"}}, "uncertainty": {"method",
+/// "resamples"}, "correlation": [[...]], "converged", "convergence", "train": {"median_rmse_m",
+/// "shots", "unreproduced_balls"}, "holdout": {...}, "per_shot": [...]}.
 nlohmann::ordered_json calibrationToJson(const Calibration& c, const std::vector<Recording>& shots);
 
 /// Sets the named physics parameters as a scene's "physics" object would ("rolling_friction",

@@ -328,9 +328,34 @@ TEST(CalibrateCli, PrintsThePhysicsAndTheMediansOfBothSets) {
                   "--refit-evals 30 --candidates 6");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(keys(j), (std::vector<std::string>{"physics", "train", "holdout", "per_shot"}));
+  EXPECT_EQ(keys(j),
+            (std::vector<std::string>{"physics", "parameters", "uncertainty", "correlation",
+                                      "converged", "convergence", "train", "holdout", "per_shot"}));
   EXPECT_EQ(keys(j["train"]),
             (std::vector<std::string>{"median_rmse_m", "shots", "unreproduced_balls"}));
+  // Each parameter in --params order, its value the calibrated physics', with its standard
+  // error (a number, or null where the search cannot determine it).
+  EXPECT_EQ(keys(j["parameters"]),
+            (std::vector<std::string>{"rolling_friction", "cushion_restitution"}));
+  for (const auto& [name, p] : j["parameters"].items()) {
+    EXPECT_EQ(keys(p), (std::vector<std::string>{"value", "stderr"}));
+    EXPECT_EQ(p["value"], j["physics"][name]);
+    EXPECT_TRUE(p["stderr"].is_number() || p["stderr"].is_null());
+  }
+  EXPECT_EQ(j["uncertainty"],
+            nlohmann::ordered_json({{"method", "bootstrap over shots"}, {"resamples", 200}}));
+  ASSERT_EQ(j["correlation"].size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    ASSERT_EQ(j["correlation"][k].size(), 2u);
+    EXPECT_EQ(j["correlation"][k][k], 1.0);
+  }
+  EXPECT_EQ(j["correlation"][0][1], j["correlation"][1][0]);
+  EXPECT_TRUE(j["converged"].is_boolean());
+  EXPECT_FALSE(j["convergence"].get<std::string>().empty());
+  // Six candidates cannot fit a quadratic surface in two parameters: no standard errors, and
+  // so no convergence, each saying why.
+  EXPECT_FALSE(j["converged"].get<bool>());
+  EXPECT_NE(r.err.find("calibrated: rolling_friction "), std::string::npos) << r.err;
   EXPECT_EQ(j["train"]["shots"], 2);
   EXPECT_EQ(j["holdout"]["shots"], 1);
   EXPECT_TRUE(j["holdout"]["unreproduced_balls"].is_number_integer());

@@ -100,10 +100,22 @@ TEST(Calibrate, RecoversRollingResistanceAndCushionRestitution) {
   o.refit_evals = 300;
   o.candidates = 60;
   const Calibration c = calibrate(shots, o);
-  std::printf("rolling %.5f cushion %.4f train median %.4f\n", c.values[0], c.values[1],
-              c.train_median);
+  const std::vector<std::optional<double>>& stderrs = c.uncertainty.stderrs;
+  ASSERT_TRUE(stderrs[0] && stderrs[1]) << c.uncertainty.why_not;
+  std::printf(
+      "rolling %.6f +- %.6f cushion %.5f +- %.5f (correlation %.2f) train median %.5f; %s\n",
+      c.values[0], *stderrs[0], c.values[1], *stderrs[1],
+      c.uncertainty.correlation[0][1].value_or(NAN), c.train_median, c.convergence.c_str());
   EXPECT_NEAR(c.values[0], 0.006, 0.05 * 0.006);
   EXPECT_NEAR(c.values[1], 0.93, 0.05 * 0.93);
+  // The truth within three standard errors, each positive and finite.
+  const double true_values[] = {0.006, 0.93};
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_GT(*stderrs[k], 0.0);
+    EXPECT_TRUE(std::isfinite(*stderrs[k]));
+    EXPECT_LT(std::abs(c.values[k] - true_values[k]), 3.0 * *stderrs[k]) << o.params[k];
+  }
+  EXPECT_EQ(c.uncertainty.correlation[0][1], c.uncertainty.correlation[1][0]);
   // A tracker's noise of 5 mm on each coordinate is an RMSE of 7.1 mm at best.
   EXPECT_LT(c.train_median, 0.012);
 }

@@ -676,7 +676,13 @@ def test_calibrate_returns_physics_a_scene_takes():
              for k, (h, v) in enumerate([(19.0, 3.0), (12.0, 2.5), (25.0, 3.5)])]
     got = nineball.calibrate(shots, "rolling_friction", holdout=0.0, evals=300, refit_evals=20,
                              candidates=4)
-    assert list(got) == ["physics", "train", "holdout", "per_shot"]
+    assert list(got) == ["physics", "parameters", "uncertainty", "correlation", "converged",
+                         "convergence", "train", "holdout", "per_shot"]
+    assert list(got["parameters"]) == ["rolling_friction"]
+    assert got["parameters"]["rolling_friction"]["value"] == got["physics"]["rolling_friction"]
+    assert got["uncertainty"] == {"method": "bootstrap over shots", "resamples": 200}
+    assert got["correlation"] == [[1.0]]
+    assert isinstance(got["converged"], bool) and got["convergence"]
     assert list(got["train"]) == ["median_rmse_m", "shots", "unreproduced_balls"]
     assert got["train"]["shots"] == 3 and got["holdout"]["shots"] == 0
     assert got["holdout"]["median_rmse_m"] is None
