@@ -251,24 +251,31 @@ std::string percent(double share) {
   return text;
 }
 
-// The parameter (by index) the last round's simplex spans more than kPinned of its standard
-// error in, or none: the search has pinned the best down more finely than the shots determine it.
+// The last round's simplex is pinned down in a parameter when it spans under kPinned of the
+// parameter's standard error: the search has found the best more finely than the shots
+// determine it.
 constexpr double kPinned = 0.5;
 
+// The first parameter with a standard error that the last round's simplex spans more of, if any.
 std::optional<std::size_t> unpinned(const LastRound& last, const CalibrationUncertainty& u) {
   for (std::size_t k = 0; k < last.extent.size(); ++k) {
-    if (!u.stderrs[k] || last.extent[k] > kPinned * *u.stderrs[k]) return k;
+    if (u.stderrs[k] && last.extent[k] > kPinned * *u.stderrs[k]) return k;
   }
   return std::nullopt;
 }
 
-// Why the search has not converged, or has (then `converged` is set).
+bool everyStderr(const CalibrationUncertainty& u) {
+  return std::all_of(u.stderrs.begin(), u.stderrs.end(),
+                     [](const std::optional<double>& e) { return e.has_value(); });
+}
+
+// Why the search has converged or not, and whether (in `converged`), judged by its last round
+// alone: the standard errors' own verdict is added by judgeConvergence.
 std::string convergenceOf(const LastRound& last, const Calibration& c, bool& converged) {
   const double fell = last.from > 0.0 && std::isfinite(last.from) && std::isfinite(last.to)
                           ? (last.from - last.to) / last.from
                           : 0.0;
   const std::string in_it = " (the median fell by " + percent(fell) + " in it)";
-  const std::optional<std::size_t> loose = unpinned(last, c.uncertainty);
   converged = false;
   if (fell >= kStillFalling) {
     return std::string(last.closed ? "the last round's simplex closed in, but"
@@ -279,13 +286,16 @@ std::string convergenceOf(const LastRound& last, const Calibration& c, bool& con
     converged = true;
     return "simplex within tolerance in the last round" + in_it;
   }
-  if (!loose) {
-    converged = true;
-    return "the last round's simplex spans under half a standard error of every parameter" + in_it;
+  if (const std::optional<std::size_t> loose = unpinned(last, c.uncertainty)) {
+    return "candidate budget spent while the last round's simplex still spanned more than half "
+           "a standard error of " +
+           c.params[*loose] + in_it;
   }
-  return "candidate budget spent while the last round's simplex still spanned more than half a "
-         "standard error of " +
-         c.params[*loose] + in_it;
+  if (!everyStderr(c.uncertainty)) {
+    return "candidate budget spent before the last round's simplex closed in" + in_it;
+  }
+  converged = true;
+  return "the last round's simplex spans under half a standard error of every parameter" + in_it;
 }
 
 // Converged: the last round no longer lowered the median by kStillFalling, its simplex closed in
