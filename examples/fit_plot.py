@@ -111,7 +111,8 @@ def main():
         rec = recorded["balls"][name]
         ts, xs, ys = paths[sid]
         d = [math.hypot(x - rx, y - ry) * 1000 for x, y, rx, ry in zip(xs, ys, rec["x"], rec["y"])]
-        c = colour(name, sid) if name != "white" else "#555555"
+        c = colour(name, sid)
+        c = "#555555" if c == "#f2f2f2" else c  # white on white would not show
         after = [t - strike for t in ts]
         err.plot(after, d, lw=0.4, color=c, alpha=0.35)
         err.plot(after, running_rms(d, WINDOW), lw=1.5, color=c, label=f"{name} (0.5 s RMS)")
