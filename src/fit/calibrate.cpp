@@ -172,7 +172,7 @@ void judgeConvergence(const fit::LastRound& last, const CalibrateOptions& o, Cal
 std::string withError(double value, const std::optional<double>& error) {
   char text[96];
   if (!error) {
-    std::snprintf(text, sizeof text, "%.6g (standard error undetermined)", value);
+    std::snprintf(text, sizeof text, "%.6g +- undetermined", value);
     return text;
   }
   const int places = std::max(0, 1 - static_cast<int>(std::floor(std::log10(*error))));
@@ -182,11 +182,11 @@ std::string withError(double value, const std::optional<double>& error) {
 
 std::string uncertaintyLine(const Calibration& c, const CalibrateOptions& o) {
   const CalibrationUncertainty& u = c.uncertainty;
-  std::string line = "calibrated:";
+  std::string line = "calibrated (standard errors: " + u.method + ", " +
+                     std::to_string(u.resamples) + " resamples):";
   for (std::size_t k = 0; k < o.params.size(); ++k) {
     line += (k ? ", " : " ") + o.params[k] + " " + withError(c.values[k], u.stderrs[k]);
   }
-  line += " (standard errors: " + u.method + ", " + std::to_string(u.resamples) + " resamples)";
   for (std::size_t j = 0; j < o.params.size(); ++j) {
     for (std::size_t k = j + 1; k < o.params.size(); ++k) {
       if (!u.correlation[j][k]) continue;
