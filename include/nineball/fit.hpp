@@ -177,8 +177,9 @@ struct Calibration {
   /// left to reviewFit).
   std::vector<ShotFit> fits;
   CalibrationUncertainty uncertainty;
-  /// The search's last round closed in and no longer lowered the median, and every standard
-  /// error is determined; `convergence` says why, or why not, in a few words.
+  /// The search's last round lowered the median by less than 1 %, its simplex closed in (within
+  /// its tolerance, or to under half of every standard error), and every standard error is
+  /// determined; `convergence` says why, or why not, in a few words.
   bool converged = false;
   std::string convergence;
   /// Every physics the scoring rounds tried (docs/calibrating.md), in the order first tried.

@@ -352,10 +352,13 @@ TEST(CalibrateCli, PrintsThePhysicsAndTheMediansOfBothSets) {
   EXPECT_EQ(j["correlation"][0][1], j["correlation"][1][0]);
   EXPECT_TRUE(j["converged"].is_boolean());
   EXPECT_FALSE(j["convergence"].get<std::string>().empty());
-  // Six candidates cannot fit a quadratic surface in two parameters: no standard errors, and
-  // so no convergence, each saying why.
-  EXPECT_FALSE(j["converged"].get<bool>());
-  EXPECT_NE(r.err.find("calibrated: rolling_friction "), std::string::npos) << r.err;
+  // The last line of progress: the calibrated values with their standard errors.
+  EXPECT_EQ(r.err.back(), '\n');
+  EXPECT_NE(r.err.substr(r.err.rfind('\n', r.err.size() - 2))
+                .find("calibrate: calibrated (standard errors: bootstrap over shots, 200 "
+                      "resamples): rolling_friction "),
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(j["train"]["shots"], 2);
   EXPECT_EQ(j["holdout"]["shots"], 1);
   EXPECT_TRUE(j["holdout"]["unreproduced_balls"].is_number_integer());

@@ -188,6 +188,33 @@ TEST(Calibrate, ReportsTheSameUncertaintyForTheSameSeed) {
   EXPECT_EQ(one.convergence, two.convergence);
 }
 
+std::optional<PhysicsParams> setRollingAndPocket(const PhysicsParams& base,
+                                                 const std::vector<double>& v, std::string&) {
+  if (!(v[0] >= 0.0 && v[1] >= 0.0 && v[1] <= 1.0)) return std::nullopt;
+  PhysicsParams p = base;
+  p.rolling_friction = v[0];
+  p.pocket_restitution = v[1];
+  return p;
+}
+
+TEST(Calibrate, LeavesAParameterTheShotsDoNotFeelWithoutAStandardError) {
+  // A carom table has no pockets: whatever the back of a pocket does, no shot can tell.
+  const std::vector<Recording> shots = heavierCloth(3);
+  CalibrateOptions o = rollingOnly();
+  o.params = {"rolling_friction", "pocket_restitution"};
+  o.start = {PhysicsParams::carom().rolling_friction, PhysicsParams::carom().pocket_restitution};
+  o.set = &setRollingAndPocket;
+  o.candidates = 12;
+  const Calibration c = calibrate(shots, o);
+  EXPECT_FALSE(c.uncertainty.stderrs[1]);
+  EXPECT_FALSE(c.converged);
+  EXPECT_NE(c.convergence.find("pocket_restitution: the median does not tell its values apart"),
+            std::string::npos)
+      << c.convergence;
+  expectAProperCorrelation(c.uncertainty, 2);
+  EXPECT_FALSE(c.uncertainty.correlation[0][1]);
+}
+
 // A physics scored with per-shot errors that make a bowl about `centre` in each parameter.
 ScoredPhysics bowlAt(const std::vector<double>& x, const std::vector<double>& centre,
                      const std::vector<double>& curvature, const std::vector<double>& tilts) {
