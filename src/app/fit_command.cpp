@@ -262,30 +262,34 @@ int calibrateAndPrint(const CalibrateCommandOptions& options, const StopOnSignal
   return out ? kExitOk : kExitInternal;
 }
 
-}  // namespace
-
-int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
-           std::ostream& err) {
+// Runs a command with Ctrl-C and SIGTERM caught and memory held back, so that running out of
+// it ends with a message, not an abort.
+template <typename Run>
+int stoppableAndMemorySafe(const char* command, std::ostream& err, Run run) {
   const StopOnSignals signals;
   const MemoryReserve reserve;
   try {
-    return fitAndPrint(options, signals, in, out, err);
+    return run(signals);
   } catch (const std::bad_alloc&) {
-    err << "nineball fit: out of memory\n";
+    err << "nineball " << command << ": out of memory\n";
     return kExitInternal;
   }
 }
 
+}  // namespace
+
+int runFit(const FitCommandOptions& options, std::istream& in, std::ostream& out,
+           std::ostream& err) {
+  return stoppableAndMemorySafe("fit", err, [&](const StopOnSignals& signals) {
+    return fitAndPrint(options, signals, in, out, err);
+  });
+}
+
 int runCalibrate(const CalibrateCommandOptions& options, std::istream& in, std::ostream& out,
                  std::ostream& err) {
-  const StopOnSignals signals;
-  const MemoryReserve reserve;
-  try {
+  return stoppableAndMemorySafe("calibrate", err, [&](const StopOnSignals& signals) {
     return calibrateAndPrint(options, signals, in, out, err);
-  } catch (const std::bad_alloc&) {
-    err << "nineball calibrate: out of memory\n";
-    return kExitInternal;
-  }
+  });
 }
 
 }  // namespace nineball::app
