@@ -16,7 +16,7 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
 - match(script): a rack played from a match script, computer players included.
-- preset(name) / PRESETS: the physics presets ("real", "paper", "carom") with every parameter.
+- preset(name) / PRESETS: the physics presets ("real", "paper", "carom", "snooker") with every parameter.
 - record(scene, names=None, ...): a scene as a tracker would record it (a recorded shot).
 - fit(shots, evals=12000, ...): the shot that best reproduces each recorded shot.
 - calibrate(shots, params, holdout=0.5, ...): physics parameters fitted to recorded shots.
