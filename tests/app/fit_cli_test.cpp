@@ -252,8 +252,8 @@ TEST(FitCli, PrintsEachLineOnceDoneAndStopsAtCtrlC) {
   std::ostream out(&printed);
   std::istringstream in;
   std::ostringstream err;
+  // Ctrl-C as a terminal delivers it: a test run started in the background inherits it ignored.
   void (*const before)(int) = std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGINT, before);
   // The first shot's line is out while the second is still to fit: Ctrl-C then stops it.
   EXPECT_EQ(app::runFit(options, in, out, err), 130);
   const std::vector<nlohmann::json> lines = linesOf(printed.str());
@@ -261,7 +261,7 @@ TEST(FitCli, PrintsEachLineOnceDoneAndStopsAtCtrlC) {
   EXPECT_EQ(lines[0]["id"], "shot-1");
   EXPECT_NE(err.str().find("interrupted: 1 of 2 shots printed"), std::string::npos) << err.str();
   // Ctrl-C does again what it did before the run.
-  EXPECT_EQ(std::signal(SIGINT, before), before);
+  EXPECT_EQ(std::signal(SIGINT, before), SIG_DFL);
 }
 
 TEST(FitCli, StopsAtSigtermAndExits130) {

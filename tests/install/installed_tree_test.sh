@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs this build into a temporary prefix as a user would (cmake --install) and checks the
-# installed tree: only the two programs in bin, the icon, desktop entry and metainfo where
-# desktops look, a headless command that runs, the game launcher that finds nineball-game
+# installed tree: only the two programs in bin, the library others build on (headers, two
+# static libraries, a CMake package), the icon, desktop entry and metainfo where desktops look,
+# a headless command that runs, the game launcher that finds nineball-game
 # beside it, and resources found in the prefix, not in the source tree the build came from.
 # With PYTHON and SITE (the Python module built), also the module in PREFIX/SITE, imported
 # from there.
@@ -29,9 +30,20 @@ if ! "$cmake" --install "$build" --prefix "$prefix" >"$tmp/install.log" 2>&1; th
 fi
 
 top=$(cd "$prefix" && echo *)
+[[ $top == "bin include lib share" ]] || fail "the prefix holds: $top (expected bin, include, lib and share)"
+# The library others build on: the public headers, the core and io libraries, the CMake package
+# (tests/install/consumer_test.sh builds a project on it).
+headers=$(cd "$prefix/include" && find . -type f | sort)
+expected=$(cd "$(dirname "$0")/../../include" && find . -type f | sort)
+[[ $headers == "$expected" ]] || fail "include holds: $headers (expected the public headers alone)"
+libs=$(cd "$prefix/lib" && find . -type f -not -path "./python*" | sort)
+expected=$(printf '%s\n' ./cmake/nineball/nineballConfig.cmake ./cmake/nineball/nineballConfigVersion.cmake \
+  ./cmake/nineball/nineballTargets-*.cmake ./cmake/nineball/nineballTargets.cmake \
+  ./libnineball_core.a ./libnineball_io.a)
+[[ $(echo "$libs" | sed 's/nineballTargets-[a-z]*\.cmake/nineballTargets-*.cmake/') == "$expected" ]] ||
+  fail "lib holds: $libs (expected the two libraries and the CMake package)"
 if [[ -n $python ]]; then
-  [[ $top == "bin lib share" ]] || fail "the prefix holds: $top (expected bin, lib and share)"
-  modules=$(cd "$prefix/lib" && find . -type f | sort)
+  modules=$(cd "$prefix/lib" && find . -type f -path "./python*" | sort)
   expected=$(printf '%s\n' "./${site#lib/}/nineball/__init__.py" "./${site#lib/}/nineball/_core.pyi" \
     "./${site#lib/}/nineball/dask.py" "./${site#lib/}/nineball/py.typed" | sort)
   so=$(echo "$modules" | grep '/nineball/_core\..*\.so$')
@@ -41,8 +53,6 @@ if [[ -n $python ]]; then
 r = nineball.simulate({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0, "speed": 1}})
 print(nineball.__file__, r["end"])') || fail "the installed Python module did not run"
   [[ $out == "$prefix/$site/nineball/__init__.py rest" ]] || fail "the Python module said: $out"
-else
-  [[ $top == "bin share" ]] || fail "the prefix holds: $top (expected bin and share only)"
 fi
 programs=$(cd "$prefix/bin" && echo *)
 [[ $programs == "nineball nineball-game" ]] ||

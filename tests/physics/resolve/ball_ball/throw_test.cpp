@@ -1,7 +1,7 @@
 // Ball-ball friction against Alciatore's closed form (TP A.14), with the reference values of
 // ../shared/physics-models.md: the form with the normal speed (1+e)/2 v cos phi at e = 0.95 (the
-// figures TP A.14 publishes, 4.72 and 2.19 deg at 30 and 15 deg, are elastic). Tolerance 0.2 deg (the
-// issue's): the reference values are printed to 0.01 deg, and the closed form and the 3-D
+// figures TP A.14 publishes, 4.72 and 2.19 deg at 30 and 15 deg, are elastic). Tolerance 0.2 deg
+// (the issue's): the reference values are printed to 0.01 deg, and the closed form and the 3-D
 // impulse differ only by rounding.
 #include <gtest/gtest.h>
 
@@ -64,8 +64,8 @@ TEST(Throw, CutInducedStunMatchesTheMeasuredCurve) {
     double phi, speed, reference;
   };
   const Case references[] = {{15, 0.5, 2.25}, {15, 1.0, 2.25}, {15, 2.0, 2.25},
-                            {30, 0.5, 4.84}, {30, 1.0, 4.15}, {30, 2.0, 2.65},
-                            {45, 0.5, 4.77}, {45, 1.0, 3.43}, {45, 2.0, 1.90}};
+                             {30, 0.5, 4.84}, {30, 1.0, 4.15}, {30, 2.0, 2.65},
+                             {45, 0.5, 4.77}, {45, 1.0, 3.43}, {45, 2.0, 1.90}};
   for (const Case& c : references) {
     const Hit h = hit(c.phi, c.speed, {}, p);
     std::printf("[ measured ] throw, stun, cut %.0f deg at %.1f m/s: %.2f deg (reference %.2f)\n",
