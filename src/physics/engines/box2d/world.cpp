@@ -14,6 +14,7 @@
 #include "nineball/cancel.hpp"
 #include "physics/engines/box2d/box2d_clock.hpp"
 #include "physics/engines/box2d/contact_recorder.hpp"
+#include "physics/engines/event_loop.hpp"
 #include "physics/engines/registry.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/model/event_queue.hpp"
@@ -42,11 +43,6 @@ constexpr double kMaxTravelUnitsPerStep = 1.5;
 // Box2D resolves a bounce the world predicted in a step this short (s): the contact solver
 // changes the velocity, and the ball moves by less than a float's rounding of its position.
 constexpr float kBounceStep = 1e-12f;
-// More events than this in a sixtieth of a second (a frozen cluster caught in a loop) end the
-// run: its result is partial, and says so. Steps longer than that (base rates under 60 Hz)
-// may hold as many more as their length calls for.
-constexpr std::size_t kEventsPerStepBase = 10000;
-constexpr double kCapPeriod = 1.0 / 60.0;
 // A ball that may not drop yet is reported this far (m) beyond a drop circle, where its body is
 // moved and the pocket's sensor sees it; the sensor reaches a little further, so that Box2D's
 // float test cannot miss a ball placed on the edge.
@@ -55,7 +51,7 @@ constexpr double kSensorSlack = 0.001;
 
 }  // namespace
 
-struct World::Impl final : physics::EngineBalls {
+struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::RunState {
   struct Ball {
     int id = 0;
     double mass = 0.0;
@@ -79,12 +75,6 @@ struct World::Impl final : physics::EngineBalls {
   std::vector<Ball> balls;
   std::vector<Event> events;
   physics::Resolver resolver{phys, table, search.cushions, events};
-  double time = 0.0;
-  long steps = 0;
-  long pieces = 0;             // Box2D steps taken, for the work budget
-  long resolved = 0;           // events resolved, for the work budget
-  bool exhausted = false;      // the work budget ran out: nothing more moves
-  std::string budget_spent;    // which budget, for the message
   bool contacts_stale = true;  // bodies added or moved by hand: sensors not yet updated
   std::unique_ptr<physics::ArcLog> arc_log;  // every arc followed, when a trace is asked for
 
@@ -206,7 +196,7 @@ struct World::Impl final : physics::EngineBalls {
     throw std::invalid_argument("no ball with id " + std::to_string(id));
   }
 
-  bool settled() const {
+  bool settled() const override {
     for (const Ball& b : balls) {
       if (b.body && b.arc.translating()) return false;
     }
@@ -424,7 +414,7 @@ struct World::Impl final : physics::EngineBalls {
     return sum;
   }
 
-  void resolve(const NextEvent& e) {
+  void resolve(const NextEvent& e) override {
 #ifdef NINEBALL_CHECKED
     // Checked builds (the sanitizer build among them) stop at the first contact that gives
     // energy back, with the rounding of Box2D's single-precision velocities allowed for.
@@ -457,61 +447,37 @@ struct World::Impl final : physics::EngineBalls {
     resolver.resolve(e, *this);
   }
 
+  // --- the balls as the run loop sees them ---
+  std::size_t ballCount() const override {
+    return balls.size();
+  }
+
+  void beginRun() override {
+    if (contacts_stale) updateContacts();
+  }
+
+  // A ball over a pocket may drop only once its sensor has seen it; with the baseline, a piece
+  // ends where a ball would leave Box2D's travel limit.
+  double describe(std::vector<physics::Mover>& into, double end) const override {
+    into.resize(balls.size());
+    double limit = end;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      const Ball& b = balls[i];
+      into[i] = {b.body ? &b.arc : nullptr, b.body && recorder.overPocket(i)};
+      if (sp.baseline && b.body && b.arc.translating())
+        limit = std::min(limit, time + longestPiece(b));
+    }
+    return limit;
+  }
+
+  void carry(double dt) override {
+    if (sp.baseline) transport(dt);
+  }
+
   // Runs to `end` in pieces, each ending at the next event, at the travel limit or at `end`;
   // with `to_rest`, stops the moment the last ball stops travelling.
   void advance(double end, bool to_rest) {
-    if (contacts_stale) updateContacts();
-    const double periods = std::max(1.0, (end - time) / kCapPeriod);
-    const auto cap = static_cast<std::size_t>(
-        periods * static_cast<double>(kEventsPerStepBase + 100 * balls.size()));
-    std::size_t count = 0;
-    bool was_settled = settled();
-    std::vector<physics::Mover> movers(balls.size());
-    while (time < end && !(to_rest && was_settled) && !exhausted) {
-      double limit = end;
-      for (std::size_t i = 0; i < balls.size(); ++i) {
-        const Ball& b = balls[i];
-        movers[i] = {b.body ? &b.arc : nullptr, b.body && recorder.overPocket(i)};
-        if (sp.baseline && b.body && b.arc.translating())
-          limit = std::min(limit, time + longestPiece(b));
-      }
-      const NextEvent e = queue.next(movers, limit);
-      if (e.t > time) {
-        if (sp.baseline) transport(e.t - time);
-        ++pieces;
-      }
-      time = e.t;
-      resolve(e);
-      if (e.kind != NextEvent::Kind::None) {
-        ++count;
-        ++resolved;
-      } else if (e.t <= time) {
-        ++count;  // a piece of no length and no event is no progress: it counts all the same
-      }
-      if (cancelRequested()) {
-        exhausted = true;
-        budget_spent = kCancelledBudget;
-      } else if (count >= cap || resolved >= limits::kMaxEvents || pieces >= limits::kMaxPieces) {
-        exhausted = true;
-        budget_spent =
-            resolved >= limits::kMaxEvents ? std::to_string(limits::kMaxEvents) + " contacts"
-            : pieces >= limits::kMaxPieces ? std::to_string(limits::kMaxPieces) + " pieces"
-                                           : std::to_string(cap) +
-                                                 " contacts in one step (a run of contacts "
-                                                 "that makes no progress)";
-        logger("physics")->info(
-            "t={:.6f}: work budget spent ({} events, {} in this step; {} pieces); stopped", time,
-            resolved, count, pieces);
-      }
-      const bool now_settled = settled();
-      if (!was_settled && now_settled) {
-        Event rest;
-        rest.type = EventType::AllAtRest;
-        rest.t = time;
-        events.push_back(rest);
-      }
-      was_settled = now_settled;
-    }
+    physics::runEvents(*this, queue, *this, end, to_rest, events);
   }
 
   bool runOver(double deadline) const {
@@ -519,7 +485,7 @@ struct World::Impl final : physics::EngineBalls {
   }
 
   double boundary(long n) const {
-    return static_cast<double>(n) / sp.hz;
+    return physics::stepBoundary(n, sp.hz);
   }
 
   void step() {
@@ -610,8 +576,7 @@ void World::runFor(double seconds) {
 
 bool World::stepTowardRest(double deadline) {
   Impl& w = *impl_;
-  if (!w.runOver(deadline)) w.advance(std::min(w.boundary(++w.steps), deadline), true);
-  return w.runOver(deadline);
+  return physics::stepTowardRest(w, w.queue, w, w.sp.hz, deadline, w.events);
 }
 
 void World::runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop) {
@@ -622,10 +587,7 @@ void World::runUntilRest(const std::function<bool(const std::vector<Event>&)>& s
     stepTowardRest(deadline);
     if (stop && stop(w.events)) return;
   }
-  if (!w.settled() && !w.exhausted) {
-    logger("physics")->info("balls still moving after {} s of simulated time; stopped",
-                            w.sp.max_time);
-  }
+  physics::noteStillMoving(w, w, w.sp.max_time);
 }
 
 void World::logArcs() {

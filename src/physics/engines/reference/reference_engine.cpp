@@ -7,9 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/limits.hpp"
-#include "common/log.hpp"
-#include "nineball/cancel.hpp"
+#include "physics/engines/event_loop.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/model/event_queue.hpp"
 #include "physics/model/motion.hpp"
@@ -29,7 +27,9 @@ using physics::NextEvent;
 /// precision, and resolved by the same resolver as the Box2D engine. It is the yardstick the
 /// Box2D engine is measured against. Its steps are only where a caller asks it to stop (a
 /// frame of the window); a run to rest takes none.
-class ReferenceEngine final : public Engine, private physics::EngineBalls {
+class ReferenceEngine final : public Engine,
+                              private physics::EngineBalls,
+                              private physics::LoopEngine {
  public:
   ReferenceEngine(const TableDef& table, const PhysicsParams& physics, const StepParams& step);
 
@@ -38,12 +38,12 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     ball.state = b;
     ball.state.mass = b.mass.value_or(p_.ball_mass);
     ball.on_table = !b.pocket;
-    ball.arc = physics::beginArc(t_, {b.pos, b.vel, b.w}, p_);
+    ball.arc = physics::beginArc(run_.time, {b.pos, b.vel, b.w}, p_);
     balls_.push_back(ball);
     if (!logging_) return;
     log_.addBall(b.id);
     if (b.pocket) {
-      log_.pocket(balls_.size() - 1, t_, b.pos);
+      log_.pocket(balls_.size() - 1, run_.time, b.pos);
     } else {
       logArc(balls_.back());
     }
@@ -56,15 +56,15 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     if (length(shot.tip) > p_.miscue_limit) {
       Event e;
       e.type = EventType::Miscue;
-      e.t = t_;
+      e.t = run_.time;
       e.a = ball_id;
       events_.push_back(e);
       return false;
     }
     const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
     // At the arc's own start its centre is the one it was given, to the bit.
-    const Vec2 at = b.arc.t0 == t_ ? b.arc.start.p : now(b).p;
-    b.arc = physics::beginArc(t_, {at, s.v, s.w}, p_);
+    const Vec2 at = b.arc.t0 == run_.time ? b.arc.start.p : now(b).p;
+    b.arc = physics::beginArc(run_.time, {at, s.v, s.w}, p_);
     logArc(b);
     changed(b);
     return true;
@@ -79,21 +79,20 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   }
 
   void step() override {
-    const double end = boundary(++steps_);
-    if (!exhausted_) run(end, false);
-    t_ = end;
+    const double end = physics::stepBoundary(++run_.steps, sp_.hz);
+    if (!run_.exhausted) run(end, false);
+    run_.time = end;
   }
 
   void runFor(double seconds) override {
-    const double end = t_ + seconds;
+    const double end = run_.time + seconds;
     run(end, false);
-    if (!exhausted_) t_ = end;
+    if (!run_.exhausted) run_.time = end;
   }
 
   void runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop = {}) override;
   bool stepTowardRest(double deadline) override {
-    if (!runOver(deadline)) run(std::min(boundary(++steps_), deadline), true);
-    return runOver(deadline);
+    return physics::stepTowardRest(*this, queue_, run_, sp_.hz, deadline, events_);
   }
 
   void logArcs() override { logging_ = true; }
@@ -101,10 +100,10 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   const physics::ArcLog* arcLog() const override { return logging_ ? &log_ : nullptr; }
 
   bool atRest() const override { return settled(); }
-  bool exhausted() const override { return exhausted_; }
-  const std::string& budgetSpent() const override { return budget_spent_; }
-  double time() const override { return t_; }
-  long steps() const override { return steps_; }
+  bool exhausted() const override { return run_.exhausted; }
+  const std::string& budgetSpent() const override { return run_.budget_spent; }
+  double time() const override { return run_.time; }
+  long steps() const override { return run_.steps; }
   std::vector<BallState> balls() const override {
     std::vector<BallState> out;
     out.reserve(balls_.size());
@@ -138,11 +137,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     resolver_.reset();
     log_ = physics::ArcLog{};
     logging_ = false;
-    resolved_ = 0;
-    steps_ = 0;
-    exhausted_ = false;
-    budget_spent_.clear();
-    t_ = 0.0;
+    run_ = physics::RunState{};
   }
 
  private:
@@ -159,59 +154,43 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     throw std::invalid_argument("no ball with id " + std::to_string(id));
   }
 
-  bool settled() const {
+  // --- the balls as the run loop sees them ---
+  std::size_t ballCount() const override { return balls_.size(); }
+
+  bool settled() const override {
     for (const Ball& b : balls_) {
       if (b.on_table && b.arc.translating()) return false;
     }
     return true;
   }
 
+  double describe(std::vector<physics::Mover>& movers, double end) const override {
+    movers.clear();
+    for (const Ball& b : balls_) movers.push_back({b.on_table ? &b.arc : nullptr, true});
+    return end;
+  }
+
+  void carry(double) override {}  // the closed forms carry every ball
+
+  void resolve(const NextEvent& e) override { resolver_.resolve(e, *this); }
+
   // Runs until `end`, or until every ball has stopped when `to_rest`. Every prediction is kept
   // until its balls change, whatever the run's end: a run cut into steps finds the same events,
   // to the bit, as one run.
   void run(double end, bool to_rest) {
-    bool was_settled = settled();
-    while (t_ < end && !(to_rest && settled()) && !exhausted_) {
-      movers_.clear();
-      for (const Ball& b : balls_) movers_.push_back({b.on_table ? &b.arc : nullptr, true});
-      const NextEvent e = queue_.next(movers_, end);
-      if (e.kind == NextEvent::Kind::None) {
-        t_ = end;
-        break;
-      }
-      t_ = e.t;
-      resolver_.resolve(e, *this);
-      if (cancelRequested()) {
-        exhausted_ = true;
-        budget_spent_ = kCancelledBudget;
-        break;
-      }
-      if (++resolved_ >= limits::kMaxEvents) {
-        exhausted_ = true;
-        budget_spent_ = std::to_string(limits::kMaxEvents) + " contacts";
-        logger("physics")->info("t={:.6f}: work budget spent ({} events); stopped", t_, resolved_);
-        break;
-      }
-      if (!was_settled && settled()) {
-        Event rest;
-        rest.type = EventType::AllAtRest;
-        rest.t = t_;
-        events_.push_back(rest);
-      }
-      was_settled = settled();
-    }
+    physics::runEvents(*this, queue_, run_, end, to_rest, events_);
   }
 
   void changed(const Ball& b) { queue_.changed(static_cast<std::size_t>(&b - balls_.data())); }
 
-  double boundary(long n) const { return static_cast<double>(n) / sp_.hz; }
+  bool runOver(double deadline) const {
+    return settled() || run_.time >= deadline || run_.exhausted;
+  }
 
-  bool runOver(double deadline) const { return settled() || t_ >= deadline || exhausted_; }
-
-  physics::Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, t_, p_); }
+  physics::Kinematics now(const Ball& b) const { return physics::stateAt(b.arc, run_.time, p_); }
 
   void restart(Ball& b, const physics::Kinematics& k) {
-    b.arc = physics::beginArc(t_, k, p_);
+    b.arc = physics::beginArc(run_.time, k, p_);
     logArc(b);
     changed(b);
   }
@@ -243,7 +222,7 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
     a.state.pocket = pocket;
     a.on_table = false;
     queue_.changed(i);
-    if (i < log_.ids().size()) log_.pocket(i, t_, a.state.pos);
+    if (i < log_.ids().size()) log_.pocket(i, run_.time, a.state.pos);
   }
 
   PhysicsParams p_;
@@ -254,14 +233,9 @@ class ReferenceEngine final : public Engine, private physics::EngineBalls {
   std::vector<Event> events_;
   physics::Resolver resolver_;
   physics::EventQueue queue_{search_};
-  std::vector<physics::Mover> movers_;  // kept from event to event: no allocation per event
-  physics::ArcLog log_;                 // filled only once logArcs() has been called
+  physics::ArcLog log_;  // filled only once logArcs() has been called
   bool logging_ = false;
-  long resolved_ = 0;
-  long steps_ = 0;
-  bool exhausted_ = false;
-  std::string budget_spent_;
-  double t_ = 0.0;
+  physics::RunState run_;
 };
 
 ReferenceEngine::ReferenceEngine(const TableDef& table, const PhysicsParams& physics,
@@ -273,7 +247,7 @@ ReferenceEngine::ReferenceEngine(const TableDef& table, const PhysicsParams& phy
       resolver_(p_, table_, search_.cushions, events_) {}
 
 void ReferenceEngine::runUntilRest(const std::function<bool(const std::vector<Event>&)>& stop) {
-  const double deadline = t_ + sp_.max_time;
+  const double deadline = run_.time + sp_.max_time;
   if (!stop) {
     // Nothing to look at between steps: one run, which takes no step (see run()).
     run(deadline, true);
@@ -283,10 +257,7 @@ void ReferenceEngine::runUntilRest(const std::function<bool(const std::vector<Ev
       if (stop(events_)) return;
     }
   }
-  if (!settled() && !exhausted_) {
-    logger("physics")->info("balls still moving after {} s of simulated time; stopped",
-                            sp_.max_time);
-  }
+  physics::noteStillMoving(*this, run_, sp_.max_time);
 }
 
 }  // namespace
