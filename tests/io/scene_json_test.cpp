@@ -319,7 +319,7 @@ TEST(SceneJson, ReadsTheCushionModelTheCueAndElevation) {
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion": "rubber"})"), "physics.cushion",
                         "unknown cushion model"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion_height": 0.02})"), "physics.cushion_height",
-                        "above the ball's centre"));
+                        "no lower than the ball's centre"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion_height": 0.06})"), "physics.cushion_height",
                         "below its top"));
   EXPECT_TRUE(refusedAt(scene(R"("physics": {"cushion": "simple", "cushion_height": 0.036})"),

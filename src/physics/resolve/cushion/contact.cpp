@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "physics/resolve/ball_ball/collide.hpp"
 
@@ -75,6 +76,16 @@ void setOutOfCushion(Kinematics& k, Vec2 normal, const TableGeometry& table, dou
   // Below half the tolerance a sink is the rounding of a contact met on time.
   const double sink = cushionSink(table, k.p, r);
   if (sink > 0.5 * kTouchTolerance) k.p += normal * sink;
+}
+
+std::optional<std::string> noseHeightFault(const PhysicsParams& p, const char* model) {
+  const double r = p.ball_radius;
+  if (p.cushion_height >= r && p.cushion_height < 2.0 * r) return std::nullopt;
+  std::ostringstream why;
+  why << "physics.cushion_height: " << model
+      << "'s nose must stand no lower than the ball's centre and below its top: from " << r
+      << " up to " << 2.0 * r << " m for ball_radius " << r;
+  return why.str();
 }
 
 }  // namespace nineball::physics

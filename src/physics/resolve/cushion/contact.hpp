@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "nineball/params.hpp"
@@ -43,5 +45,11 @@ bool touchesOnly(const Kinematics& k, Vec2 normal, const std::vector<Vec2>& face
 /// away, and the ball set back out if pressed in. Never adds energy.
 Kinematics restAgainstCushion(Kinematics k, Vec2 normal, const TableGeometry& table,
                               const PhysicsParams& p);
+
+/// Why a cushion whose nose is the contact point (`model`, as the message names it: "the
+/// Mathavan cushion") cannot run with `p`: the nose must stand no lower than the ball's centre
+/// (there the impulse is level; lower, it would lift the ball) and below its top (above, it
+/// misses the ball). One range for every such model.
+std::optional<std::string> noseHeightFault(const PhysicsParams& p, const char* model);
 
 }  // namespace nineball::physics

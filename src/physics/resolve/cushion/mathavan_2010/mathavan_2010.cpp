@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "physics/resolve/cushion/contact.hpp"
 
 namespace nineball::physics {
 namespace {
@@ -133,16 +134,8 @@ Kinematics mathavanBounceInSteps(Kinematics k, Vec2 inward, double mass, const P
 
 namespace {
 
-// The nose is the contact point: it must stand above the centre (else the impulse would lift
-// the ball) and below the top (else it misses the ball).
 std::optional<std::string> checkHeight(const PhysicsParams& p) {
-  const double r = p.ball_radius;
-  if (p.cushion_height > r && p.cushion_height < 2.0 * r) return std::nullopt;
-  std::ostringstream why;
-  why << "physics.cushion_height: the Mathavan cushion's nose must stand above the ball's "
-         "centre and below its top: between "
-      << r << " and " << 2.0 * r << " m for ball_radius " << r;
-  return why.str();
+  return noseHeightFault(p, "the Mathavan cushion");
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "physics/resolve/cushion/mathavan_speed/mathavan_speed.hpp"
 
 #include <algorithm>
-#include <sstream>
 
+#include "physics/resolve/cushion/contact.hpp"
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 
 namespace nineball::physics {
@@ -56,18 +56,10 @@ Kinematics mathavanSpeedBounce(Kinematics k, Vec2 inward, double mass, const Phy
 
 namespace {
 
-// As Mathavan's cushion: the nose between the ball's centre and its top. And a curve that
-// stays a restitution: its floor within [0, 1].
+// As every cushion whose nose is the contact point (the curve's floor is checked where the
+// parameters are read).
 std::optional<std::string> check(const PhysicsParams& p) {
-  const double r = p.ball_radius;
-  if (!(p.cushion_height > r && p.cushion_height < 2.0 * r)) {
-    std::ostringstream why;
-    why << "physics.cushion_height: the mathavan_speed cushion's nose must stand above the "
-           "ball's centre and below its top: between "
-        << r << " and " << 2.0 * r << " m for ball_radius " << r;
-    return why.str();
-  }
-  return std::nullopt;
+  return noseHeightFault(p, "the mathavan_speed cushion");
 }
 
 }  // namespace

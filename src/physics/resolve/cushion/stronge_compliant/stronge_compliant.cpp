@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "physics/resolve/cushion/contact.hpp"
 
@@ -236,16 +235,9 @@ Kinematics strongeBounce(Kinematics k, Vec2 inward, double mass, const PhysicsPa
 
 namespace {
 
-// The nose from the centre's height (the contact of pooltool 0.6.0) to below the top: above
-// the top it would miss the ball.
+// From the centre's height (the contact of pooltool 0.6.0) to below the top.
 std::optional<std::string> checkHeight(const PhysicsParams& p) {
-  const double r = p.ball_radius;
-  if (p.cushion_height >= r && p.cushion_height < 2.0 * r) return std::nullopt;
-  std::ostringstream why;
-  why << "physics.cushion_height: the Stronge cushion's nose must stand no lower than the "
-         "ball's centre and below its top: from "
-      << r << " up to " << 2.0 * r << " m for ball_radius " << r;
-  return why.str();
+  return noseHeightFault(p, "the Stronge cushion");
 }
 
 }  // namespace
