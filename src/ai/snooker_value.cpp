@@ -12,6 +12,7 @@
 #include "ai/planner_geometry.hpp"
 #include "nineball/table_markings.hpp"
 #include "play/snookered.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball::ai {
 namespace {
@@ -41,8 +42,6 @@ constexpr double kLeaveSpread = 0.4;
 // along the baulk line (y) and round its arc.
 constexpr double kOnLine[] = {0.0, -0.5, 0.5, -1.0, 1.0};
 constexpr double kArcDeg[] = {135.0, 180.0, 225.0};
-constexpr int kFirstRed = 1;
-constexpr int kLastRed = 15;
 
 int index(rules::Player p) {
   return p == rules::Player::A ? 0 : 1;
@@ -51,7 +50,7 @@ int index(rules::Player p) {
 std::vector<int> redsOnTable(const rules::Rack& rack) {
   std::vector<int> reds;
   for (int id : rack.ballsOnTable()) {
-    if (id >= kFirstRed && id <= kLastRed) reds.push_back(id);
+    if (rules::snooker::isRed(id)) reds.push_back(id);
   }
   return reds;
 }

@@ -12,6 +12,10 @@ namespace nineball::rules::snooker {
 inline constexpr int kFirstRed = 1;
 inline constexpr int kLastRed = 15;
 inline constexpr int kYellow = 16;
+inline constexpr int kGreen = 17;
+inline constexpr int kBrown = 18;
+inline constexpr int kBlue = 19;
+inline constexpr int kPink = 20;
 inline constexpr int kBlack = 21;
 
 inline bool isRed(int ball) {

@@ -1,6 +1,7 @@
 #include "window/snooker_turn_message.hpp"
 
 #include "nineball/games.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball::window {
 namespace {
@@ -18,10 +19,10 @@ std::string snookerBalls(const std::vector<int>& balls) {
   const GameDef& game = gameDef(rules::Game::Snooker);
   std::vector<std::string> words;
   int reds = 0;
-  for (int b : balls) reds += b >= 1 && b <= 15;
+  for (int b : balls) reds += rules::snooker::isRed(b);
   if (reds > 1) words.push_back(std::to_string(reds) + " reds");
   for (int b : balls) {
-    if (reds > 1 && b >= 1 && b <= 15) continue;
+    if (reds > 1 && rules::snooker::isRed(b)) continue;
     words.push_back(game.theBall(b));
   }
   std::string s;

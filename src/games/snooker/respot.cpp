@@ -1,14 +1,15 @@
 #include "games/snooker/respot.hpp"
 
 #include "games/snooker/spots.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball::snooker {
 namespace {
 
 // The line towards a cushion is walked in steps this small (m) looking for room.
 constexpr double kStep = 0.0005;
-constexpr int kBlack = 21;
-constexpr int kYellow = 16;
+using rules::snooker::kBlack;
+using rules::snooker::kYellow;
 
 bool free(Vec2 p, int ball, const TableGeometry& table, double r,
           const std::vector<BallState>& balls) {

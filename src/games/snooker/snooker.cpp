@@ -3,6 +3,7 @@
 #include "games/snooker/respot.hpp"
 #include "games/snooker/spots.hpp"
 #include "games/triangle.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball {
 namespace {
@@ -10,27 +11,27 @@ namespace {
 // The apex red sits this far (m) beyond touching the pink: "as near as possible without
 // touching" (WPBSA 3.2), kept measurable for the engines' contact tests.
 constexpr double kApexClearance = 0.0002;
-constexpr int kReds = 15;
 constexpr int kRows = 5;
+namespace balls = rules::snooker;
 
 }  // namespace
 
 std::vector<BallState> rackSnooker(const TableDef& table, double ball_radius, std::uint64_t,
                                    double gap) {
-  std::vector<BallState> balls;
+  std::vector<BallState> placed;
   const double shift = 2.0 * ball_radius + kApexClearance;
   const std::vector<Vec2> reds = games::triangleSpots(table, ball_radius, gap, kRows);
-  const Vec2 pink = snooker::colourSpot(table, 20);
-  for (int i = 0; i < kReds; ++i) {
+  const Vec2 pink = snooker::colourSpot(table, balls::kPink);
+  for (int i = 0; i <= balls::kLastRed - balls::kFirstRed; ++i) {
     // triangleSpots puts the apex on the foot spot, which is the pink's spot.
     const Vec2 p =
         reds[static_cast<std::size_t>(i)] + Vec2{pink.x - table.length / 4.0 + shift, 0.0};
-    games::put(balls, i + 1, p);
+    games::put(placed, balls::kFirstRed + i, p);
   }
-  for (int colour = 16; colour <= 21; ++colour) {
-    games::put(balls, colour, snooker::colourSpot(table, colour));
+  for (int colour = balls::kYellow; colour <= balls::kBlack; ++colour) {
+    games::put(placed, colour, snooker::colourSpot(table, colour));
   }
-  return balls;
+  return placed;
 }
 
 namespace games {
@@ -39,8 +40,8 @@ GameDef snooker() {
   GameDef g;
   g.id = rules::Game::Snooker;
   g.name = "snooker";
-  for (int b = 1; b <= 21; ++b) g.balls.push_back(b);
-  g.highest_ball = 21;
+  for (int b = balls::kFirstRed; b <= balls::kBlack; ++b) g.balls.push_back(b);
+  g.highest_ball = balls::kBlack;
   g.rule_sets = {rules::RuleSet::Wpbsa};
   g.rack = rackSnooker;
   g.looks = snookerBallLook;

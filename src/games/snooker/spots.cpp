@@ -1,21 +1,23 @@
 #include "games/snooker/spots.hpp"
 
 #include "nineball/table_markings.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball::snooker {
 
 Vec2 colourSpot(const TableDef& table, int ball) {
   const SnookerLayout l = SnookerLayout::of(table);
+  namespace balls = rules::snooker;
   switch (ball) {
-    case 16:
+    case balls::kYellow:
       return l.yellow;
-    case 17:
+    case balls::kGreen:
       return l.green;
-    case 18:
+    case balls::kBrown:
       return l.brown;
-    case 20:
+    case balls::kPink:
       return l.pink;
-    case 21:
+    case balls::kBlack:
       return l.black;
     default:
       return l.blue;
