@@ -8,6 +8,7 @@
 #include "nineball/rules.hpp"
 #include "nineball/seat.hpp"
 #include "render/cue_stick_shape.hpp"
+#include "rules/snooker_balls.hpp"
 #include "window/game_help.hpp"
 
 namespace nineball::window {
@@ -227,8 +228,7 @@ void fillSnookerHud(render::HudState& hud, const GameSession& session) {
                    "   high " + std::to_string(ps.high_run);
   }
   const std::vector<int> on = rack.legalFirstBalls();
-  const bool reds_on =
-      !on.empty() && std::all_of(on.begin(), on.end(), [](int b) { return b >= 1 && b <= 15; });
+  const bool reds_on = !on.empty() && std::all_of(on.begin(), on.end(), rules::snooker::isRed);
   hud.ball_on = rack.over() || on.empty() ? 0 : reds_on ? on.front() : on.size() == 1 ? on[0] : 0;
   std::string line;
   if (!rack.over() && !on.empty() && hud.ball_on == 0) line = "on: any colour   ";
