@@ -26,11 +26,12 @@ std::uint64_t plannerSeed(std::uint64_t script_seed, rules::Player p) {
 
 }  // namespace
 
-MatchPlayed playMatchScript(const MatchScript& script) {
+MatchPlayed playMatchScript(const MatchScript& script, int planner_threads) {
   std::array<std::unique_ptr<ai::Planner>, 2> planners;
   for (rules::Player p : {rules::Player::A, rules::Player::B}) {
     if (const auto level = computerLevel(script.players[index(p)])) {
-      planners[index(p)] = std::make_unique<ai::Planner>(*level, plannerSeed(script.setup.seed, p));
+      planners[index(p)] =
+          std::make_unique<ai::Planner>(*level, plannerSeed(script.setup.seed, p), planner_threads);
     }
   }
   Match match(script.setup);

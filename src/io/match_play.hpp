@@ -22,7 +22,8 @@ struct MatchPlayed {
 };
 
 /// Plays `script` until the rack is won, a human is to play and the script has no turn left,
-/// a shot stops with balls still moving (Partial), or the turn limit.
-MatchPlayed playMatchScript(const MatchScript& script);
+/// a shot stops with balls still moving (Partial), or the turn limit. The computer players plan
+/// on `planner_threads` threads each; the result does not depend on how many.
+MatchPlayed playMatchScript(const MatchScript& script, int planner_threads = 2);
 
 }  // namespace nineball::io

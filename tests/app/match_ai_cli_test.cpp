@@ -86,43 +86,6 @@ TEST(MatchAiCli, HumansStillNeedTurns) {
   EXPECT_NE(r.err.find("turns"), std::string::npos) << r.err;
 }
 
-// A whole three-cushion game between two computers, pinned turn by turn (who shot, whether it
-// scored, the cushions before the second ball) with the final score: the game, its rules and
-// both planners must play it the same way on every build.
-TEST(MatchAiCli, GoldenThreeCushionGameBetweenTwoComputers) {
-  const std::string script = R"({"game": "three-cushion", "seed": 3, "points": 4,
-      "players": {"A": "ai:advanced", "B": "ai:pro"}})";
-  const CliOutcome first = runOnDocument("match", script);
-  ASSERT_EQ(first.status, 0) << first.err;
-  const auto doc = nlohmann::json::parse(first.out);
-  struct Turn {
-    const char* shooter;
-    bool point;
-    int cushions;
-  };
-  // A reaches the distance in its second inning; B's last inning (equal innings) misses.
-  const Turn expected[] = {{"A", false, 2}, {"B", true, 4}, {"B", false, 4}, {"A", true, 5},
-                           {"A", true, 3},  {"A", true, 3}, {"A", true, 4},  {"B", false, 5}};
-  ASSERT_EQ(doc["turns"].size(), std::size(expected)) << first.out;
-  for (std::size_t i = 0; i < std::size(expected); ++i) {
-    const auto& t = doc["turns"][i];
-    EXPECT_EQ(t["shooter"], expected[i].shooter) << "turn " << i;
-    EXPECT_EQ(t["point"], expected[i].point) << "turn " << i;
-    EXPECT_EQ(t["cushions"], expected[i].cushions) << "turn " << i;
-    EXPECT_TRUE(t.contains("score") && t.contains("shot")) << "turn " << i;
-  }
-  EXPECT_EQ(doc["winner"], "A");
-  EXPECT_EQ(doc["draw"], false);
-  EXPECT_EQ(doc["points"], 4);
-  const nlohmann::json a = {
-      {"points", 4}, {"innings", 2}, {"run", 0}, {"average", 2.0}, {"high_run", 4}};
-  const nlohmann::json b = {
-      {"points", 1}, {"innings", 2}, {"run", 0}, {"average", 0.5}, {"high_run", 1}};
-  EXPECT_EQ(doc["score"]["A"], a);
-  EXPECT_EQ(doc["score"]["B"], b);
-  EXPECT_EQ(runOnDocument("match", script).out, first.out);
-}
-
 TEST(MatchAiCli, AThreeCushionScriptIsRefusedPointsItCannotPlay) {
   for (const char* points : {"0", "101", "2.5", "\"25\""}) {
     const CliOutcome r = runOnDocument(
