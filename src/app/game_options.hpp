@@ -29,6 +29,7 @@ struct GameOptions {
   bool game_given = false;
   bool rules_given = false;
   bool opponent_given = false;
+  bool seed_given = false;  ///< else a person's games draw fresh seeds (window/rack_seed.hpp)
   // Online play (docs/playing.md, "Playing online"): host on a port, or join a host.
   std::optional<unsigned short> host_port;  ///< --host [PORT]: wait for a friend on this port
   std::string join;                         ///< --join HOST[:PORT]: play the host there

@@ -68,8 +68,10 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                      ->capture_default_str());
   opts.push_back(
       app.add_option("--seed", o.seed,
-                     "Game window: rack order of balls 2-8, and the computer's cueing errors")
+                     "Game window: the racks and the computer's cueing errors (default: a new "
+                     "seed for each game a person plays; 1 for --screenshot, --frames and scripts)")
           ->check(seedCheck())
+          ->each([&o](const std::string&) { o.seed_given = true; })
           ->capture_default_str());
   opts.push_back(app.add_option("--opponent", o.opponent,
                                 "Game window: who plays Player 2, a second person (human) or the "

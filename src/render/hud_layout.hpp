@@ -24,6 +24,7 @@ struct HudLayout {
   PixelRect panel;                 ///< a dialog over the table (help, push-out choice, game over)
   PixelRect button_left;           ///< the dialog's first button
   PixelRect button_right;          ///< the dialog's second button
+  PixelRect button_middle;         ///< a third between them (three_buttons), else empty
   double text_px = 12.0;           ///< the HUD's character size
   double spin_labels_right = 0.0;  ///< the right edge of the spin icon's labels (px)
 
@@ -41,8 +42,10 @@ struct HudLayout {
   /// the rack's end are strips across the table that leave the balls in sight: along a long
   /// cushion when that hides none of `keep_clear` (the balls, m), else the place across the
   /// table (or, failing that, over a HUD band) that hides the fewest. Help is wide.
-  static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None,
-                      const std::vector<Vec2>& keep_clear = {}) {
+  static HudLayout of(const ViewTransform& zoomed_view, Overlay overlay = Overlay::None,
+                      const std::vector<Vec2>& keep_clear = {}, bool three_buttons = false) {
+    // The HUD does not zoom with the table.
+    const ViewTransform view = zoomed_view.hud();
     const bool strip = overlay == Overlay::PushOutChoice || overlay == Overlay::GameOver;
     const bool wide = overlay == Overlay::Help;
     HudLayout h;
@@ -71,10 +74,19 @@ struct HudLayout {
                       s;
     h.panel = {c.x - pw / 2.0, c.y - ph / 2.0, pw, ph};
     if (strip) h.panel.top = stripTop(view, h.panel, keep_clear);
-    const double bw = 0.5 * s, bh = 0.085 * s, gap = 0.08 * s;
+    const double bh = 0.085 * s, gap = 0.08 * s;
     const double by = h.panel.top + ph - bh - 0.04 * s;
-    h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
-    h.button_right = {c.x + gap / 2.0, by, bw, bh};
+    if (three_buttons) {
+      // Narrower, so that three fit the strip's width with room at its ends.
+      const double bw = 0.38 * s;
+      h.button_middle = {c.x - bw / 2.0, by, bw, bh};
+      h.button_left = {c.x - bw / 2.0 - gap / 2.0 - bw, by, bw, bh};
+      h.button_right = {c.x + bw / 2.0 + gap / 2.0, by, bw, bh};
+    } else {
+      const double bw = 0.5 * s;
+      h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
+      h.button_right = {c.x + gap / 2.0, by, bw, bh};
+    }
     return h;
   }
 

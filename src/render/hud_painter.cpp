@@ -316,6 +316,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
   batch_.roundedRect(p.left, p.top, p.width, p.height, layout.text_px, kPanel);
   const bool buttons = !hud.button_left.empty() || !hud.button_right.empty();
   for (const auto& [label, rect] : {std::pair{&hud.button_left, layout.button_left},
+                                    std::pair{&hud.button_middle, layout.button_middle},
                                     std::pair{&hud.button_right, layout.button_right}}) {
     if (!label->empty()) {
       batch_.roundedRect(rect.left, rect.top, rect.width, rect.height, rect.height / 3.0, kButton);
@@ -346,6 +347,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
     y += line_size * 1.45;
   }
   for (const auto& [label, rect] : {std::pair{&hud.button_left, layout.button_left},
+                                    std::pair{&hud.button_middle, layout.button_middle},
                                     std::pair{&hud.button_right, layout.button_right}}) {
     if (!label->empty()) {
       const PixelRect inner{rect.left + rect.height * 0.3, rect.top, rect.width - rect.height * 0.6,
@@ -359,7 +361,8 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
 
 void HudPainter::draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud) {
   drawn_.clear();
-  const HudLayout layout = HudLayout::of(view, hud.overlay, hud.keep_clear);
+  const HudLayout layout =
+      HudLayout::of(view, hud.overlay, hud.keep_clear, !hud.button_middle.empty());
   drawPlayers(target, view, hud, layout);
   drawBottom(target, hud, layout);
   if (hud.overlay != Overlay::None) drawOverlay(target, hud, layout);

@@ -19,6 +19,8 @@
 #include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
+#include "window/rack_script.hpp"
+#include "window/rack_seed.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
@@ -197,15 +199,31 @@ void GameLoop::openGameWindow() {
   menu_painter_.emplace(*fonts_);
 }
 
-// Nothing when the game goes on to its frames.
+// What the start menu needs from the window: where it draws and the table behind it.
 StartMenuContext GameLoop::menuContext() {
-  return {*window_, *painter_, *menu_painter_,
-          [this] { return buildFrame(session_, ui_, computer_); }, options_.mute};
+  return {*window_,
+          *painter_,
+          *menu_painter_,
+          [this] { return buildFrame(session_, ui_, computer_); },
+          options_.mute,
+          drawsFreshSeeds(options_),
+          {}};
 }
 
 std::optional<int> GameLoop::startMenu() {
   StartMenuContext menu = menuContext();
-  if (show_menu_ && capture_) {
+  // The tests pick from the menu by keys typed before it shows (NINEBALL_MENU_KEYS="down,
+  // right,enter"), and then take the picture of the game picked.
+  const char* typed = std::getenv("NINEBALL_MENU_KEYS");
+  if (show_menu_ && capture_ && typed) {
+    std::string why;
+    const std::optional<std::vector<MenuKey>> keys = parseMenuKeys(typed, why);
+    if (!keys) {
+      err_ << "nineball: NINEBALL_MENU_KEYS: " << why << '\n';
+      return app::kExitBadInput;
+    }
+    menu.typed = *keys;
+  } else if (show_menu_ && capture_) {
     drawStartMenu(menu, settings_);
     std::string why;
     if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
@@ -218,6 +236,7 @@ std::optional<int> GameLoop::startMenu() {
     MenuModel::Outcome outcome = MenuModel::Outcome::None;
     if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
     startOnlineFromMenu(outcome);
+    followTable();
   }
   return std::nullopt;
 }
@@ -297,9 +316,13 @@ void GameLoop::updateOnline(double dt) {
   if (online_->sessionReplaced()) {
     session_.setTurnObserver(count_);
     stats_ = SessionStats{};
-    painter_.emplace(session_.match().world().table(), *fonts_);
-    painter_->resize(window_->getSize().x, window_->getSize().y);
+    followTable();
   }
+}
+
+// The painter (and the view the pointer is read through) on the session's table.
+void GameLoop::followTable() {
+  painter_->showTable(session_.match().world().table());
 }
 
 // --screenshot online: the picture once this side is done with the rack (or the game ended).
@@ -366,6 +389,8 @@ int GameLoop::run() {
 
 // True when anything came (or on the first frame): the picture must be drawn again.
 bool GameLoop::handleEvents() {
+  // The pointer maps to the table the session plays on, whatever changed it since the last frame.
+  followTable();
   sf::Event event;
   bool changed = frame_ == 0;
   while (window_->pollEvent(event)) {
@@ -463,6 +488,11 @@ bool GameLoop::advance() {
 void GameLoop::draw() {
   render::Frame picture = buildFrame(session_, ui_, computer_);
   picture.guide_scale = guideLengthFactor(settings_.guide);
+  if (settings_.guide == GuideLength::Off) {
+    picture.guide.reset();
+    picture.guide_foul.clear();
+  }
+  zoomView(picture);
   if (settings_.bank_line && picture.guide) {
     picture.bank = bankGuide(session_.match().world().table(), picture.ball_radius, picture.balls,
                              *picture.guide);
@@ -485,6 +515,18 @@ void GameLoop::draw() {
   }
   since_draw_.restart();
   ++frame_;
+}
+
+// The table seen as close as the player asked, round the cue ball (following it as it rolls) or
+// the point the wheel zoomed at; a dialog shows the whole table.
+void GameLoop::zoomView(const render::Frame& picture) {
+  const bool dialog = picture.hud.overlay != render::Overlay::None;
+  Vec2 focus = session_.cuePosition();
+  const int shooter = session_.practice() ? kCueBall : session_.shooterBall();
+  for (const BallState& b : picture.balls) {
+    if (b.id == shooter && !b.pocket) focus = b.pos;
+  }
+  painter_->setZoom(dialog ? 1.0 : ui_.zoom, ui_.zoom_at.value_or(focus));
 }
 
 // --screenshot: the picture after the frames asked for. False when it could not be saved.
@@ -529,6 +571,17 @@ void GameLoop::answerRequests() {
     requests.menu = false;
     backToMenu();
   }
+  if (requests.save_rack) {
+    requests.save_rack = false;
+    saveRackScript();
+  }
+  if (requests.cycle_guide) {
+    requests.cycle_guide = false;
+    settings_.guide = nextGuide(settings_.guide);
+    saveSettingsNow();
+    session_.say(std::string("Aim guide: ") + guideLengthName(settings_.guide) +
+                 " (G changes it; the menu's settings keep it).");
+  }
   if (requests.toggle_fullscreen) {
     requests.toggle_fullscreen = false;
     fullscreen_ = !fullscreen_;
@@ -536,6 +589,23 @@ void GameLoop::answerRequests() {
     window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(window_->getSize().x),
                                             static_cast<float>(window_->getSize().y))));
     painter_->resize(window_->getSize().x, window_->getSize().y);
+  }
+}
+
+// F5: the rack as a match script in the current directory, to play again headless or here.
+void GameLoop::saveRackScript() {
+  const auto script = rackScript(session_);
+  if (!script || session_.rackTurns().empty()) {
+    session_.say("No rack to save yet: F5 saves a rack once it has a turn.", render::Tone::Warning);
+    return;
+  }
+  const std::string name = rackScriptName();
+  std::string why;
+  if (writeFileAtomically(name, script->dump(2) + "\n", why)) {
+    session_.say("Rack saved: " + name + " (nineball match " + name + " plays it again).");
+    logger("game")->info("rack saved as a match script: {}", name);
+  } else {
+    session_.say("Rack not saved: " + why, render::Tone::Warning);
   }
 }
 
@@ -582,6 +652,7 @@ void GameLoop::backToMenu() {
     return;
   }
   startOnlineFromMenu(outcome);
+  followTable();
   applySound();
   frame_clock_.restart();
   display_clock_.restart();

@@ -59,6 +59,7 @@ class GameLoop {
   bool beginOnline(OnlineConfig config, std::string& why);
   void startOnlineFromMenu(MenuModel::Outcome outcome);
   void updateOnline(double dt);
+  void followTable();
   bool onlineCaptureDue() const;
 
   // The steps of one frame, in their order.
@@ -68,11 +69,13 @@ class GameLoop {
   bool waitWhileIdle(bool changed);
   bool advance();
   void draw();
+  void zoomView(const render::Frame& picture);
   bool saveCapture();
   void takeRequestedScreenshot();
   void present(bool rolling);
   void answerRequests();
   void capFrameRate();
+  void saveRackScript();
   void saveRackInPlay();
   void backToMenu();
   int finish();

@@ -269,3 +269,20 @@ TEST(GameSession, SnookerFramesCountTowardsAMatchOfBestOfN) {
   EXPECT_EQ(open.racksWon(0), 5);
   EXPECT_FALSE(open.matchWinner());
 }
+
+TEST(GameSession, APocketedBallSinksOutOfSightAfterTheBallsStop) {
+  // The picture's clock runs on after the shot, so a ball that dropped as the balls stopped
+  // finishes its sinking (BallPainter::kSinkTime) instead of waiting on the lip for the next
+  // shot; the next shot starts the clock from the physics' again.
+  GameSession s{MatchSetup{}};
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(nineball::window::roll(s));
+  const double stopped = s.drawTime();
+  for (int frame = 0; frame < 30; ++frame) s.advance(1.0 / 60.0);
+  EXPECT_NEAR(s.drawTime() - stopped, 0.5, 1e-9);
+  for (int frame = 0; frame < 120; ++frame) s.advance(1.0 / 60.0);
+  EXPECT_NEAR(s.drawTime() - stopped, 1.0, 1e-9);  // then it stops: nothing moves at rest
+  ASSERT_TRUE(s.shoot());
+  s.advance(1.0 / 60.0);
+  EXPECT_LT(s.drawTime(), stopped + 0.1);
+}
