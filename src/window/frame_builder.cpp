@@ -127,7 +127,9 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
                                 " - " + std::to_string(session.racksWon(1)) + " " +
                                 session.seatName(1);
       hud.overlay_title = name + " wins " + unit + " " + std::to_string(session.rackNumber()) + "!";
-      hud.overlay_lines = {session.message(), (frames ? "Frames: " : "Racks: ") + tally};
+      // How the rack ended is the message line below the table: the dialog does not say it
+      // twice, and keeps to the score and the players' figures.
+      hud.overlay_lines = {(frames ? "Frames: " : "Racks: ") + tally};
       hud.button_left = frames ? "Next frame (R)" : "Rematch (R)";
       if (session.bestOf() > 0) {
         const int race = framesToWinMatch(session.bestOf());

@@ -582,8 +582,8 @@ std::string GameSession::status() const {
   if (practice_) {
     return phase_ == Phase::Rolling
                ? "Practice shot..."
-               : "Practice: Shift+drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as "
-                 "ever";
+               // The top band names U, Y and 1-9: the status line does not say them twice.
+               : "Practice: shoot as ever; Shift+drag moves any ball";
   }
   switch (phase_) {
     case Phase::Rolling:

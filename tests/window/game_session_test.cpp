@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "window/fixed_step_clock.hpp"
+#include "window/frame_builder.hpp"
 #include "window/game_rolling.hpp"
 #include "window/turn_message.hpp"
 
@@ -285,4 +286,14 @@ TEST(GameSession, APocketedBallSinksOutOfSightAfterTheBallsStop) {
   ASSERT_TRUE(s.shoot());
   s.advance(1.0 / 60.0);
   EXPECT_LT(s.drawTime(), stopped + 0.1);
+}
+
+TEST(GameSession, PracticeSaysItsKeysOnceNotInTheStatusLineToo) {
+  GameSession s{MatchSetup{}, true};
+  nineball::window::UiState ui;
+  nineball::window::ComputerPlayer computer(1);
+  const nineball::render::Frame f = nineball::window::buildFrame(s, ui, computer);
+  EXPECT_NE(f.hud.mode.find("U undo"), std::string::npos);
+  EXPECT_EQ(f.hud.status.find("U undo"), std::string::npos) << f.hud.status;
+  EXPECT_EQ(f.hud.status.find("1-9"), std::string::npos) << f.hud.status;
 }
