@@ -90,6 +90,9 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   // The guide goes under the balls: the balls hide its ends, the lines stay visible.
   if (frame.guide) {
     cue_painter_.drawGuide(target, seen, *frame.guide, frame.ball_radius, frame.guide_scale);
+    if (!frame.guide_foul.empty()) {
+      drawGuideFoulPath(target, seen, *frame.guide, frame.ball_radius);
+    }
   }
   if (frame.bank) {
     cue_painter_.drawGuide(target, seen, *frame.bank, frame.ball_radius, frame.guide_scale, true);
@@ -100,7 +103,7 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   if (frame.call) drawCall(target, seen, *frame.call, frame.ball_radius);
   // The foul warning is read, so it goes over the balls (a rack would hide it).
   if (frame.guide && !frame.guide_foul.empty()) {
-    drawGuideFoul(target, seen, *frame.guide, frame.ball_radius, frame.guide_foul, fonts_);
+    drawGuideFoulLabel(target, seen, *frame.guide, frame.ball_radius, frame.guide_foul, fonts_);
   }
   if (frame.ghost) {
     const double r = seen.px(frame.ball_radius);
