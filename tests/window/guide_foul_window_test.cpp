@@ -26,7 +26,7 @@ TEST(GuideFoulWindow, TheWarningIsDrawnOverTheBalls) {
   const std::string script =
       R"({"balls": [{"id": 0, "x": -0.6, "y": 0}, {"id": 3, "x": 0.3, "y": 0},
                     {"id": 1, "x": 0.8, "y": 0}, {"id": 5, "x": )" +
-      std::to_string(five.x) + R"(, "y": )" + std::to_string(five.y) + "}]}";
+      std::to_string(five.x) + R"(, "y": )" + std::to_string(five.y) + R"(}], "turns": []})";
   sf::Image image;
   const testing::XvfbRun run =
       testing::screenshotOfScript(script, "guide-foul", kWidth, kHeight, image);
