@@ -20,6 +20,7 @@ struct GameOptions {
   std::string script;              ///< a match script played before the first frame
   std::optional<long> frames;      ///< run this many frames, then capture (or exit)
   bool replay = false;             ///< after the script, replay its last shot
+  bool watch = false;              ///< the script's turns played on screen, one after another
   bool practice = false;           ///< practice mode: no rules, any ball anywhere, undo
   unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;

@@ -88,15 +88,20 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
       app.add_option("--screenshot", o.screenshot,
                      "Draw the scene into this picture file (.png, .jpg, .bmp or .tga) and exit")
           ->check(screenshotProblem));
-  opts.push_back(app.add_option("--script", o.script,
+  auto* script = app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
-                                "first frame; - reads standard input"));
+                                "first frame; - reads standard input");
+  opts.push_back(script);
   opts.push_back(app.add_flag("--practice", o.practice,
                               "Game window: practice alone without rules (place, add and remove "
                               "balls; undo or retry a shot)"));
   opts.push_back(app.add_flag("--replay", o.replay,
                               "Game window: after --script, replay its last shot from the physics "
                               "(with --frames and --screenshot, a picture of the replay)"));
+  opts.push_back(app.add_flag("--watch", o.watch,
+                              "Game window: play --script's turns on screen one after another, "
+                              "as they were played (a rack saved with F5 watched again)")
+                     ->needs(script));
   opts.push_back(app.add_option_function<long>(
                         "--frames", [&o](long n) { o.frames = n; },
                         "Run N frames, then capture (--screenshot) or exit; without --script the "

@@ -154,6 +154,11 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
 }
 
 std::optional<int> GameLoop::playScript(const GameStart& start) {
+  if (options_.watch) {
+    // Played on screen as the frames go (playWatchedTurn), not before the first one.
+    watched_ = start.turns;
+    return std::nullopt;
+  }
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
       session_.playTurn(start.turns[i]);
@@ -320,11 +325,6 @@ void GameLoop::updateOnline(double dt) {
   }
 }
 
-// The painter (and the view the pointer is read through) on the session's table.
-void GameLoop::followTable() {
-  painter_->showTable(session_.match().world().table());
-}
-
 // --screenshot online: the picture once this side is done with the rack (or the game ended).
 bool GameLoop::onlineCaptureDue() const {
   if (options_.frames) return frame_ >= frame_limit_;  // a picture of the game as it stands
@@ -453,8 +453,10 @@ void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
 bool GameLoop::waitWhileIdle(bool changed) {
   // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
   // instead of drawing the same picture again (the idle window costs next to nothing).
-  const bool still = !online_ && session_.phase() != Phase::Rolling && !session_.replaying() &&
-                     !computer_.controls(session_) && !input_.keysHeld() && ui_.drag == Drag::None;
+  const bool watching = next_watched_ < watched_.size();
+  const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
+                     !session_.replaying() && !computer_.controls(session_) && !input_.keysHeld() &&
+                     ui_.drag == Drag::None;
   if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
     frame_clock_.restart();
@@ -470,6 +472,7 @@ bool GameLoop::advance() {
       capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
   input_.update(dt);
   updateOnline(dt);
+  playWatchedTurn(dt);
   // The computer waits while the help or the quit question is open, as a player would.
   if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
     computer_.update(session_, dt);
@@ -515,18 +518,6 @@ void GameLoop::draw() {
   }
   since_draw_.restart();
   ++frame_;
-}
-
-// The table seen as close as the player asked, round the cue ball (following it as it rolls) or
-// the point the wheel zoomed at; a dialog shows the whole table.
-void GameLoop::zoomView(const render::Frame& picture) {
-  const bool dialog = picture.hud.overlay != render::Overlay::None;
-  Vec2 focus = session_.cuePosition();
-  const int shooter = session_.practice() ? kCueBall : session_.shooterBall();
-  for (const BallState& b : picture.balls) {
-    if (b.id == shooter && !b.pocket) focus = b.pos;
-  }
-  painter_->setZoom(dialog ? 1.0 : ui_.zoom, ui_.zoom_at.value_or(focus));
 }
 
 // --screenshot: the picture after the frames asked for. False when it could not be saved.
@@ -589,23 +580,6 @@ void GameLoop::answerRequests() {
     window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, static_cast<float>(window_->getSize().x),
                                             static_cast<float>(window_->getSize().y))));
     painter_->resize(window_->getSize().x, window_->getSize().y);
-  }
-}
-
-// F5: the rack as a match script in the current directory, to play again headless or here.
-void GameLoop::saveRackScript() {
-  const auto script = rackScript(session_);
-  if (!script || session_.rackTurns().empty()) {
-    session_.say("No rack to save yet: F5 saves a rack once it has a turn.", render::Tone::Warning);
-    return;
-  }
-  const std::string name = rackScriptName();
-  std::string why;
-  if (writeFileAtomically(name, script->dump(2) + "\n", why)) {
-    session_.say("Rack saved: " + name + " (nineball match " + name + " plays it again).");
-    logger("game")->info("rack saved as a match script: {}", name);
-  } else {
-    session_.say("Rack not saved: " + why, render::Tone::Warning);
   }
 }
 
