@@ -31,6 +31,8 @@ struct HudLayout {
   /// No text is drawn larger than needed below this size; a line that does not fit its room
   /// shrinks instead, so small windows keep every line inside its place.
   static constexpr double kMinTextPx = 10.0;
+  /// How far past the tilt ring the cue's marker on it reaches, in spin-icon radii.
+  static constexpr double kTiltMarkReach = 0.25;
   /// The room (m at the view's scale) left of the spin icon for its three labels.
   static constexpr double kSpinLabelsWidth = 0.42;
 
@@ -59,7 +61,9 @@ struct HudLayout {
     const double msg_left = h.power_bar.left + h.power_bar.width + 2.0 * margin;
     h.tilt_inner = 1.12 * h.spin_radius;
     h.tilt_outer = 1.42 * h.spin_radius;
-    h.spin_labels_right = h.spin_centre.x - h.tilt_outer - 0.02 * s;
+    // Clear of the cue's marker on the ring, which reaches past it by a quarter of the icon.
+    h.spin_labels_right =
+        h.spin_centre.x - h.tilt_outer - kTiltMarkReach * h.spin_radius - 0.02 * s;
     const double msg_right = h.spin_labels_right - std::max(kSpinLabelsWidth * s, 0.2 * band.width);
     // A narrow window's letterbox below the table gives a long message its second line.
     const double below = view.heightPx() - band.top - 0.01 * s;

@@ -254,7 +254,8 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
                 sf::Color(200, 200, 200, 140));
   }
   const Vec2 tilt = HudLayout::tiltDirection(degToRad(hud.elevation_deg));
-  batch_.line(c + tilt * (layout.tilt_inner - 1.0), c + tilt * (layout.tilt_outer + 0.25 * r),
+  batch_.line(c + tilt * (layout.tilt_inner - 1.0),
+              c + tilt * (layout.tilt_outer + HudLayout::kTiltMarkReach * r),
               std::max(3.0, 0.09 * r), sf::Color(222, 184, 135));
   batch_.draw(target);
 
