@@ -110,9 +110,9 @@ struct GameDef {
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;
   std::vector<int> points_choices;
-  /// A match of several frames (snooker): the window's match lengths, best of N (the first to
-  /// win ceil(N/2) frames wins the match), the first the default; none for a game whose racks
-  /// simply follow one another.
+  /// The window's match lengths, best of N (the first to win ceil(N/2) frames or racks wins
+  /// the match), the first the default: snooker's frames, pool's race to N racks (0 among
+  /// them: no limit, the racks simply follow one another); none for a game without matches.
   std::vector<int> best_of_choices;
   /// The shot after the break may be declared a push-out (nine-ball, ten-ball).
   bool push_outs = false;
