@@ -110,10 +110,17 @@ struct GameDef {
   /// choices; 0 and none for a game won on a ball.
   int default_points = 0;
   std::vector<int> points_choices;
-  /// A match of several frames (snooker): the window's match lengths, best of N (the first to
-  /// win ceil(N/2) frames wins the match), the first the default; none for a game whose racks
-  /// simply follow one another.
+  /// The window's match lengths, best of N (the first to win ceil(N/2) frames or racks wins
+  /// the match), the first the default: snooker's frames, pool's race to N racks (0 among
+  /// them: no limit, the racks simply follow one another); none for a game without matches.
   std::vector<int> best_of_choices;
+  /// The shot after the break may be declared a push-out (nine-ball, ten-ball).
+  bool push_outs = false;
+  /// The game gives a choice between turns (the script's "decision" turns); carom none.
+  bool decisions = true;
+  /// A shot may carry a call (a call or, in snooker, a nomination): pocket games whose rules
+  /// read one; nine-ball and carom take none.
+  bool takes_calls = false;
 
   /// "the 9", "the blue", "the white": a ball as messages name it.
   std::string theBall(int ball) const;
@@ -134,6 +141,11 @@ const GameDef* gameNamed(const std::string& name);
 std::vector<std::string> gameNames();
 /// The games played by `rules`, for a message: "nine-ball", "nine-ball and ten-ball".
 std::string gamesPlayedBy(rules::RuleSet rules);
+/// "eight-ball, ten-ball and snooker": the games whose shots may carry a call.
+std::string gamesTakingCalls();
+/// Why `game` is not played on `table` (carom needs a table without pockets), naming both;
+/// empty when it is.
+std::string tableProblem(const GameDef& game, const TableDef& table);
 /// "the paper's rules are nine-ball's only": why `rules` cannot be played in another game.
 std::string rulesOnlyFor(rules::RuleSet rules);
 

@@ -6,6 +6,7 @@
 #include "ai/planner_geometry.hpp"
 #include "ai/planner_throw.hpp"
 #include "play/aim_guide.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball::ai {
 namespace {
@@ -456,13 +457,19 @@ bool nominates(const rules::Rack& rack) {
   return rack.game() == rules::Game::Snooker && (rack.state().snooker.colour_on || rack.freeBall());
 }
 
+// A call the match takes: snooker refuses a nomination its rules would not read.
+bool mayCall(const rules::Rack& rack, int ball) {
+  return rack.game() != rules::Game::Snooker ||
+         !rules::snooker::nominationProblem(rack.state(), ball);
+}
+
 }  // namespace
 
 void assignCalls(const SearchContext& ctx, std::vector<Candidate>& cands) {
   if (!ctx.in.rack.callRequired() && !nominates(ctx.in.rack)) return;
   for (Candidate& c : cands) {
     if (c.kind == ShotKind::PushOut) continue;
-    if (c.pocket && c.target > 0) {
+    if (c.pocket && c.target > 0 && mayCall(ctx.in.rack, c.target)) {
       c.call = rules::Call{c.target, *c.pocket};
       continue;
     }
@@ -471,7 +478,7 @@ void assignCalls(const SearchContext& ctx, std::vector<Candidate>& cands) {
     if (c.first <= 0 && !ctx.in.rack.callRequired()) continue;
     const int ball = c.first > 0 ? c.first : ctx.firstTarget();
     const BallState* b = objectBall(ctx.in.balls, ball);
-    if (!b) continue;
+    if (!b || !mayCall(ctx.in.rack, ball)) continue;
     const Pocket* nearest = nullptr;
     for (const Pocket& p : ctx.table.pockets) {
       if (!nearest || length(p.drop_centre - b->pos) < length(nearest->drop_centre - b->pos))

@@ -20,6 +20,7 @@ struct GameOptions {
   std::string script;              ///< a match script played before the first frame
   std::optional<long> frames;      ///< run this many frames, then capture (or exit)
   bool replay = false;             ///< after the script, replay its last shot
+  bool watch = false;              ///< the script's turns played on screen, one after another
   bool practice = false;           ///< practice mode: no rules, any ball anywhere, undo
   unsigned width = 1280;           ///< window size in pixels
   unsigned height = 800;
@@ -29,6 +30,7 @@ struct GameOptions {
   bool game_given = false;
   bool rules_given = false;
   bool opponent_given = false;
+  bool seed_given = false;  ///< else a person's games draw fresh seeds (window/rack_seed.hpp)
   // Online play (docs/playing.md, "Playing online"): host on a port, or join a host.
   std::optional<unsigned short> host_port;  ///< --host [PORT]: wait for a friend on this port
   std::string join;                         ///< --join HOST[:PORT]: play the host there

@@ -68,8 +68,10 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                      ->capture_default_str());
   opts.push_back(
       app.add_option("--seed", o.seed,
-                     "Game window: rack order of balls 2-8, and the computer's cueing errors")
+                     "Game window: the racks and the computer's cueing errors (default: a new "
+                     "seed for each game a person plays; 1 for --screenshot, --frames and scripts)")
           ->check(seedCheck())
+          ->each([&o](const std::string&) { o.seed_given = true; })
           ->capture_default_str());
   opts.push_back(app.add_option("--opponent", o.opponent,
                                 "Game window: who plays Player 2, a second person (human) or the "
@@ -86,15 +88,20 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
       app.add_option("--screenshot", o.screenshot,
                      "Draw the scene into this picture file (.png, .jpg, .bmp or .tga) and exit")
           ->check(screenshotProblem));
-  opts.push_back(app.add_option("--script", o.script,
+  auto* script = app.add_option("--script", o.script,
                                 "Play this match script (as nineball match does) before the "
-                                "first frame; - reads standard input"));
+                                "first frame; - reads standard input");
+  opts.push_back(script);
   opts.push_back(app.add_flag("--practice", o.practice,
                               "Game window: practice alone without rules (place, add and remove "
                               "balls; undo or retry a shot)"));
   opts.push_back(app.add_flag("--replay", o.replay,
                               "Game window: after --script, replay its last shot from the physics "
                               "(with --frames and --screenshot, a picture of the replay)"));
+  opts.push_back(app.add_flag("--watch", o.watch,
+                              "Game window: play --script's turns on screen one after another, "
+                              "as they were played (a rack saved with F5 watched again)")
+                     ->needs(script));
   opts.push_back(app.add_option_function<long>(
                         "--frames", [&o](long n) { o.frames = n; },
                         "Run N frames, then capture (--screenshot) or exit; without --script the "

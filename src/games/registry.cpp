@@ -47,6 +47,24 @@ std::string gamesPlayedBy(rules::RuleSet rules) {
   return listed(names, "and");
 }
 
+std::string gamesTakingCalls() {
+  std::vector<std::string> names;
+  for (const GameDef& g : allGames()) {
+    if (g.takes_calls) names.emplace_back(g.name);
+  }
+  return listed(names, "and");
+}
+
+std::string tableProblem(const GameDef& game, const TableDef& table) {
+  // Carom's rules know no pocket: a ball pocketed there would vanish unjudged.
+  if (game.family == GameFamily::Carom && table.pockets) {
+    return std::string(game.name) +
+           " is played on a table without pockets (\"carom\", \"carom-small\", or a table with "
+           "\"pockets\": false), not on one with pockets";
+  }
+  return "";
+}
+
 std::string rulesOnlyFor(rules::RuleSet rules) {
   const char* whose = rules == rules::RuleSet::Paper   ? "the paper's"
                       : rules == rules::RuleSet::Umb   ? "the UMB"

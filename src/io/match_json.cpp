@@ -45,9 +45,13 @@ void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
   turn["player"] = seatName(ComputerSeat{c.level});
   if (c.input.kind == TurnInput::Kind::Decision) return;
   const Shot& shot = c.input.shot;
+  // The exact radians played: a script given heading_rad and elevation_rad plays the turn again
+  // bit for bit (the degrees are for reading).
   turn["shot"] = {{"heading_deg", headingDegrees(shot.heading_rad)},
+                  {"heading_rad", shot.heading_rad},
                   {"speed", shot.speed},
-                  {"tip", {shot.tip.x, shot.tip.y}}};
+                  {"tip", {shot.tip.x, shot.tip.y}},
+                  {"elevation_rad", shot.elevation_rad}};
   if (c.input.cue) turn["cue"] = {c.input.cue->x, c.input.cue->y};
 }
 
@@ -72,7 +76,11 @@ MatchScript parseDocument(const json& doc) {
   if (const json* p = optional(doc, "seed")) {
     setup.seed = static_cast<std::uint64_t>(integer(*p, "seed", 0, INT_MAX));
   }
-  if (const json* p = optional(doc, "table")) setup.table = parseTable(*p);
+  if (const json* p = optional(doc, "table")) {
+    setup.table = parseTable(*p);
+    const std::string problem = tableProblem(gameDef(setup.game), setup.table);
+    if (!problem.empty()) refuse("table", problem);
+  }
   if (const json* p = optional(doc, "physics")) setup.physics = parsePhysics(*p);
   if (const json* p = optional(doc, "step")) setup.step = parseStep(*p);
   double cue_mass = setup.physics.ball_mass;
@@ -214,8 +222,8 @@ TurnInput parseTurn(const json& v, const std::string& path, double cue_mass, rul
     return turn;
   }
   allowOnly(v, path,
-            {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg", "cue",
-             "push_out", "call"});
+            {"heading_deg", "heading_rad", "speed", "force", "contact_time", "tip", "elevation_deg",
+             "elevation_rad", "cue", "push_out", "call"});
   if (const json* p = optional(v, "push_out")) {
     if (!p->is_boolean())
       refuse(member(path, "push_out"), "expected true or false, found " + describe(*p));

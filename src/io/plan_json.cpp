@@ -43,6 +43,8 @@ PlanScene parseDocument(json doc) {
   SceneResult parsed = sceneFromJson(doc);
   if (const auto* refused = std::get_if<ParseError>(&parsed)) throw *refused;
   const Scene& scene = std::get<Scene>(parsed);
+  const std::string table_problem = tableProblem(gameDef(game), scene.table);
+  if (!table_problem.empty()) refuse("table", table_problem);
 
   std::vector<int> object_balls;
   bool has_cue = false;

@@ -438,8 +438,25 @@ Vec2 parseTip(const json& v, const std::string& path) {
   return tip;
 }
 
+namespace {
+
+// "heading_deg", or "heading_rad" (the exact radians a result prints, which degrees written out
+// in decimal do not give back bit for bit): one of them, in degrees for Shot's makers.
+double headingField(const json& v, const std::string& path, std::optional<double>& exact_rad) {
+  const json* rad = optional(v, "heading_rad");
+  if (!rad) return number(required(v, path, "heading_deg"), member(path, "heading_deg"));
+  if (optional(v, "heading_deg")) {
+    refuse(path, "give either \"heading_deg\" or \"heading_rad\", not both");
+  }
+  exact_rad = number(*rad, member(path, "heading_rad"));
+  return radToDeg(*exact_rad);
+}
+
+}  // namespace
+
 Shot parseShotFields(const json& v, const std::string& path, double cue_mass) {
-  const double heading = number(required(v, path, "heading_deg"), member(path, "heading_deg"));
+  std::optional<double> exact_rad;
+  const double heading = headingField(v, path, exact_rad);
   const json* speed = optional(v, "speed");
   const json* force = optional(v, "force");
   const json* contact_time = optional(v, "contact_time");
@@ -462,8 +479,17 @@ Shot parseShotFields(const json& v, const std::string& path, double cue_mass) {
                        " m/s, more than " + formatNumber(kMaxSpeed));
     }
   }
+  // The radians as given, to the bit (Shot's makers go through degrees).
+  if (exact_rad) shot.heading_rad = *exact_rad;
   if (const json* tip = optional(v, "tip")) shot.tip = parseTip(*tip, member(path, "tip"));
-  if (const json* e = optional(v, "elevation_deg")) {
+  const json* elevation_rad = optional(v, "elevation_rad");
+  if (elevation_rad) {
+    if (optional(v, "elevation_deg")) {
+      refuse(path, "give either \"elevation_deg\" or \"elevation_rad\", not both");
+    }
+    shot.elevation_rad =
+        number(*elevation_rad, member(path, "elevation_rad"), Bounds::closed(0.0, degToRad(89.0)));
+  } else if (const json* e = optional(v, "elevation_deg")) {
     // 90 degrees would drive the ball straight into the slate: no horizontal motion at all.
     shot.elevation_rad =
         degToRad(number(*e, member(path, "elevation_deg"), Bounds::closed(0.0, 89.0)));
@@ -476,7 +502,9 @@ namespace {
 Shot parseShot(const json& v, const std::vector<BallState>& balls, const PhysicsParams& physics) {
   const std::string path = "shot";
   expectObject(v, path);
-  allowOnly(v, path, {"heading_deg", "speed", "force", "contact_time", "tip", "elevation_deg"});
+  allowOnly(v, path,
+            {"heading_deg", "heading_rad", "speed", "force", "contact_time", "tip", "elevation_deg",
+             "elevation_rad"});
   const auto cue =
       std::find_if(balls.begin(), balls.end(), [](const BallState& b) { return b.id == kCueBall; });
   if (cue == balls.end()) refuse(path, "needs a cue ball (a ball with id 0)");

@@ -9,6 +9,7 @@
 #include "nineball/sim.hpp"
 #include "play/shot_summary.hpp"
 #include "play/snookered.hpp"
+#include "rules/snooker_balls.hpp"
 
 namespace nineball {
 
@@ -83,6 +84,8 @@ Match::Match(const MatchSetup& setup)
     : setup_(setup),
       world_(makeEngine(setup.table, setup.physics, setup.step)),
       rack_(setup.game, setup.rules, {}, !setup.balls) {
+  const std::string table_problem = tableProblem(gameDef(setup.game), setup.table);
+  if (!table_problem.empty()) throw IllegalAction(table_problem);
   std::vector<BallState> balls;
   if (setup.balls) {
     balls = *setup.balls;
@@ -223,7 +226,22 @@ void Match::beginShot(const TurnInput& turn) {
                             : "the push-out waits for the opponent's decision (shoot or pass)");
   }
   const bool push_out = turn.kind == TurnInput::Kind::PushOut;
-  if (push_out && !rack_.pushOutAvailable()) throw IllegalAction("no push-out is allowed now");
+  const GameDef& game = gameDef(rack_.game());
+  if (push_out && !game.push_outs) {
+    throw IllegalAction(std::string(game.name) + " has no push-out");
+  }
+  if (push_out && !rack_.pushOutAvailable()) {
+    throw IllegalAction("no push-out is allowed now: only on the shot just after the break");
+  }
+  if (turn.call && !game.takes_calls) {
+    throw IllegalAction(std::string(game.name) + " takes no call: \"call\" is for " +
+                        gamesTakingCalls());
+  }
+  if (turn.call && game.snookers && !rack_.isBreak()) {
+    if (const auto problem = rules::snooker::nominationProblem(rack_.state(), turn.call->ball)) {
+      throw IllegalAction(*problem);
+    }
+  }
   if (!push_out && rack_.callRequired() && !turn.call) {
     throw IllegalAction(std::string("every ") + gameDef(rack_.game()).called_shots + " in " +
                         gameDef(rack_.game()).name +
@@ -337,7 +355,11 @@ void Match::setUpFrozenBalls() {
 TurnRecord Match::play(const TurnInput& turn) {
   if (turn.kind == TurnInput::Kind::Decision) {
     if (rack_.over()) throw IllegalAction("the game is over");
-    if (!rack_.awaitingDecision()) throw IllegalAction("no push-out waits for a decision");
+    const GameDef& game = gameDef(rack_.game());
+    if (!game.decisions) throw IllegalAction(game.decision.about);
+    if (!rack_.awaitingDecision()) {
+      throw IllegalAction(std::string("no decision is due now (") + game.decision.about + ")");
+    }
     TurnRecord rec;
     rec.kind = TurnInput::Kind::Decision;
     rec.shooter = rack_.shooter();

@@ -65,6 +65,13 @@ void CuePainter::drawGuide(sf::RenderTarget& target, const ViewTransform& view,
   const double guide_length = kGuideLength * scale;
   batch_.softLine(view.toPixels(guide.start), view.toPixels(guide.end), w, path);
   const Vec2 end = view.toPixels(guide.end);
+  // Scale 0: the cue ball's line alone, to the ghost ball, and nothing after the contact.
+  const bool after_contact = scale > 0.0;
+  if (!after_contact) {
+    batch_.softRing(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 150));
+    batch_.draw(target);
+    return;
+  }
   switch (guide.target) {
     case AimTarget::Ball: {
       batch_.softRing(end, view.px(r) - w, view.px(r), sf::Color(255, 255, 255, 190));

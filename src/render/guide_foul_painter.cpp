@@ -15,8 +15,8 @@ const sf::Color kLabelBox(10, 12, 14, 210);
 
 }  // namespace
 
-void drawGuideFoul(sf::RenderTarget& target, const ViewTransform& view, const AimGuide& guide,
-                   double ball_radius, const std::string& why, const Fonts& fonts) {
+void drawGuideFoulPath(sf::RenderTarget& target, const ViewTransform& view, const AimGuide& guide,
+                       double ball_radius) {
   const double w = std::max(2.0, view.px(0.005));
   const double r = view.px(ball_radius);
   const Vec2 ghost = view.toPixels(guide.end);
@@ -24,6 +24,12 @@ void drawGuideFoul(sf::RenderTarget& target, const ViewTransform& view, const Ai
   marks.softLine(view.toPixels(guide.start), ghost, w, kFoulLine);
   marks.softRing(ghost, r - w, r, kFoulLine);
   marks.draw(target);
+}
+
+void drawGuideFoulLabel(sf::RenderTarget& target, const ViewTransform& view, const AimGuide& guide,
+                        double ball_radius, const std::string& why, const Fonts& fonts) {
+  const double r = view.px(ball_radius);
+  const Vec2 ghost = view.toPixels(guide.end);
   sf::Text label(why, fonts.regular, static_cast<unsigned>(std::max(10.0, r * 1.1)));
   label.setFillColor(kFoulText);
   const sf::FloatRect b = label.getLocalBounds();

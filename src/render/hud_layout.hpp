@@ -24,12 +24,15 @@ struct HudLayout {
   PixelRect panel;                 ///< a dialog over the table (help, push-out choice, game over)
   PixelRect button_left;           ///< the dialog's first button
   PixelRect button_right;          ///< the dialog's second button
+  PixelRect button_middle;         ///< a third between them (three_buttons), else empty
   double text_px = 12.0;           ///< the HUD's character size
   double spin_labels_right = 0.0;  ///< the right edge of the spin icon's labels (px)
 
   /// No text is drawn larger than needed below this size; a line that does not fit its room
   /// shrinks instead, so small windows keep every line inside its place.
   static constexpr double kMinTextPx = 10.0;
+  /// How far past the tilt ring the cue's marker on it reaches, in spin-icon radii.
+  static constexpr double kTiltMarkReach = 0.25;
   /// The room (m at the view's scale) left of the spin icon for its three labels.
   static constexpr double kSpinLabelsWidth = 0.42;
 
@@ -41,8 +44,10 @@ struct HudLayout {
   /// the rack's end are strips across the table that leave the balls in sight: along a long
   /// cushion when that hides none of `keep_clear` (the balls, m), else the place across the
   /// table (or, failing that, over a HUD band) that hides the fewest. Help is wide.
-  static HudLayout of(const ViewTransform& view, Overlay overlay = Overlay::None,
-                      const std::vector<Vec2>& keep_clear = {}) {
+  static HudLayout of(const ViewTransform& zoomed_view, Overlay overlay = Overlay::None,
+                      const std::vector<Vec2>& keep_clear = {}, bool three_buttons = false) {
+    // The HUD does not zoom with the table.
+    const ViewTransform view = zoomed_view.hud();
     const bool strip = overlay == Overlay::PushOutChoice || overlay == Overlay::GameOver;
     const bool wide = overlay == Overlay::Help;
     HudLayout h;
@@ -56,7 +61,9 @@ struct HudLayout {
     const double msg_left = h.power_bar.left + h.power_bar.width + 2.0 * margin;
     h.tilt_inner = 1.12 * h.spin_radius;
     h.tilt_outer = 1.42 * h.spin_radius;
-    h.spin_labels_right = h.spin_centre.x - h.tilt_outer - 0.02 * s;
+    // Clear of the cue's marker on the ring, which reaches past it by a quarter of the icon.
+    h.spin_labels_right =
+        h.spin_centre.x - h.tilt_outer - kTiltMarkReach * h.spin_radius - 0.02 * s;
     const double msg_right = h.spin_labels_right - std::max(kSpinLabelsWidth * s, 0.2 * band.width);
     // A narrow window's letterbox below the table gives a long message its second line.
     const double below = view.heightPx() - band.top - 0.01 * s;
@@ -71,10 +78,19 @@ struct HudLayout {
                       s;
     h.panel = {c.x - pw / 2.0, c.y - ph / 2.0, pw, ph};
     if (strip) h.panel.top = stripTop(view, h.panel, keep_clear);
-    const double bw = 0.5 * s, bh = 0.085 * s, gap = 0.08 * s;
+    const double bh = 0.085 * s, gap = 0.08 * s;
     const double by = h.panel.top + ph - bh - 0.04 * s;
-    h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
-    h.button_right = {c.x + gap / 2.0, by, bw, bh};
+    if (three_buttons) {
+      // Narrower, so that three fit the strip's width with room at its ends.
+      const double bw = 0.38 * s;
+      h.button_middle = {c.x - bw / 2.0, by, bw, bh};
+      h.button_left = {c.x - bw / 2.0 - gap / 2.0 - bw, by, bw, bh};
+      h.button_right = {c.x + bw / 2.0 + gap / 2.0, by, bw, bh};
+    } else {
+      const double bw = 0.5 * s;
+      h.button_left = {c.x - gap / 2.0 - bw, by, bw, bh};
+      h.button_right = {c.x + gap / 2.0, by, bw, bh};
+    }
     return h;
   }
 

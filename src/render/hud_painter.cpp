@@ -254,7 +254,8 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
                 sf::Color(200, 200, 200, 140));
   }
   const Vec2 tilt = HudLayout::tiltDirection(degToRad(hud.elevation_deg));
-  batch_.line(c + tilt * (layout.tilt_inner - 1.0), c + tilt * (layout.tilt_outer + 0.25 * r),
+  batch_.line(c + tilt * (layout.tilt_inner - 1.0),
+              c + tilt * (layout.tilt_outer + HudLayout::kTiltMarkReach * r),
               std::max(3.0, 0.09 * r), sf::Color(222, 184, 135));
   batch_.draw(target);
 
@@ -316,6 +317,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
   batch_.roundedRect(p.left, p.top, p.width, p.height, layout.text_px, kPanel);
   const bool buttons = !hud.button_left.empty() || !hud.button_right.empty();
   for (const auto& [label, rect] : {std::pair{&hud.button_left, layout.button_left},
+                                    std::pair{&hud.button_middle, layout.button_middle},
                                     std::pair{&hud.button_right, layout.button_right}}) {
     if (!label->empty()) {
       batch_.roundedRect(rect.left, rect.top, rect.width, rect.height, rect.height / 3.0, kButton);
@@ -346,6 +348,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
     y += line_size * 1.45;
   }
   for (const auto& [label, rect] : {std::pair{&hud.button_left, layout.button_left},
+                                    std::pair{&hud.button_middle, layout.button_middle},
                                     std::pair{&hud.button_right, layout.button_right}}) {
     if (!label->empty()) {
       const PixelRect inner{rect.left + rect.height * 0.3, rect.top, rect.width - rect.height * 0.6,
@@ -359,7 +362,8 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
 
 void HudPainter::draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud) {
   drawn_.clear();
-  const HudLayout layout = HudLayout::of(view, hud.overlay, hud.keep_clear);
+  const HudLayout layout =
+      HudLayout::of(view, hud.overlay, hud.keep_clear, !hud.button_middle.empty());
   drawPlayers(target, view, hud, layout);
   drawBottom(target, hud, layout);
   if (hud.overlay != Overlay::None) drawOverlay(target, hud, layout);

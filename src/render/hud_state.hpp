@@ -50,6 +50,8 @@ struct HudState {
   std::vector<std::string> overlay_lines;
   std::string button_left;   ///< empty: no button
   std::string button_right;  ///< empty: no button
+  /// A third answer between the two (snooker's "replace" after a miss); empty: none.
+  std::string button_middle;
   /// Carom, while a shot rolls and just after: the cushions the shooter's ball has met before
   /// its second ball, and "point" / "no point" once that is decided (empty: not shown).
   std::string carom_count;

@@ -45,7 +45,8 @@ struct Frame {
   double time = 0.0;
   double ball_radius = 0.028575;
   std::optional<AimGuide> guide;
-  double guide_scale = 1.0;      ///< the guide's lines after the contact, times normal
+  /// The guide's lines after the contact, times normal; 0 draws the cue ball's line alone.
+  double guide_scale = 1.0;
   std::optional<AimGuide> bank;  ///< the path on from the first cushion (a setting)
   /// The guide's first ball would be a foul: why, in a few words ("foul: the 3 is not the ball
   /// on"); the guide is then drawn red with this beside its ghost ball. Empty: no foul.
@@ -55,7 +56,14 @@ struct Frame {
   std::optional<CallMark> call;    ///< the shot being called (games with calls)
   BallLooks looks = poolBallLook;  ///< the game's set of balls
   HudState hud;
+  /// The table the balls are on, when the picture knows it: the painter then draws that table
+  /// (a menu's pick, a host's match or a resumed rack change it under the painter). Owned by
+  /// whoever built the frame, and read only while the frame is drawn.
+  const TableGeometry* table = nullptr;
 };
+
+/// True when two built tables are drawn alike: the same sizes, marks and cushion loop.
+bool sameTable(const TableGeometry& a, const TableGeometry& b);
 
 /// Draws frames of one table at one window size.
 class ScenePainter {
@@ -64,7 +72,14 @@ class ScenePainter {
 
   /// Call when the window's size changes.
   void resize(double width_px, double height_px);
-  const ViewTransform& view() const { return view_; }
+  /// Draws `table` from now on (its picture made again when it differs from the one drawn);
+  /// draw() does this for every frame that names its table.
+  void showTable(const TableGeometry& table);
+  const TableGeometry& table() const { return table_; }
+  /// Draws the table `zoom` times closer (1 to 4) round `focus` (m), the HUD as ever.
+  void setZoom(double zoom, Vec2 focus);
+  /// The view the table, the balls and the pointer are seen through (zoomed).
+  const ViewTransform& view() const { return zoomed_; }
 
   void draw(sf::RenderTarget& target, const Frame& frame);
   /// Every line of text the last frame's HUD drew.
@@ -72,10 +87,14 @@ class ScenePainter {
 
  private:
   void coverBands(sf::RenderTarget& target);
+  void drawTable(sf::RenderTarget& target);
 
   TableGeometry table_;
   const Fonts& fonts_;
-  ViewTransform view_;
+  ViewTransform view_;    // unzoomed: the table's picture and the HUD
+  ViewTransform zoomed_;  // the table as seen now
+  double zoom_ = 1.0;
+  Vec2 focus_;
   TablePainter table_painter_;
   // The background and the table drawn once per size: the software renderer is bound by
   // filled pixels, so each frame starts from one opaque copy instead of layers of shapes.

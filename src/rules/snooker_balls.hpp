@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "nineball/rules.hpp"
@@ -29,6 +31,11 @@ inline int value(int ball) {
   if (isRed(ball)) return 1;
   return isColour(ball) ? ball - 14 : 0;
 }
+
+/// Why `ball` cannot be nominated for the coming stroke (a colour after a red, any ball as a
+/// free ball; never a red otherwise, nor a colour while a red or a lower colour is on), in
+/// words that name the ball; nothing when it may.
+std::optional<std::string> nominationProblem(const RackState& s, int ball);
 
 /// Any red on the table.
 bool redsRemain(const RackState& s);

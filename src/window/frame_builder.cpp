@@ -51,7 +51,9 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
       }
       const std::optional<ai::Level> level = computerLevel(computer.opponent());
       hud.overlay_lines.insert(hud.overlay_lines.end(),
-                               "O: 2 players, or vs computer easy / medium / hard (now: " +
+                               "O: 2 players, or the computer at a level, " +
+                                   std::string(ai::levelName(ai::allLevels().front())) + " to " +
+                                   ai::levelName(ai::allLevels().back()) + " (now: " +
                                    (level ? std::string("computer ") + ai::levelName(*level)
                                           : std::string("2 players")) +
                                    ")");
@@ -92,7 +94,11 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
           break;
         }
         hud.overlay_lines = {"Play from here, or put " + offender + " back in to play again."};
-        if (miss) hud.overlay_lines.push_back("R: the balls replaced, and " + offender + " again.");
+        if (miss) {
+          hud.overlay_lines.push_back("Or replace the balls where they were, and " + offender +
+                                      " plays again.");
+          hud.button_middle = "Replace (R)";
+        }
         hud.button_left = "Play (S)";
         hud.button_right = "Put back (P)";
         break;
@@ -114,17 +120,23 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
     case Overlay::GameOver: {
       const auto winner = session.match().rack().winner();
       const std::string name = winner ? session.seatName(session.seatOf(*winner)) : "";
-      // Snooker's frames make a match of bestOf() frames; pool's racks simply add up.
+      // A match of bestOf() frames (snooker) or a race to so many racks (pool); without one the
+      // racks simply add up.
       const bool frames = gameDef(session.match().rack().game()).snookers;
       const std::string unit = frames ? "frame" : "rack";
       const std::string tally = session.seatName(0) + " " + std::to_string(session.racksWon(0)) +
                                 " - " + std::to_string(session.racksWon(1)) + " " +
                                 session.seatName(1);
       hud.overlay_title = name + " wins " + unit + " " + std::to_string(session.rackNumber()) + "!";
-      hud.overlay_lines = {session.message(), (frames ? "Frames: " : "Racks: ") + tally};
+      // How the rack ended is the message line below the table: the dialog does not say it
+      // twice, and keeps to the score and the players' figures.
+      hud.overlay_lines = {(frames ? "Frames: " : "Racks: ") + tally};
       hud.button_left = frames ? "Next frame (R)" : "Rematch (R)";
-      if (frames && session.bestOf() > 0) {
-        hud.overlay_lines.back() += " (best of " + std::to_string(session.bestOf()) + ")";
+      if (session.bestOf() > 0) {
+        const int race = framesToWinMatch(session.bestOf());
+        hud.overlay_lines.back() += frames ? " (best of " + std::to_string(session.bestOf()) + ")"
+                                           : " (race to " + std::to_string(race) + ")";
+        if (!frames) hud.button_left = "Next rack (R)";
         if (const auto champion = session.matchWinner()) {
           hud.overlay_title = session.seatName(*champion) + " wins the match!";
           hud.button_left = "New match (R)";
@@ -180,6 +192,11 @@ bool leavingLosesNothing(const GameSession& session, const UiState& ui) {
 
 std::string opponentModeLabel(const Seat& opponent) {
   return app::opponentLabel(opponent) + "   O: opponent";
+}
+
+bool replaceOffered(const GameSession& session, const UiState& ui) {
+  return activeOverlay(session, ui) == Overlay::PushOutChoice &&
+         session.match().rack().pendingDecision() == rules::Decision::PlayPutBackOrReplace;
 }
 
 Overlay activeOverlay(const GameSession& session, const UiState& ui) {
@@ -254,6 +271,7 @@ void fillSnookerHud(render::HudState& hud, const GameSession& session) {
 render::Frame buildFrame(const GameSession& session, const UiState& ui,
                          const ComputerPlayer& computer) {
   render::Frame f;
+  f.table = &session.match().world().table();
   f.balls = session.ballsToDraw();
   f.time = session.drawTime();
   f.ball_radius = session.match().world().physics().ball_radius;
@@ -325,6 +343,9 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
                                                       : "Paper rules";
   const GameDef& game = gameDef(rack.game());
   if (&game != &defaultGame()) hud.rules = std::string(game.name) + ", " + hud.rules;
+  if (!game.snookers && session.bestOf() > 0) {
+    hud.rules += ", race to " + std::to_string(framesToWinMatch(session.bestOf()));
+  }
   if (game.groups) {
     hud.split_groups = true;
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {

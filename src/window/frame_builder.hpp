@@ -30,4 +30,8 @@ std::string opponentModeLabel(const Seat& opponent);
 /// The dialog on screen, if any (the same rule the input uses to route keys and clicks).
 render::Overlay activeOverlay(const GameSession& session, const UiState& ui);
 
+/// The dialog on screen offers snooker's third answer after a miss, the balls replaced (its
+/// middle button).
+bool replaceOffered(const GameSession& session, const UiState& ui);
+
 }  // namespace nineball::window

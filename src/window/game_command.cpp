@@ -12,6 +12,7 @@
 #include "nineball/games.hpp"
 #include "nineball/seat.hpp"
 #include "window/game_window.hpp"
+#include "window/rack_seed.hpp"
 
 namespace nineball::window {
 
@@ -27,7 +28,7 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
         << rules::ruleSetName(game.rule_sets.front()) << " rules\n";
     return app::kExitBadInput;
   }
-  start.setup.seed = options.seed;
+  start.setup.seed = drawsFreshSeeds(options) ? freshSeed() : options.seed;
   const bool online = options.host_port || !options.join.empty();
   if (online && (options.practice || options.replay)) {
     err << "nineball: " << (options.practice ? "--practice" : "--replay")

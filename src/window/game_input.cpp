@@ -1,5 +1,6 @@
 #include "window/game_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/opponent.hpp"
@@ -18,6 +19,11 @@ using render::Overlay;
 // end of the table needs aims a hundredth of a degree apart.
 constexpr double kAimNudgeDeg = 0.1;
 constexpr double kAimFineNudgeDeg = 0.01;
+// Shift held, the pointer turns the line this far per pixel it travels across (deg): a
+// thousand pixels of travel are 20 degrees, a pixel a fiftieth.
+constexpr double kFineDegPerPixel = 0.02;
+// The closest view of the table (times the whole table's).
+constexpr double kMaxZoom = 4.0;
 constexpr double kSpeedNudge = 0.1;
 // Held keys repeat after this delay (s), slowly for a while, then fast.
 constexpr double kHoldDelay = 0.3;
@@ -46,6 +52,14 @@ constexpr double kFastForward = 4.0;
 
 bool inside(const render::PixelRect& r, Vec2 p) {
   return r.contains(p);
+}
+
+// The bottom band holds the controls (the power gauge, the spin icon and its tilt ring): the
+// pointer there is on its way to one of them, never aiming.
+bool overControls(Vec2 px, const render::ViewTransform& view) {
+  const render::HudLayout layout = render::HudLayout::of(view);
+  return inside(view.bottomBand(), px) ||
+         length(px - layout.spin_centre) <= layout.tilt_outer + 0.15 * layout.spin_radius;
 }
 
 // Rate of a held key: nothing until it repeats, slow, then fast.
@@ -86,12 +100,21 @@ void GameInput::handle(const sf::Event& event, const render::ViewTransform& view
       held_.clear();
       shift_ = fine_ = false;
       break;
-    case sf::Event::MouseWheelScrolled:
-      if (event.mouseWheelScroll.wheel == sf::Mouse::VerticalWheel && mayAim()) {
-        session_.setHeading(session_.heading() +
-                            degToRad(kAimFineNudgeDeg * event.mouseWheelScroll.delta));
+    case sf::Event::MouseWheelScrolled: {
+      if (event.mouseWheelScroll.wheel != sf::Mouse::VerticalWheel) break;
+      const float notches = event.mouseWheelScroll.delta;
+      if (fine_) {
+        // Ctrl (or Alt) with the wheel zooms at the pointer.
+        const Vec2 at = view.toWorld({static_cast<double>(event.mouseWheelScroll.x),
+                                      static_cast<double>(event.mouseWheelScroll.y)});
+        zoomBy(notches > 0 ? 1 : -1, at);
+      } else if (mayAim()) {
+        // A notch turns the line a hundredth of a degree, with Shift a tenth.
+        const double step = shift_ ? kAimNudgeDeg : kAimFineNudgeDeg;
+        session_.setHeading(session_.heading() + degToRad(step * notches));
       }
       break;
+    }
     case sf::Event::MouseButtonPressed: {
       const Vec2 px{static_cast<double>(event.mouseButton.x),
                     static_cast<double>(event.mouseButton.y)};
@@ -120,6 +143,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   const Overlay overlay = activeOverlay(session_, ui_);
   if (key.code == Key::F1) requests_.toggle_fullscreen = true;
   if (key.code == Key::F12) requests_.screenshot = true;
+  if (key.code == Key::F5) requests_.save_rack = true;
   if (session_.replaying()) {
     if (key.code != Key::F1 && key.code != Key::F12) session_.stopReplay();
     return;
@@ -150,6 +174,14 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   if (overlay == Overlay::Help) return;
   if (key.code == Key::O) {
     switchOpponent();
+    return;
+  }
+  if (key.code == Key::Z) {
+    zoomBy(key.shift ? -1 : 1);
+    return;
+  }
+  if (key.code == Key::G) {
+    requests_.cycle_guide = true;
     return;
   }
   if (key.code == Key::V && overlay != Overlay::ConfirmQuit && ui_.drag == Drag::None) {
@@ -213,6 +245,12 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     case Key::K:
       session_.callObvious();
       break;
+    case Key::X:
+      ui_.aim_locked = !ui_.aim_locked;
+      session_.say(ui_.aim_locked ? "Aim locked: the pointer leaves the line (Shift+pointer, the "
+                                    "arrows and the wheel fine-tune it; X unlocks)."
+                                  : "Aim unlocked: the pointer aims.");
+      break;
     default:
       break;
   }
@@ -258,6 +296,17 @@ bool GameInput::mayAim() const {
 }
 
 void GameInput::followSettledAim(double seconds) {
+  // A locked line is the turn's: the next turn aims afresh.
+  if (session_.phase() != Phase::Aiming || computer_.controls(session_)) ui_.aim_locked = false;
+  // Only the player's own aim is kept: the computer's, a shot's or a dialog's are not, and a
+  // turn begins with the aim it was handed.
+  if (!mayAim()) {
+    settled_heading_.reset();
+    last_heading_ = session_.heading();
+    heading_still_for_ = 0.0;
+    return;
+  }
+  if (!settled_heading_) settled_heading_ = session_.heading();
   if (session_.heading() != last_heading_) {
     last_heading_ = session_.heading();
     heading_still_for_ = 0.0;
@@ -365,10 +414,12 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   const bool computer_turn = computer_.controls(session_);
   if (computer_turn && overlay == Overlay::PushOutChoice) return;
   if (overlay != Overlay::None) {
+    const bool replace = replaceOffered(session_, ui_);
     const render::HudLayout layout =
-        render::HudLayout::of(view, overlay, dialogKeepClear(session_));
+        render::HudLayout::of(view, overlay, dialogKeepClear(session_), replace);
     if (inside(layout.button_left, px)) clickButton(true);
     if (inside(layout.button_right, px)) clickButton(false);
+    if (replace && inside(layout.button_middle, px)) session_.decide(false, true);
     return;
   }
   if (session_.phase() != Phase::Aiming || computer_turn) return;
@@ -436,9 +487,16 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
     case Drag::None:
       break;
   }
-  if (session_.phase() != Phase::Aiming || dialogOpen() || computer_.controls(session_)) return;
-  if (session_.callPocketAt(m)) {
-    // The pointer went to a pocket to call it, not to aim there.
+  if (!mayAim()) return;
+  if (shift_) {
+    fineTune(px);
+    return;
+  }
+  last_px_ = px;
+  if (ui_.aim_locked) return;
+  if (session_.callPocketAt(m) || overControls(px, view)) {
+    // The pointer went to a pocket to call it, or to the spin icon, the tilt ring or the power
+    // gauge to use them, not to aim there: the aim held before it set out stays.
     if (settled_heading_) session_.setHeading(*settled_heading_);
     return;
   }
@@ -446,6 +504,28 @@ void GameInput::mouseMoved(Vec2 px, const render::ViewTransform& view) {
   const double r = session_.match().world().physics().ball_radius;
   if (length(m - cue) > kAimDeadZone * r) {
     session_.setHeading(std::atan2(m.y - cue.y, m.x - cue.x));
+  }
+}
+
+void GameInput::fineTune(Vec2 px) {
+  // The line locks as it is fine-tuned, so that letting go of Shift does not throw it back to
+  // the pointer.
+  ui_.aim_locked = true;
+  if (last_px_) {
+    // Rightwards turns the line clockwise, as the pointer would swing it over the far end.
+    session_.setHeading(session_.heading() - degToRad(kFineDegPerPixel * (px.x - last_px_->x)));
+  }
+  last_px_ = px;
+}
+
+void GameInput::zoomBy(int steps, std::optional<Vec2> at) {
+  ui_.zoom = std::clamp(ui_.zoom + steps, 1.0, kMaxZoom);
+  if (ui_.zoom == 1.0) {
+    ui_.zoom_at.reset();
+  } else if (at) {
+    ui_.zoom_at = at;
+  } else if (steps > 0) {
+    ui_.zoom_at.reset();  // Z: round the cue ball, following it
   }
 }
 
@@ -459,7 +539,9 @@ void GameInput::mouseReleased() {
   }
   if (drag == Drag::Cue) {
     // From its new spot the cue looks at the ball on, not wherever the pointer lies on it.
-    if (ui_.ghost && session_.placeCue(ui_.ghost->pos)) session_.aimAtBallOn();
+    if (ui_.ghost && session_.placeCue(ui_.ghost->pos) && !ui_.aim_locked) {
+      session_.aimAtBallOn();
+    }
     ui_.ghost.reset();
   } else if (drag == Drag::Ball) {
     if (ui_.ghost) session_.moveBall(ui_.ghost->id, ui_.ghost->pos);

@@ -17,6 +17,8 @@ struct WindowRequests {
   bool menu = false;  ///< back to the start menu (the rack kept as on quitting)
   bool toggle_fullscreen = false;
   bool screenshot = false;
+  bool cycle_guide = false;  ///< G: the aim guide's next style (full, cue-ball line, off)
+  bool save_rack = false;    ///< F5: the rack as a match script, to play again
 };
 
 /// Turns mouse and keyboard into play: the pointer aims, a drag back sets the power and the
@@ -53,6 +55,11 @@ class GameInput {
   void moveCueBy(Vec2 d);
   bool dialogOpen() const;
   void switchOpponent();
+  /// Z / Shift+Z: one step closer or further (1x to 4x); `at` fixes the view on that point
+  /// (m), else it follows the cue ball.
+  void zoomBy(int steps, std::optional<Vec2> at = std::nullopt);
+  /// Shift held with the pointer moving: the locked line turned a small step per pixel.
+  void fineTune(Vec2 px);
   /// Practice's own keys (1-9, U, Backspace, Y); true when the key was one of them.
   bool practiceKey(const sf::Event::KeyEvent& key);
 
@@ -66,6 +73,7 @@ class GameInput {
   double last_heading_ = 0.0;
   double heading_still_for_ = 0.0;
   std::optional<double> settled_heading_;
+  std::optional<Vec2> last_px_;  // the pointer's last pixel, for the fine-tuning's travel
 };
 
 }  // namespace nineball::window

@@ -19,6 +19,8 @@
 #include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
+#include "window/rack_script.hpp"
+#include "window/rack_seed.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
@@ -152,6 +154,11 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
 }
 
 std::optional<int> GameLoop::playScript(const GameStart& start) {
+  if (options_.watch) {
+    // Played on screen as the frames go (playWatchedTurn), not before the first one.
+    watched_ = start.turns;
+    return std::nullopt;
+  }
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
       session_.playTurn(start.turns[i]);
@@ -197,15 +204,31 @@ void GameLoop::openGameWindow() {
   menu_painter_.emplace(*fonts_);
 }
 
-// Nothing when the game goes on to its frames.
+// What the start menu needs from the window: where it draws and the table behind it.
 StartMenuContext GameLoop::menuContext() {
-  return {*window_, *painter_, *menu_painter_,
-          [this] { return buildFrame(session_, ui_, computer_); }, options_.mute};
+  return {*window_,
+          *painter_,
+          *menu_painter_,
+          [this] { return buildFrame(session_, ui_, computer_); },
+          options_.mute,
+          drawsFreshSeeds(options_),
+          {}};
 }
 
 std::optional<int> GameLoop::startMenu() {
   StartMenuContext menu = menuContext();
-  if (show_menu_ && capture_) {
+  // The tests pick from the menu by keys typed before it shows (NINEBALL_MENU_KEYS="down,
+  // right,enter"), and then take the picture of the game picked.
+  const char* typed = std::getenv("NINEBALL_MENU_KEYS");
+  if (show_menu_ && capture_ && typed) {
+    std::string why;
+    const std::optional<std::vector<MenuKey>> keys = parseMenuKeys(typed, why);
+    if (!keys) {
+      err_ << "nineball: NINEBALL_MENU_KEYS: " << why << '\n';
+      return app::kExitBadInput;
+    }
+    menu.typed = *keys;
+  } else if (show_menu_ && capture_) {
     drawStartMenu(menu, settings_);
     std::string why;
     if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
@@ -218,6 +241,7 @@ std::optional<int> GameLoop::startMenu() {
     MenuModel::Outcome outcome = MenuModel::Outcome::None;
     if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
     startOnlineFromMenu(outcome);
+    followTable();
   }
   return std::nullopt;
 }
@@ -297,8 +321,7 @@ void GameLoop::updateOnline(double dt) {
   if (online_->sessionReplaced()) {
     session_.setTurnObserver(count_);
     stats_ = SessionStats{};
-    painter_.emplace(session_.match().world().table(), *fonts_);
-    painter_->resize(window_->getSize().x, window_->getSize().y);
+    followTable();
   }
 }
 
@@ -366,6 +389,8 @@ int GameLoop::run() {
 
 // True when anything came (or on the first frame): the picture must be drawn again.
 bool GameLoop::handleEvents() {
+  // The pointer maps to the table the session plays on, whatever changed it since the last frame.
+  followTable();
   sf::Event event;
   bool changed = frame_ == 0;
   while (window_->pollEvent(event)) {
@@ -428,8 +453,10 @@ void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
 bool GameLoop::waitWhileIdle(bool changed) {
   // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
   // instead of drawing the same picture again (the idle window costs next to nothing).
-  const bool still = !online_ && session_.phase() != Phase::Rolling && !session_.replaying() &&
-                     !computer_.controls(session_) && !input_.keysHeld() && ui_.drag == Drag::None;
+  const bool watching = next_watched_ < watched_.size();
+  const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
+                     !session_.replaying() && !computer_.controls(session_) && !input_.keysHeld() &&
+                     ui_.drag == Drag::None;
   if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
     frame_clock_.restart();
@@ -445,6 +472,7 @@ bool GameLoop::advance() {
       capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
   input_.update(dt);
   updateOnline(dt);
+  playWatchedTurn(dt);
   // The computer waits while the help or the quit question is open, as a player would.
   if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
     computer_.update(session_, dt);
@@ -463,6 +491,11 @@ bool GameLoop::advance() {
 void GameLoop::draw() {
   render::Frame picture = buildFrame(session_, ui_, computer_);
   picture.guide_scale = guideLengthFactor(settings_.guide);
+  if (settings_.guide == GuideLength::Off) {
+    picture.guide.reset();
+    picture.guide_foul.clear();
+  }
+  zoomView(picture);
   if (settings_.bank_line && picture.guide) {
     picture.bank = bankGuide(session_.match().world().table(), picture.ball_radius, picture.balls,
                              *picture.guide);
@@ -529,6 +562,17 @@ void GameLoop::answerRequests() {
     requests.menu = false;
     backToMenu();
   }
+  if (requests.save_rack) {
+    requests.save_rack = false;
+    saveRackScript();
+  }
+  if (requests.cycle_guide) {
+    requests.cycle_guide = false;
+    settings_.guide = nextGuide(settings_.guide);
+    saveSettingsNow();
+    session_.say(std::string("Aim guide: ") + guideLengthName(settings_.guide) +
+                 " (G changes it; the menu's settings keep it).");
+  }
   if (requests.toggle_fullscreen) {
     requests.toggle_fullscreen = false;
     fullscreen_ = !fullscreen_;
@@ -582,6 +626,7 @@ void GameLoop::backToMenu() {
     return;
   }
   startOnlineFromMenu(outcome);
+  followTable();
   applySound();
   frame_clock_.restart();
   display_clock_.restart();

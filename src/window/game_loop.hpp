@@ -59,6 +59,8 @@ class GameLoop {
   bool beginOnline(OnlineConfig config, std::string& why);
   void startOnlineFromMenu(MenuModel::Outcome outcome);
   void updateOnline(double dt);
+  void playWatchedTurn(double dt);
+  void followTable();
   bool onlineCaptureDue() const;
 
   // The steps of one frame, in their order.
@@ -68,11 +70,13 @@ class GameLoop {
   bool waitWhileIdle(bool changed);
   bool advance();
   void draw();
+  void zoomView(const render::Frame& picture);
   bool saveCapture();
   void takeRequestedScreenshot();
   void present(bool rolling);
   void answerRequests();
   void capFrameRate();
+  void saveRackScript();
   void saveRackInPlay();
   void backToMenu();
   int finish();
@@ -111,6 +115,10 @@ class GameLoop {
   sf::Clock since_draw_;
   int forgotten_rack_ = 0;
   long frame_ = 0;
+  // --watch: the script's turns still to play on screen, and how long the balls have rested.
+  std::vector<TurnInput> watched_;
+  std::size_t next_watched_ = 0;
+  double rested_ = 0.0;
   std::optional<int> setup_status_;
   const bool online_start_;             // --host or --join
   std::unique_ptr<OnlinePlay> online_;  // the game against a player at another computer

@@ -23,6 +23,9 @@ namespace {
 constexpr double kMaxCatchUp = 0.25;
 // A shot still rolling after this long (s, simulated) is run to rest at once.
 constexpr double kMaxShotTime = 120.0;
+// The picture's clock runs on this long (s) after the balls stop: a ball that dropped as the
+// shot ended finishes sinking into its pocket (the balls at rest turn no further).
+constexpr double kAfterRest = 1.0;
 // Search step (m) for a free spot for the cue ball in hand.
 constexpr double kSpotSearchStep = 0.01;
 
@@ -63,89 +66,6 @@ void GameSession::rebuildPractice() {
     if (!practice_->has(id)) pocketed_.push_back(id);
   }
   phase_ = Phase::Aiming;
-}
-
-std::optional<int> GameSession::ballAt(Vec2 pos) const {
-  const double r = match_->world().physics().ball_radius;
-  std::optional<int> best;
-  double best_d = 1.2 * r;
-  for (const BallState& b : shot_.current) {
-    if (b.pocket) continue;
-    const double d = length(b.pos - pos);
-    if (d <= best_d) {
-      best = b.id;
-      best_d = d;
-    }
-  }
-  return best;
-}
-
-std::optional<std::string> GameSession::ballPlacementProblem(int id, Vec2 pos) const {
-  if (!practice_) return std::string("balls move by hand only in practice");
-  return practice_->placementProblem(id, pos);
-}
-
-bool GameSession::moveBall(int id, Vec2 pos) {
-  if (!practice_ || phase_ != Phase::Aiming) return false;
-  if (const auto problem = practice_->placementProblem(id, pos)) {
-    say("The ball cannot go there: " + *problem + ".", render::Tone::Warning);
-    return false;
-  }
-  practice_->place(id, pos);
-  rebuildPractice();
-  return true;
-}
-
-void GameSession::toggleBall(int id, Vec2 near) {
-  if (!practice_ || phase_ != Phase::Aiming || id == kCueBall) return;
-  if (practice_->has(id)) {
-    practice_->remove(id);
-    say("The " + std::to_string(id) + " is off the table (" + std::to_string(id) +
-        " puts it back).");
-  } else if (const auto spot = practice_->freeSpotNear(id, near)) {
-    practice_->place(id, *spot);
-    say("The " + std::to_string(id) + " is on the table: Shift+drag it where you want it.");
-  } else {
-    say("No room for the " + std::to_string(id) + ".", render::Tone::Warning);
-    return;
-  }
-  rebuildPractice();
-}
-
-void GameSession::restorePracticeShot(const PracticeShot& shot) {
-  rebuildPractice();
-  heading_ = shot.heading;
-  setSpeed(shot.speed);
-  tip_ = shot.tip;
-  elevation_ = shot.elevation;
-}
-
-void GameSession::undoShot() {
-  if (!practice_ || phase_ != Phase::Aiming) return;
-  const auto step = practice_->undo();
-  if (!step) {
-    say("Nothing to undo: no shot played or ball moved yet.", render::Tone::Warning);
-    return;
-  }
-  const std::string more = " (" + std::to_string(practice_->stepsRemembered()) + " more to undo).";
-  if (!step->shot) {
-    rebuildPractice();
-    say("The last ball moved is back where it was" + more);
-    return;
-  }
-  restorePracticeShot(step->before);
-  say("Back to before the last shot" + more);
-}
-
-void GameSession::retryShot() {
-  if (!practice_ || phase_ != Phase::Aiming) return;
-  const auto shot = practice_->retry();
-  if (!shot) {
-    say("Nothing to retry: no shot played yet.", render::Tone::Warning);
-    return;
-  }
-  restorePracticeShot(*shot);
-  say("The last shot set up again: same position, aim, power and spin.");
 }
 
 GameSession::~GameSession() = default;
@@ -288,8 +208,9 @@ void GameSession::startRack() {
   message_.clear();
   tone_ = render::Tone::Info;
   startTurn();
-  logger("game")->info("rack {}: {} breaks, rules {}", rackNumber(), seatName(seatToMove()),
-                       rules::ruleSetName(s.rules));
+  logger("game")->info(
+      "rack {}: {} breaks, rules {}, seed {} (--seed {} plays the game's racks again)",
+      rackNumber(), seatName(seatToMove()), rules::ruleSetName(s.rules), s.seed, setup_.seed);
 }
 
 void GameSession::startTurn() {
@@ -449,6 +370,7 @@ bool GameSession::shoot(const TurnInput& given) {
       turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
   clock_.reset();
+  after_rest_ = 0.0;
   shot_ball_ = shooterBall();
   shot_.begin(*match_);
   strike_from_ = cuePosition();
@@ -457,67 +379,6 @@ bool GameSession::shoot(const TurnInput& given) {
   }
   message_.clear();
   strike_ = audio::cueStrike(turn.shot.speed);
-  return true;
-}
-
-bool GameSession::callRequired() const {
-  return !practice_ && phase_ == Phase::Aiming && !push_out_ && match_->rack().callRequired();
-}
-
-int GameSession::callBall() const {
-  if (!callRequired()) return 0;
-  return call_ball_.value_or(match_->rack().ballOn());
-}
-
-std::optional<rules::Call> GameSession::call() const {
-  if (!callRequired() || !call_pocket_) return std::nullopt;
-  return rules::Call{callBall(), *call_pocket_};
-}
-
-std::optional<PocketId> GameSession::callPocketAt(Vec2 pos) const {
-  if (!callRequired()) return std::nullopt;
-  const Engine& w = match_->world();
-  return pocketNear(w.table(), pos, 3.0 * w.physics().ball_radius);
-}
-
-bool GameSession::clickCall(Vec2 pos) {
-  if (!callRequired()) return false;
-  if (const auto pocket = callPocketAt(pos)) {
-    call_pocket_ = pocket;
-    say("Called: the " + std::to_string(callBall()) + " in the " + pocketName(*pocket) +
-        " pocket.");
-    return true;
-  }
-  if (!gameDef(match_->rack().game()).call_any_ball) return false;
-  const auto ball = ballAt(pos);
-  if (!ball || *ball == kCueBall) return false;
-  call_ball_ = *ball;
-  say("Calling the " + std::to_string(*ball) + ": now click its pocket.");
-  return true;
-}
-
-void GameSession::callObvious() {
-  if (!callRequired()) {
-    say(practice_ ? "Practice has no rules, so no calls." : "No call is needed for this shot.",
-        render::Tone::Warning);
-    return;
-  }
-  const rules::Rack& rack = match_->rack();
-  const std::vector<int> callable =
-      gameDef(rack.game()).call_any_ball ? rack.ballsOnTable() : rack.legalFirstBalls();
-  const auto c =
-      obviousCall(match_->world().table(), shot_.current, aimGuide(), callBall(), callable);
-  if (!c) return;
-  call_ball_ = c->ball;
-  call_pocket_ = c->pocket;
-  say("Called: the " + std::to_string(c->ball) + " in the " + pocketName(c->pocket) + " pocket.");
-}
-
-bool GameSession::setCall(const rules::Call& c) {
-  if (!callRequired()) return false;
-  call_ball_ = c.ball;
-  call_pocket_ = c.pocket;
-  say("Called: the " + std::to_string(c.ball) + " in the " + pocketName(c.pocket) + " pocket.");
   return true;
 }
 
@@ -554,7 +415,10 @@ std::vector<audio::Impact> GameSession::advance(double frame_seconds) {
     if (replay_->finished()) replay_.reset();
     return impacts;
   }
-  if (phase_ != Phase::Rolling) return impacts;
+  if (phase_ != Phase::Rolling) {
+    after_rest_ = std::min(kAfterRest, after_rest_ + seconds);
+    return impacts;
+  }
   if (shot_.take(*match_, clock_.advance(seconds), kMaxShotTime, impacts)) finishShot();
   return impacts;
 }
@@ -570,19 +434,6 @@ void GameSession::finishShot() {
   }
   const TurnRecord record = match_->finishShot();
   afterTurn(record, ball_on_at_shot_);
-}
-
-void GameSession::finishPracticeShot() {
-  const std::vector<BallState> after = match_->balls();
-  std::vector<int> down;
-  for (const BallState& b : after) {
-    if (b.pocket && b.id != kCueBall && practice_->has(b.id)) down.push_back(b.id);
-  }
-  const bool cue_back = practice_->settle(after);
-  rebuildPractice();
-  std::string text = down.empty() ? "Nothing down." : sentence(ballList(down)) + " down.";
-  if (cue_back) text += " The cue ball dropped: it is back where it was struck from.";
-  say(text + " U: undo, Y: retry.", cue_back ? render::Tone::Foul : render::Tone::Info);
 }
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
@@ -714,7 +565,7 @@ std::vector<BallState> GameSession::ballsToDraw() const {
 double GameSession::drawTime() const {
   if (replay_) return replay_->time();
   if (phase_ == Phase::Rolling) return shot_.timeBetween(clock_.alpha());
-  return shot_.current_time;
+  return shot_.current_time + after_rest_;
 }
 
 std::optional<GameSession::Strike> GameSession::strike() const {
@@ -731,8 +582,8 @@ std::string GameSession::status() const {
   if (practice_) {
     return phase_ == Phase::Rolling
                ? "Practice shot..."
-               : "Practice: Shift+drag any ball; 1-9 add or remove one; U undo, Y retry; shoot as "
-                 "ever";
+               // The top band names U, Y and 1-9: the status line does not say them twice.
+               : "Practice: shoot as ever; Shift+drag moves any ball";
   }
   switch (phase_) {
     case Phase::Rolling:
@@ -753,11 +604,18 @@ std::string GameSession::status() const {
       const auto winner = match_->rack().winner();
       if (!winner) return "A draw in game " + std::to_string(rackNumber()) + ". R: rematch";
       if (const auto seat = matchWinner()) {
+        const std::string length = gameDef(match_->rack().game()).snookers
+                                       ? "best of " + std::to_string(best_of_)
+                                       : "race to " + std::to_string(framesToWinMatch(best_of_));
         return seatName(*seat) + " wins the match " + std::to_string(racks_won_[*seat]) + "-" +
-               std::to_string(racks_won_[1 - *seat]) + " (best of " + std::to_string(best_of_) +
-               "). R: new match";
+               std::to_string(racks_won_[1 - *seat]) + " (" + length + "). R: new match";
       }
       const std::string winner_name = seatName(seatOf(*winner));
+      if (best_of_ > 0 && !gameDef(match_->rack().game()).snookers) {
+        return winner_name + " wins rack " + std::to_string(rackNumber()) + " (racks " +
+               std::to_string(racks_won_[0]) + "-" + std::to_string(racks_won_[1]) + ", race to " +
+               std::to_string(framesToWinMatch(best_of_)) + "). R: next rack";
+      }
       if (best_of_ > 0) {
         // Frames are never drawn (a tie re-spots the black): those won are those played.
         const int frame = racks_won_[0] + racks_won_[1];

@@ -218,7 +218,8 @@ class GameSession {
   /// The balls where the frame should draw them: between the last two steps while rolling,
   /// the cue ball at its spot in hand otherwise.
   std::vector<BallState> ballsToDraw() const;
-  /// The physics' clock at the balls ballsToDraw gives (s; the replay's own while it plays).
+  /// The physics' clock at the balls ballsToDraw gives (s; the replay's own while it plays),
+  /// running on a moment after the balls stop so that a ball just dropped sinks out of sight.
   double drawTime() const;
   /// The shot being played, for the stick's stroke through the ball: where the cue ball
   /// stood, the heading and speed, and how long ago it was struck (s of the physics' clock).
@@ -281,6 +282,7 @@ class GameSession {
   FixedStepClock clock_;
   ShotSteps shot_;
   std::vector<int> pocketed_;
+  double after_rest_ = 0.0;  // s the picture's clock ran on since the balls stopped
   std::string message_;
   render::Tone tone_ = render::Tone::Info;
   TurnObserver observer_;

@@ -1,6 +1,7 @@
 #include "window/menu.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "net/wire.hpp"
 #include "nineball/games.hpp"
@@ -62,6 +63,15 @@ std::string capitalised(std::string s) {
   return s;
 }
 
+// "Best of 5 (first to 3)" in snooker; "Race to 5 racks" or "No limit" in pool.
+std::string matchLengthLabel(rules::Game game, int best_of) {
+  if (best_of == 0) return "No limit (the racks add up)";
+  const std::string first = std::to_string(framesToWinMatch(best_of));
+  if (gameDef(game).snookers)
+    return "Best of " + std::to_string(best_of) + " (first to " + first + ")";
+  return "Race to " + first + " racks";
+}
+
 std::string capLabel(int cap) {
   return cap == 0 ? "Unlimited (vsync)" : std::to_string(cap) + " fps";
 }
@@ -95,7 +105,7 @@ std::vector<MenuModel::Item> MenuModel::items() const {
                  Item::Points, Item::Frames, Item::Name1, Item::Name2, Item::OpenOnline,
                  Item::OpenSettings, Item::Quit}) {
     // Only a game played in frames has a match length to choose.
-    if (i == Item::Frames && bestOf() == 0) continue;
+    if (i == Item::Frames && gameDef(settings_.last.game).best_of_choices.empty()) continue;
     v.push_back(i);
   }
   return v;
@@ -178,10 +188,8 @@ MenuRow MenuModel::row(Item item) const {
            r.enabled, false};
       break;
     case Item::Frames:
-      r = {Kind::Choice, "Frames",
-           "Best of " + std::to_string(bestOf()) + " (first to " +
-               std::to_string(framesToWinMatch(bestOf())) + ")",
-           true, false};
+      r = {Kind::Choice, gameDef(settings_.last.game).snookers ? "Frames" : "Match",
+           matchLengthLabel(settings_.last.game, bestOf()), true, false};
       break;
     case Item::Name1:
     case Item::Name2: {
@@ -307,8 +315,9 @@ void MenuModel::change(Item item, int step) {
       settings_.muted = !settings_.muted;
       break;
     case Item::Guide:
-      settings_.guide =
-          static_cast<GuideLength>((static_cast<int>(settings_.guide) + step + 3) % 3);
+      for (int i = 0; i < (step > 0 ? 1 : static_cast<int>(std::size(kGuideStyles)) - 1); ++i) {
+        settings_.guide = nextGuide(settings_.guide);
+      }
       break;
     case Item::Bank:
       settings_.bank_line = !settings_.bank_line;

@@ -24,7 +24,8 @@ struct MenuChoice {
   rules::RuleSet rules = rules::RuleSet::Wpa;
   /// The distance of a game played to points (GameDef::points_choices; 0: the game's default).
   int points = 0;
-  /// A match of frames: best of N (GameDef::best_of_choices; 0: the game's first choice).
+  /// A match of frames or racks: best of N, a race to ceil(N/2) (GameDef::best_of_choices; 0:
+  /// none, the racks add up).
   int best_of = 0;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)

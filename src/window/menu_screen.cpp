@@ -2,7 +2,10 @@
 
 #include <SFML/System/Clock.hpp>
 #include <SFML/System/Sleep.hpp>
+#include <algorithm>
+#include <iterator>
 #include <optional>
+#include <utility>
 
 namespace nineball::window {
 namespace {
@@ -37,6 +40,30 @@ std::optional<MenuKey> menuKey(sf::Keyboard::Key k) {
 }
 
 }  // namespace
+
+std::optional<std::vector<MenuKey>> parseMenuKeys(const std::string& text, std::string& why) {
+  static const std::pair<const char*, MenuKey> kNames[] = {
+      {"up", MenuKey::Up},       {"down", MenuKey::Down},          {"left", MenuKey::Left},
+      {"right", MenuKey::Right}, {"enter", MenuKey::Enter},        {"escape", MenuKey::Escape},
+      {"tab", MenuKey::Tab},     {"backspace", MenuKey::Backspace}};
+  std::vector<MenuKey> keys;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string word = text.substr(at, comma - at);
+    at = comma + 1;
+    if (word.empty()) continue;
+    const auto* found = std::find_if(std::begin(kNames), std::end(kNames),
+                                     [&](const auto& n) { return word == n.first; });
+    if (found == std::end(kNames)) {
+      why = "\"" + word.substr(0, 40) + "\" is not a menu key (up, down, left, right, enter, " +
+            "escape, tab, backspace)";
+      return std::nullopt;
+    }
+    keys.push_back(found->second);
+  }
+  return keys;
+}
 
 render::MenuPicture menuPicture(const MenuModel& model) {
   render::MenuPicture p;

@@ -57,7 +57,8 @@ void checkTurn(const TurnInput& t, std::size_t i) {
                std::abs(t.cue->y) < 10.0,
            at + ".cue: not a place on the table");
   }
-  if (t.call) expect(t.call->ball >= 1 && t.call->ball <= 15, at + ".call.ball: no such ball");
+  // Snooker's colours are 16-21: the highest ball any game calls or nominates.
+  if (t.call) expect(t.call->ball >= 1 && t.call->ball <= 21, at + ".call.ball: no such ball");
 }
 
 // Throws nlohmann's errors for a wrong type; rackFromJson turns them into `why`.
@@ -67,6 +68,8 @@ TurnInput turnFromJson(const nlohmann::json& t) {
   if (kind == "decision") {
     turn.kind = TurnInput::Kind::Decision;
     turn.shoot = t.at("shoot").get<bool>();
+    // Snooker's third answer after a miss (absent: not chosen).
+    turn.replace = t.contains("replace") && t.at("replace").get<bool>();
     return turn;
   }
   if (kind != "shot" && kind != "push_out") throw std::invalid_argument("unknown kind " + kind);
@@ -123,6 +126,7 @@ nlohmann::ordered_json rackToJson(const SavedRack& rack) {
     o["kind"] = kindName(t.kind);
     if (t.kind == TurnInput::Kind::Decision) {
       o["shoot"] = t.shoot;
+      if (t.replace) o["replace"] = true;
     } else {
       o["heading_rad"] = t.shot.heading_rad;
       o["speed"] = t.shot.speed;

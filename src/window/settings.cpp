@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "common/log.hpp"
@@ -15,7 +16,6 @@
 namespace nineball::window {
 namespace {
 
-constexpr GuideLength kGuides[] = {GuideLength::Short, GuideLength::Normal, GuideLength::Long};
 // A match length past any the menu offers is refused as a typo (the menu keeps to its own).
 constexpr int kMostFramesInAMatch = 99;
 
@@ -32,10 +32,22 @@ const char* guideLengthName(GuideLength g) {
       return "short";
     case GuideLength::Long:
       return "long";
+    case GuideLength::CueLine:
+      return "cue-ball line";
+    case GuideLength::Off:
+      return "off";
     case GuideLength::Normal:
       break;
   }
   return "normal";
+}
+
+GuideLength nextGuide(GuideLength g) {
+  const int n = static_cast<int>(std::size(kGuideStyles));
+  for (int i = 0; i < n; ++i) {
+    if (kGuideStyles[i] == g) return kGuideStyles[(i + 1) % n];
+  }
+  return GuideLength::Normal;
 }
 
 double guideLengthFactor(GuideLength g) {
@@ -44,6 +56,9 @@ double guideLengthFactor(GuideLength g) {
       return 0.4;
     case GuideLength::Long:
       return 2.5;
+    case GuideLength::CueLine:
+    case GuideLength::Off:
+      return 0.0;
     case GuideLength::Normal:
       break;
   }
@@ -116,13 +131,13 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
   }
   if (const auto* v = field(j, "aim_guide")) {
     bool ok = false;
-    for (GuideLength g : kGuides) {
+    for (GuideLength g : kGuideStyles) {
       if (v->is_string() && v->get<std::string>() == guideLengthName(g)) {
         s.guide = g;
         ok = true;
       }
     }
-    if (!ok) warn(warnings, "aim_guide: expected short, normal or long");
+    if (!ok) warn(warnings, "aim_guide: expected short, normal, long, cue-ball line or off");
   }
   if (const auto* v = field(j, "frame_cap")) {
     const auto& caps = Settings::kFrameCaps;

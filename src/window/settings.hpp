@@ -8,13 +8,21 @@
 
 namespace nineball::window {
 
-/// How far the aim guide's lines after the contact reach.
-enum class GuideLength { Short, Normal, Long };
+/// The aim guide as the player chooses it: the full guide with its lines after the contact
+/// short, normal or long; the cue ball's line alone (to the ghost ball, nothing after); off.
+enum class GuideLength { Short, Normal, Long, CueLine, Off };
+/// Every style, in the order the menu and G go round them.
+inline constexpr GuideLength kGuideStyles[] = {GuideLength::Short, GuideLength::Normal,
+                                               GuideLength::Long, GuideLength::CueLine,
+                                               GuideLength::Off};
 
-/// "short", "normal", "long".
+/// "short", "normal", "long", "cue-ball line", "off".
 const char* guideLengthName(GuideLength g);
-/// How much longer than normal the guide's lines are drawn (short 0.4, normal 1, long 2.5).
+/// How much longer than normal the guide's lines are drawn (short 0.4, normal 1, long 2.5;
+/// 0 for the cue-ball line and off).
 double guideLengthFactor(GuideLength g);
+/// The style after `g`, round again after off.
+GuideLength nextGuide(GuideLength g);
 
 /// The player's preferences, kept between runs. No SFML.
 struct Settings {

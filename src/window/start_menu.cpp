@@ -5,6 +5,7 @@
 #include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
+#include "window/rack_seed.hpp"
 #include "window/state_file.hpp"
 
 namespace nineball::window {
@@ -63,6 +64,9 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   const std::string rack_path = rackSavePath();
   const std::optional<SavedRack> saved = loadRack(rack_path);
   MenuModel model = startModel(ctx, settings, saved);
+  for (const MenuKey k : ctx.typed) model.key(k);
+  // Keys typed that settle nothing end the menu: nobody is there to finish the choice.
+  if (!ctx.typed.empty() && model.outcome() == MenuModel::Outcome::None) return false;
   const MenuModel::Outcome outcome = runMenuScreen(
       ctx.window, model, ctx.menu_painter, [&](sf::RenderTarget& t) { drawBehind(ctx, t, model); },
       [&](double w, double h) { ctx.painter.resize(w, h); });
@@ -101,6 +105,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
     }
   }
   const MenuChoice choice = model.choice();
+  if (ctx.fresh_seeds) setup.seed = freshSeed();
   setup.setGame(choice.game);
   setup.rules = choice.rules;
   if (choice.points > 0) setup.points = choice.points;

@@ -2,6 +2,7 @@
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <functional>
+#include <vector>
 
 #include "app/game_options.hpp"
 #include "render/menu_painter.hpp"
@@ -21,6 +22,11 @@ struct StartMenuContext {
   render::MenuPainter& menu_painter;
   std::function<render::Frame()> frame;  ///< the table behind the menu
   bool muted_by_option = false;          ///< --mute: no sound this run, whatever the settings
+  /// A game started from the menu racks from a new seed (drawsFreshSeeds); else from the
+  /// session's own (--seed, or a test's picture that must come out the same).
+  bool fresh_seeds = false;
+  /// Keys given to the menu before it shows (the tests' way to pick a game from it).
+  std::vector<MenuKey> typed;
 };
 
 /// The menu's choices as the command line asks: an option given there (--game, --rules,

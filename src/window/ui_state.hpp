@@ -20,6 +20,13 @@ struct UiState {
   double speed_before_drag = 0.0;
   std::optional<render::CueGhost> ghost;  ///< the ball under the pointer while moved
   Vec2 pointer;  ///< where the pointer last was on the table (m): practice adds balls there
+  /// The aim line locked (X): the pointer no longer moves it; Shift with the pointer, the
+  /// arrows and the wheel still fine-tune it. A new turn unlocks it.
+  bool aim_locked = false;
+  /// The table seen this many times closer (1 to 4; Z, Shift+Z, Ctrl+wheel), round the cue
+  /// ball as it rolls, or round `zoom_at` (m) when the wheel zoomed at the pointer.
+  double zoom = 1.0;
+  std::optional<Vec2> zoom_at;
   bool leave_to_menu = false;  ///< Esc leads to the start menu (else it quits the program)
   bool rack_kept = false;      ///< leaving saves the rack in play for "Resume rack"
 };

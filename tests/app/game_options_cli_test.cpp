@@ -46,5 +46,12 @@ TEST(GameOptionsCli, BadPortsAddressesAndHostWithJoinAreRefused) {
   EXPECT_THROW(parse({"--name", ""}), CLI::ValidationError);
 }
 
+TEST(GameOptionsCli, SeedGivenIsKnownAndWatchNeedsAScript) {
+  EXPECT_FALSE(parse({}).seed_given);
+  EXPECT_TRUE(parse({"--seed", "1"}).seed_given);
+  EXPECT_TRUE(parse({"--script", "rack.json", "--watch"}).watch);
+  EXPECT_THROW(parse({"--watch"}), CLI::RequiresError);
+}
+
 }  // namespace
 }  // namespace nineball::app

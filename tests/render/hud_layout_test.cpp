@@ -77,3 +77,32 @@ TEST(HudLayout, WhenEveryPlaceHidesABallTheStripHidesTheFewest) {
 
 }  // namespace
 }  // namespace nineball::render
+
+namespace nineball::render {
+namespace {
+
+TEST(HudLayout, TheSpinLabelsLeaveRoomForTheCuesMarkerOnTheRing) {
+  // The marker at a level cue points left from the icon, past the ring: the labels end a gap
+  // before its tip at every size.
+  for (const auto& [w, h] : {std::pair{640.0, 480.0}, {1280.0, 800.0}, {3840.0, 2160.0}}) {
+    const HudLayout l = HudLayout::of(ViewTransform(TableDef{}, w, h));
+    const double marker_tip =
+        l.spin_centre.x - l.tilt_outer - HudLayout::kTiltMarkReach * l.spin_radius;
+    EXPECT_LT(l.spin_labels_right, marker_tip - 2.0) << w << "x" << h;
+    EXPECT_GT(l.message.width, 0.0) << w << "x" << h;
+  }
+}
+
+TEST(HudLayout, ThreeButtonsSitSideBySideInsideTheStrip) {
+  for (const auto& [w, h] : {std::pair{640.0, 480.0}, {1280.0, 800.0}}) {
+    const HudLayout l =
+        HudLayout::of(ViewTransform(TableDef{}, w, h), Overlay::PushOutChoice, {}, true);
+    EXPECT_GE(l.button_left.left, l.panel.left);
+    EXPECT_LT(l.button_left.left + l.button_left.width, l.button_middle.left);
+    EXPECT_LT(l.button_middle.left + l.button_middle.width, l.button_right.left);
+    EXPECT_LE(l.button_right.left + l.button_right.width, l.panel.left + l.panel.width);
+  }
+}
+
+}  // namespace
+}  // namespace nineball::render

@@ -62,3 +62,37 @@ TEST(FrameBuilder, DialogsKeepClearOfEveryBallOnTheTable) {
 
 }  // namespace
 }  // namespace nineball::window
+
+namespace nineball::window {
+namespace {
+
+TEST(FrameBuilder, TheRacksEndSaysHowItEndedOnceAndTheHelpNamesTheLevels) {
+  // The 9 on the lip of the top-right pocket, the cue ball drawn back from it.
+  MatchSetup setup;
+  setup.balls = std::vector<BallState>{BallState::at(kCueBall, {0.95, 0.32}),
+                                       BallState::at(9, {1.18, 0.55})};
+  GameSession s(setup);
+  s.setHeading(degToRad(45.0));
+  s.setSpeed(0.9);
+  s.setTip({0.0, -0.4});
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(roll(s));
+  ASSERT_EQ(s.phase(), Phase::GameOver);
+  UiState ui;
+  const render::Frame over = buildFrame(s, ui, ComputerPlayer(1));
+  ASSERT_EQ(over.hud.overlay, render::Overlay::GameOver);
+  EXPECT_EQ(over.hud.message, s.message());
+  for (const std::string& line : over.hud.overlay_lines) EXPECT_NE(line, s.message());
+  // The help names the computer's seven levels, not the old three.
+  ui.help = true;
+  const render::Frame help = buildFrame(s, ui, ComputerPlayer(1));
+  bool levels = false;
+  for (const std::string& line : help.hud.overlay_lines) {
+    EXPECT_EQ(line.find("easy"), std::string::npos) << line;
+    levels |= line.find("beginner to master") != std::string::npos;
+  }
+  EXPECT_TRUE(levels);
+}
+
+}  // namespace
+}  // namespace nineball::window

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "window/fixed_step_clock.hpp"
+#include "window/frame_builder.hpp"
 #include "window/game_rolling.hpp"
 #include "window/turn_message.hpp"
 
@@ -268,4 +269,31 @@ TEST(GameSession, SnookerFramesCountTowardsAMatchOfBestOfN) {
   GameSession open = snookerFrameWonOnTheBlack(0, 4, 0);
   EXPECT_EQ(open.racksWon(0), 5);
   EXPECT_FALSE(open.matchWinner());
+}
+
+TEST(GameSession, APocketedBallSinksOutOfSightAfterTheBallsStop) {
+  // The picture's clock runs on after the shot, so a ball that dropped as the balls stopped
+  // finishes its sinking (BallPainter::kSinkTime) instead of waiting on the lip for the next
+  // shot; the next shot starts the clock from the physics' again.
+  GameSession s{MatchSetup{}};
+  ASSERT_TRUE(s.shoot());
+  ASSERT_TRUE(nineball::window::roll(s));
+  const double stopped = s.drawTime();
+  for (int frame = 0; frame < 30; ++frame) s.advance(1.0 / 60.0);
+  EXPECT_NEAR(s.drawTime() - stopped, 0.5, 1e-9);
+  for (int frame = 0; frame < 120; ++frame) s.advance(1.0 / 60.0);
+  EXPECT_NEAR(s.drawTime() - stopped, 1.0, 1e-9);  // then it stops: nothing moves at rest
+  ASSERT_TRUE(s.shoot());
+  s.advance(1.0 / 60.0);
+  EXPECT_LT(s.drawTime(), stopped + 0.1);
+}
+
+TEST(GameSession, PracticeSaysItsKeysOnceNotInTheStatusLineToo) {
+  GameSession s{MatchSetup{}, true};
+  nineball::window::UiState ui;
+  nineball::window::ComputerPlayer computer(1);
+  const nineball::render::Frame f = nineball::window::buildFrame(s, ui, computer);
+  EXPECT_NE(f.hud.mode.find("U undo"), std::string::npos);
+  EXPECT_EQ(f.hud.status.find("U undo"), std::string::npos) << f.hud.status;
+  EXPECT_EQ(f.hud.status.find("1-9"), std::string::npos) << f.hud.status;
 }

@@ -191,3 +191,33 @@ TEST_F(RackFiles, ANameIsCutOnACharacterBoundary) {
 
 }  // namespace
 }  // namespace nineball::window
+
+namespace nineball::window {
+namespace {
+
+TEST(RackSaveTurns, SnookersNominationsAndReplaceAfterAMissAreKept) {
+  // A snooker rack: a colour nominated (ball 19, the blue) and the balls replaced after a miss;
+  // both read back as played, so the rack resumes where it was.
+  SavedRack rack;
+  rack.game = rules::Game::Snooker;
+  rack.rules = rules::RuleSet::Wpbsa;
+  TurnInput nominated;
+  nominated.shot = Shot::withSpeed(10.0, 2.0);
+  nominated.call = rules::Call{19, PocketId::TopRight};
+  TurnInput replace;
+  replace.kind = TurnInput::Kind::Decision;
+  replace.shoot = false;
+  replace.replace = true;
+  rack.turns = {nominated, replace};
+  std::string why;
+  const auto back = rackFromJson(nlohmann::json::parse(rackToJson(rack).dump()), why);
+  ASSERT_TRUE(back) << why;
+  ASSERT_EQ(back->turns.size(), 2u);
+  ASSERT_TRUE(back->turns[0].call);
+  EXPECT_EQ(back->turns[0].call->ball, 19);
+  EXPECT_TRUE(back->turns[1].replace);
+  EXPECT_FALSE(back->turns[1].shoot);
+}
+
+}  // namespace
+}  // namespace nineball::window

@@ -53,6 +53,9 @@ GameDef eightBall() {
             "Calling: click a pocket, or K for the obvious shot; the call shows on the table"};
   g.groups = true;
   g.called_shots = "shot at the 8";
+  g.takes_calls = true;
+  // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
+  g.best_of_choices = {0, 5, 7, 9, 13, 17};
   g.decision = {"play-on", "rerack", "eight-ball's choice after an illegal break"};
   g.made = "potted a ball and kept the table";
   return g;

@@ -52,6 +52,9 @@ GameDef nineBall() {
   g.balls = {1, 2, 3, 4, 5, 6, 7, 8, 9};
   g.rule_sets = {rules::RuleSet::Wpa, rules::RuleSet::Paper};
   g.rack = rackNineBall;
+  g.push_outs = true;
+  // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
+  g.best_of_choices = {0, 5, 7, 9, 13, 17};
   g.help = {"Rules: hit the lowest ball first; the 9 wins the rack"};
   return g;
 }

@@ -53,6 +53,7 @@ GameDef snooker() {
             "Snookered after a foul: a free ball. The cue ball is in hand in the D."};
   g.made = "potted the ball on";
   g.physics = "snooker";
+  g.takes_calls = true;
   g.decision = {"play", "put-back", "the choice after a foul (\"replace\" too after a miss)",
                 "replace"};
   g.break_area = CueArea::TheD;

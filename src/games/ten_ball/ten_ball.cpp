@@ -41,6 +41,11 @@ GameDef tenBall() {
   g.call_any_ball = true;
   g.pot_not_as_called_passes = true;
   g.called_shots = "shot after the break";
+  g.push_outs = true;
+  // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
+  g.best_of_choices = {0, 5, 7, 9, 13, 17};
+  g.takes_calls = true;
+  g.decision.about = "the choice after a push-out or a pot not as called";
   g.break_from_every_spot = true;
   g.made = "potted the ball on as called";
   return g;

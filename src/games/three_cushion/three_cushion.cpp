@@ -46,6 +46,8 @@ GameDef threeCushion() {
   g.made = "scored a point";
   g.physics = "carom";
   g.cue_in_hand = false;
+  g.decisions = false;
+  g.decision.about = "three-cushion has no choice between turns: every turn is a shot";
   g.default_points = 25;
   g.points_choices = {15, 25, 40};
   return g;
