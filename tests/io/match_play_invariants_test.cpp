@@ -112,7 +112,9 @@ TEST(MatchInvariants, AThreeCushionGameBetweenTwoComputersCountsPointsAndInnings
                        << "turn " << i;
                    EXPECT_EQ(pointsOf(after, them), pointsOf(before, them)) << "turn " << i;
                    // A point takes three cushions at least before the second ball.
-                   if (point) EXPECT_GE(t["cushions"].get<int>(), 3) << "turn " << i;
+                   if (point) {
+                     EXPECT_GE(t["cushions"].get<int>(), 3) << "turn " << i;
+                   }
                    // An inning starts when a player comes to the table.
                    const int new_inning = shooter != last_shooter ? 1 : 0;
                    EXPECT_EQ(after[shooter]["innings"].get<int>(),
