@@ -10,6 +10,7 @@
 
 #include "app/cli_runner.hpp"
 #include "net/connection.hpp"
+#include "net/handshake.hpp"
 #include "net/free_port.hpp"
 #include "net/protocol.hpp"
 
@@ -36,10 +37,10 @@ Pair playOnline(const std::string& host_script, const std::string& join_script,
   TempFile js(join_script);
   Pair r;
   std::thread host([&] {
-    r.host = runNineball("online --host " + std::to_string(port) + " --wait 120 " + host_flags +
+    r.host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 120 " + host_flags +
                          " " + shellQuoted(hs.path()));
   });
-  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + join_flags + " " +
+  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " + join_flags + " " +
                        shellQuoted(js.path()));
   host.join();
   return r;
@@ -158,10 +159,13 @@ TEST(OnlineCli, ANewProcessRejoinsARackInTheMiddle) {
   TempFile js(kJoinClub);
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 60 --rejoin 60 " +
+    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 60 --rejoin 60 " +
                        shellQuoted(hs.path()));
   });
-  const std::string join = "online --join 127.0.0.1:" + std::to_string(port) + " ";
+  // The seat token the first process was welcomed with is kept in a file the second reads.
+  TempFile token("");
+  const std::string join = "online --join 127.0.0.1:" + std::to_string(port) +
+                           " --code TEST-CODE --seat-token " + shellQuoted(token.path()) + " ";
   const CliOutcome dead = runNineball(join + "--test-quit-before 3 " + shellQuoted(js.path()));
   const CliOutcome second = runNineball(join + shellQuoted(js.path()));
   t.join();
@@ -182,12 +186,13 @@ TEST(OnlineCli, APlayerWhoQuitsTellsTheOtherSide) {
   TempFile js(R"({"players": {"B": "ai:master"}})");
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 60 --rejoin 60 " +
+    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 60 --rejoin 60 " +
                        shellQuoted(hs.path()));
   });
   const auto started = std::chrono::steady_clock::now();
   const CliOutcome quitter =
-      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + shellQuoted(js.path()),
+      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " +
+                      shellQuoted(js.path()),
                   "/dev/null", "timeout --preserve-status -s INT 1 ");
   t.join();
   EXPECT_EQ(quitter.status, 5) << quitter.err;
@@ -215,7 +220,7 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
   TempFile hs(kHostPro);
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 3 " +
+    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 3 " +
                        shellQuoted(hs.path()));
   });
   std::unique_ptr<sf::TcpSocket> socket;
@@ -230,8 +235,9 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
         .count();
   };
   nineball::net::Connection link(std::move(socket), now());
-  link.send(nineball::net::toJson(
-      nineball::net::Hello{nineball::net::kProtocolVersion, "nineball 0.0.1 (elsewhere)", "Eve"}));
+  nineball::net::Hello eve = nineball::net::helloFrom("Eve", "TEST-CODE");
+  eve.build = "nineball 0.0.1 (elsewhere)";
+  link.send(nineball::net::toJson(eve));
   std::string reason;
   for (int i = 0; i < 2000 && reason.empty() && !link.closed(); ++i) {
     for (const json& m : link.pump(now())) {

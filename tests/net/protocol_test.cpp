@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "net/connection.hpp"
+#include "net/handshake.hpp"
 #include "nineball/match.hpp"
 
 namespace nineball::net {
@@ -67,12 +68,14 @@ std::vector<Message> oneOfEach() {
   w.turns = {wireTurn(aShot(1.0, 6.0), HumanSeat{}, setup.game),
              wireTurn(placed, ComputerSeat{ai::Level::Beginner}, setup.game)};
   w.hashes = {0x0123456789abcdefull, 0xfedcba9876543210ull};
+  w.token = "0123456789abcdef0123456789abcdef";
   TurnInput decision;
   decision.kind = TurnInput::Kind::Decision;
   decision.shoot = false;
   Aim placing{1.25, 3.0, {0.5, -0.5}, 0.2, Vec2{-0.5, 0.25}};
   Aim plain{-2.0, 0.0, {0.0, 0.0}, 0.0, std::nullopt};
   return {Hello{kProtocolVersion, buildId(), "Ann"},
+          helloFrom("Bo", "7KQ4-ZP2M", std::string(32, 'e'), ComputerSeat{ai::Level::Master}),
           w,
           Refuse{"another build"},
           TurnMessage{4, wireTurn(aShot(-2.5, 1.5), HumanSeat{}, setup.game)},

@@ -20,6 +20,7 @@ namespace {
 using nineball::testing::freePort;
 
 constexpr double kFrame = 1.0 / 60.0;
+constexpr char kCode[] = "7KQ4-ZP2M";
 
 double clockNow() {
   static sf::Clock clock;
@@ -91,6 +92,7 @@ class OnlineHost : public ::testing::Test {
     config.side = net::Side::Host;
     config.address.port = port_;
     config.name = "Ann";
+    config.code = kCode;
     config.match = onlineMatchOf(nineBall());
     config.scripted = true;
     config.script = {shot(0.4, 9.0), shot(10.0, 3.0)};
@@ -105,7 +107,7 @@ class OnlineHost : public ::testing::Test {
 
   // The hello, and the welcome back.
   net::Welcome join() {
-    peer_.send(net::helloFrom("Bob"));
+    peer_.send(net::helloFrom("Bob", kCode));
     std::optional<net::Welcome> welcome;
     EXPECT_TRUE(runUntil(*play_, session_, peer_,
                          [&] { return (welcome = peer_.take<net::Welcome>()).has_value(); }));
@@ -217,7 +219,7 @@ TEST_F(OnlineHost, AHashOfATurnNotPlayedIsRefused) {
 }
 
 TEST_F(OnlineHost, AnotherBuildIsRefusedByNameAndTheHostWaitsOn) {
-  net::Hello hello = net::helloFrom("Eve");
+  net::Hello hello = net::helloFrom("Eve", kCode);
   hello.build = "nineball 0.0.1 (elsewhere)";
   peer_.send(hello);
   std::optional<net::Refuse> refused;
@@ -276,6 +278,7 @@ TEST(OnlineJoiner, AHostWhoseMatchIsNonsenseIsRefused) {
   w.protocol = net::kProtocolVersion;
   w.build = net::buildId();
   w.name = "Mallory";
+  w.token = net::makeSeatToken();
   w.match = {{"game", "nine-ball"}, {"seed", 3}, {"table", {{"length", -4}}}};
   host.send(w);
   ASSERT_TRUE(
