@@ -141,10 +141,9 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                         "--code",
                         [&o](const std::string& text) {
                           if (text.size() > net::kMostCodeChars) {
-                            throw CLI::ValidationError("--code", "longer than " +
-                                                                     std::to_string(
-                                                                         net::kMostCodeChars) +
-                                                                     " characters");
+                            throw CLI::ValidationError(
+                                "--code", "longer than " + std::to_string(net::kMostCodeChars) +
+                                              " characters");
                           }
                           o.code = text;
                         },

@@ -79,7 +79,10 @@ bool takeSeatToken(const std::string& given, net::OnlineRackOptions& o, std::str
     }
     o.seat_token = token;
   }
-  o.on_seat_token = [given](const std::string& t) { std::ofstream(given) << t << '\n'; };
+  o.on_seat_token = [given](const std::string& t) {
+    std::ofstream out(given);
+    out << t << '\n';
+  };
   return true;
 }
 

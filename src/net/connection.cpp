@@ -86,8 +86,9 @@ std::string Connection::remote() const {
 void Connection::close(const std::string& reason) {
   if (closed_) return;
   closed_ = true;
-  reason_ = reason;
-  logger("net")->info("link to {} closed: {}", remote_, reason);
+  // Often the peer's own words: logged and shown, so cleaned as all peer text is.
+  reason_ = cleanText(reason, std::string::npos);
+  logger("net")->info("link to {} closed: {}", remote_, reason_);
   socket_->disconnect();
 }
 
@@ -95,9 +96,9 @@ void Connection::refuseAndClose(const std::string& what_it_did) {
   if (closed_) return;
   // The peer hears why before the link closes (as every refusal), bounded: the stream it
   // sent is broken, but it may still read.
-  unsent_ += framed(nlohmann::json{{"type", "refuse"},
-                                   {"reason", cleanText("disconnected: you " + what_it_did)}}
-                        .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  unsent_ += framed(
+      nlohmann::json{{"type", "refuse"}, {"reason", cleanText("disconnected: you " + what_it_did)}}
+          .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   flush(kRefusalFlushSeconds);
   close("the other side " + what_it_did);
 }

@@ -113,7 +113,7 @@ std::optional<Admitted> HostGate::poll(Listener& listener, double now) {
       if (token_.empty()) token_ = makeSeatToken();
       Admitted a{std::move(it->link), *hello, rejoin};
       newcomers_.erase(it);
-      return a;
+      return std::optional<Admitted>(std::move(a));
     }
     if (refusal) {
       logger("net")->warn("refused {}: {}", c.remote(), cleanText(*refusal));

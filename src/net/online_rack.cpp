@@ -57,6 +57,8 @@ class OnlineRack {
     } catch (const Stop&) {
     }
     if (match_) describeRack();
+    // What the peer said reaches the terminal: without control characters.
+    result_.why = cleanText(result_.why, std::string::npos);
     if (link_ && !link_->closed()) {
       link_->flush(1.0);
       // The side that closes first holds its port for a minute (TCP's TIME_WAIT), and SFML's
@@ -100,7 +102,7 @@ class OnlineRack {
 
   // The other side broke the protocol: tell it why and drop it; it may rejoin.
   [[noreturn]] void refusePeer(const std::string& why) {
-    logger("net")->warn("the other side sent {}: disconnected it", why);
+    logger("net")->warn("the other side sent {}: disconnected it", cleanText(why, 400));
     send(Refuse{"disconnected: you sent " + why});
     link_->flush(0.5);
     link_->close("it sent " + why);
@@ -194,8 +196,8 @@ class OnlineRack {
       result_.why = why;
       return false;
     }
-    gate_ = std::make_unique<HostGate>(o_.code.empty() ? makeJoinCode() : o_.code, o_.limits,
-                                       o_.gate);
+    gate_ =
+        std::make_unique<HostGate>(o_.code.empty() ? makeJoinCode() : o_.code, o_.limits, o_.gate);
     logger("net")->info("hosting on port {}: join with --join {}:{} --code {}", o_.address.port,
                         localAddress(), o_.address.port, gate_->code());
     return true;
@@ -286,7 +288,8 @@ class OnlineRack {
       }
       std::this_thread::sleep_for(std::chrono::duration<double>(kRetrySeconds));
     }
-    if (result_.why.empty()) {
+    // Nobody answered, or only "busy" or silence did (a bad welcome has said LinkLost).
+    if (result_.outcome == Outcome::InStep) {
       result_.outcome = Outcome::NoPeer;
       result_.why = why;
     }
@@ -329,9 +332,7 @@ class OnlineRack {
     return true;
   }
 
-  Seat localPlayer() const {
-    return o_.script.players[o_.side == Side::Host ? 0 : 1];
-  }
+  Seat localPlayer() const { return o_.script.players[o_.side == Side::Host ? 0 : 1]; }
 
   // The joiner: the rack from its start, the welcome's turns played again. Between turns the
   // link is kept alive and Ctrl-C heard; a turn after one that left balls moving (the rack
@@ -561,9 +562,9 @@ class OnlineRack {
   OnlineRackResult result_;
   std::unique_ptr<Listener> listener_;
   std::unique_ptr<Connection> link_;
-  std::unique_ptr<HostGate> gate_;         // the host: who may sit down
-  std::optional<Admitted> rejoining_;      // the other player back on a new connection
-  std::string token_;                      // the joiner: its seat token
+  std::unique_ptr<HostGate> gate_;     // the host: who may sit down
+  std::optional<Admitted> rejoining_;  // the other player back on a new connection
+  std::string token_;                  // the joiner: its seat token
   int rejoins_ = 0;
   double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)
   std::deque<nlohmann::json> inbox_;

@@ -100,8 +100,8 @@ Message parse(const json& j) {
     return h;
   }
   if (type == "welcome") {
-    io::allowOnly(j, "",
-                  {"type", "protocol", "build", "name", "match", "race", "turns", "hashes", "token"});
+    io::allowOnly(
+        j, "", {"type", "protocol", "build", "name", "match", "race", "turns", "hashes", "token"});
     Welcome w;
     w.protocol = io::integer(io::required(j, "", "protocol"), "protocol", 0, 1 << 20);
     w.build = textField(j, "build");
@@ -176,8 +176,12 @@ Message parse(const json& j) {
 
 struct ToJson {
   json operator()(const Hello& m) const {
-    return {{"type", "hello"},        {"protocol", m.protocol}, {"build", m.build},
-            {"name", m.name},         {"code", m.code},         {"token", m.token},
+    return {{"type", "hello"},
+            {"protocol", m.protocol},
+            {"build", m.build},
+            {"name", m.name},
+            {"code", m.code},
+            {"token", m.token},
             {"player", seatName(m.player)}};
   }
   json operator()(const Welcome& m) const {

@@ -89,7 +89,8 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   if (screen_ == Screen::Settings) {
     return {Item::Volume, Item::Sound, Item::Guide, Item::Bank, Item::FrameCap, Item::Back};
   }
-  if (screen_ == Screen::Online) return {Item::Host, Item::Join, Item::JoinAddress, Item::JoinCode, Item::Back};
+  if (screen_ == Screen::Online)
+    return {Item::Host, Item::Join, Item::JoinAddress, Item::JoinCode, Item::Back};
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
   for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
@@ -439,8 +440,8 @@ void MenuModel::text(char32_t c) {
   }
   if (items()[selected_] == Item::JoinCode) {
     // The host's code: letters, digits and dashes, as it shows it.
-    const bool fits = (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ||
-                      c == '-';
+    const bool fits =
+        (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '-';
     if (fits && settings_.join_code.size() < net::kMostCodeChars) {
       settings_.join_code += static_cast<char>(c);
     }

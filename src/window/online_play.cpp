@@ -242,6 +242,7 @@ void OnlinePlay::linkUp(std::unique_ptr<net::Connection> link) {
 }
 
 void OnlinePlay::linkLost(std::string reason) {
+  reason = net::cleanText(reason, std::string::npos);
   logger("online")->warn("link lost: {}", reason);
   link_.reset();
   handshaking_ = false;
@@ -260,12 +261,12 @@ void OnlinePlay::linkLost(std::string reason) {
 void OnlinePlay::end(const std::string& reason, bool failure) {
   if (stage_ == Stage::Over) return;
   stage_ = Stage::Over;
-  why_ = reason;
+  why_ = net::cleanText(reason, std::string::npos);  // often the peer's words: shown clean
   failed_ = failure;
   if (failure) {
-    logger("online")->warn("{}", reason);
+    logger("online")->warn("{}", why_);
   } else {
-    logger("online")->info("{}", reason);
+    logger("online")->info("{}", why_);
   }
 }
 
@@ -325,10 +326,10 @@ void OnlinePlay::handle(GameSession& session, const net::Message& message) {
                  [&](const net::Bye& m) {
                    // "Finished" is believed where the peer's rack can end: the rack is over,
                    // or its script ran out at its move; anywhere else it is a quit.
-                   const bool can_end = session.match().rack().over() ||
-                                        (lockstep_ && lockstep_->settled() &&
-                                         session.match().rack().shooter() !=
-                                             net::seatOf(config_.side));
+                   const bool can_end =
+                       session.match().rack().over() ||
+                       (lockstep_ && lockstep_->settled() &&
+                        session.match().rack().shooter() != net::seatOf(config_.side));
                    if (m.finished && can_end) {
                      peer_finished_ = true;
                      end(peer_name_ + " has played out the rack.", false);

@@ -1,8 +1,7 @@
-#include "window/online_play.hpp"
-
 #include <algorithm>
 
 #include "render/cue_stick_shape.hpp"
+#include "window/online_play.hpp"
 
 // What the window shows of an online game: who controls the table, the banner, the status.
 namespace nineball::window {

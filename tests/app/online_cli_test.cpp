@@ -10,8 +10,8 @@
 
 #include "app/cli_runner.hpp"
 #include "net/connection.hpp"
-#include "net/handshake.hpp"
 #include "net/free_port.hpp"
+#include "net/handshake.hpp"
 #include "net/protocol.hpp"
 
 namespace {
@@ -37,11 +37,11 @@ Pair playOnline(const std::string& host_script, const std::string& join_script,
   TempFile js(join_script);
   Pair r;
   std::thread host([&] {
-    r.host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 120 " + host_flags +
-                         " " + shellQuoted(hs.path()));
+    r.host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 120 " +
+                         host_flags + " " + shellQuoted(hs.path()));
   });
-  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " + join_flags + " " +
-                       shellQuoted(js.path()));
+  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " +
+                       join_flags + " " + shellQuoted(js.path()));
   host.join();
   return r;
 }
@@ -159,8 +159,8 @@ TEST(OnlineCli, ANewProcessRejoinsARackInTheMiddle) {
   TempFile js(kJoinClub);
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 60 --rejoin 60 " +
-                       shellQuoted(hs.path()));
+    host = runNineball("online --host " + std::to_string(port) +
+                       " --code TEST-CODE --wait 60 --rejoin 60 " + shellQuoted(hs.path()));
   });
   // The seat token the first process was welcomed with is kept in a file the second reads.
   TempFile token("");
@@ -186,14 +186,13 @@ TEST(OnlineCli, APlayerWhoQuitsTellsTheOtherSide) {
   TempFile js(R"({"players": {"B": "ai:master"}})");
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 60 --rejoin 60 " +
-                       shellQuoted(hs.path()));
+    host = runNineball("online --host " + std::to_string(port) +
+                       " --code TEST-CODE --wait 60 --rejoin 60 " + shellQuoted(hs.path()));
   });
   const auto started = std::chrono::steady_clock::now();
-  const CliOutcome quitter =
-      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " +
-                      shellQuoted(js.path()),
-                  "/dev/null", "timeout --preserve-status -s INT 1 ");
+  const CliOutcome quitter = runNineball("online --join 127.0.0.1:" + std::to_string(port) +
+                                             " --code TEST-CODE " + shellQuoted(js.path()),
+                                         "/dev/null", "timeout --preserve-status -s INT 1 ");
   t.join();
   EXPECT_EQ(quitter.status, 5) << quitter.err;
   EXPECT_NE(quitter.err.find("quit before the rack was over"), std::string::npos) << quitter.err;
@@ -250,6 +249,36 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
   EXPECT_NE(reason.find(nineball::net::buildId()), std::string::npos) << reason;
   EXPECT_EQ(host.status, 2) << host.err;
   EXPECT_NE(host.err.find("refused the other side"), std::string::npos) << host.err;
+}
+
+// Issue 46: the host prints the line to join with, its code made at random; a joiner with a
+// wrong code is refused by the host and says so (exit 2), and the host waits on.
+TEST(OnlineCli, AJoinerWithAWrongCodeIsRefusedAndExitsTwo) {
+  const unsigned short port = freePort();
+  TempFile hs(kHostPro);
+  TempFile js(kJoinClub);
+  CliOutcome host;
+  std::thread t([&] {
+    host = runNineball("online --host " + std::to_string(port) + " --wait 4 " +
+                       shellQuoted(hs.path()));
+  });
+  const CliOutcome wrong = runNineball("online --join 127.0.0.1:" + std::to_string(port) +
+                                       " --code AAAA-BBBB --wait 20 " + shellQuoted(js.path()));
+  t.join();
+  EXPECT_EQ(wrong.status, 2) << wrong.err;
+  EXPECT_NE(wrong.err.find("the host refused: wrong join code"), std::string::npos) << wrong.err;
+  EXPECT_EQ(host.status, 5) << host.err;
+  const auto line = host.err.find("join with nineball --join ");
+  ASSERT_NE(line, std::string::npos) << host.err;
+  const auto code = host.err.find(" --code ", line);
+  ASSERT_NE(code, std::string::npos) << host.err;
+  const std::string made = host.err.substr(code + 8, 9);
+  EXPECT_EQ(made[4], '-') << made;
+  EXPECT_EQ(made.find_first_of("01OIL"), std::string::npos) << made;
+  const CliOutcome no_code =
+      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + shellQuoted(js.path()));
+  EXPECT_EQ(no_code.status, 2);
+  EXPECT_NE(no_code.err.find("--code"), std::string::npos) << no_code.err;
 }
 
 TEST(OnlineCli, BadCommandLinesExitTwoWithTheReason) {

@@ -48,10 +48,8 @@ class Attacks : public ::testing::Test {
 TEST_F(Attacks, AStrangerWithoutTheCodeIsRefusedAndTheHostWaitsOn) {
   RackThread host(hostOf(port_, kComputerHost));
   // Today's hello of the build, which anyone can learn from `nineball --version`.
-  const Answer none = refusalOf(json{{"type", "hello"},
-                                     {"protocol", kProtocolVersion},
-                                     {"build", buildId()},
-                                     {"name", "Eve"}});
+  const Answer none = refusalOf(json{
+      {"type", "hello"}, {"protocol", kProtocolVersion}, {"build", buildId()}, {"name", "Eve"}});
   EXPECT_EQ(none.kind, Answer::Kind::Refused);
   const Answer missing = refusalOf(helloWith(""));
   EXPECT_EQ(missing.kind, Answer::Kind::Refused);
@@ -304,8 +302,8 @@ class HostileHost : public Attacks {
     const io::MatchScript script = scriptOf(text);
     Match match(script.setup);
     Lockstep lockstep(Side::Host, script.setup);
-    Welcome w = welcomeFrom("Mallory", matchPart(json::parse(text)), Race{}, lockstep,
-                            makeSeatToken());
+    Welcome w =
+        welcomeFrom("Mallory", matchPart(json::parse(text)), Race{}, lockstep, makeSeatToken());
     link.send(w);
     TurnInput brk;
     brk.shot.speed = 2.0;
@@ -338,8 +336,7 @@ TEST_F(HostileHost, AHealThatCannotBeTheRackIsRefusedByName) {
     std::function<void(json&)> tamper;
     const char* reason;
   } cases[] = {
-      {"the cue ball in hand left on the table",
-       [](json& s) { s["cue_pocketed"] = true; },
+      {"the cue ball in hand left on the table", [](json& s) { s["cue_pocketed"] = true; },
        "in hand is on the table"},
       {"every ball at one point",
        [](json& s) {
@@ -348,7 +345,11 @@ TEST_F(HostileHost, AHealThatCannotBeTheRackIsRefusedByName) {
        "overlaps"},
       {"the cue ball off the table", [](json& s) { s["balls"][0]["x"] = 2.2; }, "off the table"},
       {"a winner before the end", [](json& s) { s["rack"]["winner"] = "A"; }, "winner"},
-      {"a million fouls", [](json& s) { s["rack"]["fouls"] = {1000000, 0}; }, "fouls"},
+      {"a million fouls",
+       [](json& s) {
+         s["rack"]["fouls"] = {1000000, 0};
+       },
+       "fouls"},
       {"a ball faster than any cue", [](json& s) { s["balls"][3]["vx"] = 90.0; }, "faster"},
   };
   for (const auto& c : cases) {
@@ -405,8 +406,8 @@ TEST_F(HostileHost, AWelcomeReplayHearsCtrlCWithinASecond) {
     if (!match.world().atRest()) break;
     lockstep.played(m.turn, match.snapshot());
   }
-  link.send(welcomeFrom("Mallory", matchPart(json::parse(text)), Race{}, lockstep,
-                        makeSeatToken()));
+  link.send(
+      welcomeFrom("Mallory", matchPart(json::parse(text)), Race{}, lockstep, makeSeatToken()));
   link.link->flush(1.0);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   const double asked = now();
@@ -414,8 +415,8 @@ TEST_F(HostileHost, AWelcomeReplayHearsCtrlCWithinASecond) {
   const auto r = joiner.result(4 * kAttackBound);
   ASSERT_TRUE(r.has_value());
   const double took = now() - asked;
-  std::cout << "[attacks] a welcome of " << lockstep.turns().size()
-            << " turns: the joiner left " << took << " s after Ctrl-C\n";
+  std::cout << "[attacks] a welcome of " << lockstep.turns().size() << " turns: the joiner left "
+            << took << " s after Ctrl-C\n";
   EXPECT_LT(took, 1.0);
 }
 

@@ -56,9 +56,9 @@ constexpr char kCode[] = "7KQ4-ZP2M";
 
 /// A hello the tests' hosts take: this build, the code, and the seat's token when it is taken.
 inline json goodHello(const std::string& name = "Fuzz", const std::string& token = "") {
-  return {{"type", "hello"},   {"protocol", net::kProtocolVersion},
+  return {{"type", "hello"},         {"protocol", net::kProtocolVersion},
           {"build", net::buildId()}, {"name", name},
-          {"code", kCode},     {"token", token},
+          {"code", kCode},           {"token", token},
           {"player", "human"}};
 }
 
@@ -248,7 +248,8 @@ inline Hostile badHello(Rng& rng) {
       out.reason_has = "code";
       break;
     case 10:
-      h["token"] = uniform(rng, 0, 1) ? std::string(32, 'Z') : std::string(uniform(rng, 1, 31), 'a');
+      h["token"] =
+          uniform(rng, 0, 1) ? std::string(32, 'Z') : std::string(uniform(rng, 1, 31), 'a');
       out.kind = "hello, a seat token out of shape";
       out.reason_has = "token";
       break;

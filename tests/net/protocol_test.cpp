@@ -384,5 +384,60 @@ TEST(Protocol, MessageTextNestedTooDeepIsRefusedBeforeParsing) {
   }
 }
 
+TEST(Protocol, PeerTextIsCleanedOfControlCharactersAndCutToTheLimit) {
+  EXPECT_EQ(cleanText("\x1b[31mred\r\nnineball online: forged\x07"),
+            "[31mrednineball online: forged");
+  EXPECT_EQ(cleanText("caf\xc3\xa9 \xc2\x9b2J"), "caf\xc3\xa9 2J");  // a C1 CSI goes too
+  const std::string long_text = std::string(199, 'x') + "\xc3\xa9";
+  EXPECT_EQ(cleanText(long_text), std::string(199, 'x')) << "cut at a whole character";
+  EXPECT_EQ(cleanText(std::string(500, 'y')).size(), kMostText);
+  // A refusal too long to read is cut when sent, never dropped.
+  const json refusal = toJson(Refuse{std::string(300, 'r')});
+  std::string why;
+  const auto back = readMessage(refusal, why);
+  ASSERT_TRUE(back.has_value()) << why;
+  EXPECT_EQ(std::get<Refuse>(*back).reason, std::string(kMostText, 'r'));
+  // A received reason is cleaned too.
+  const auto bye =
+      readMessage({{"type", "bye"}, {"reason", "a\x1b]0;t\x07b"}, {"finished", false}}, why);
+  ASSERT_TRUE(bye.has_value()) << why;
+  EXPECT_EQ(std::get<Bye>(*bye).reason, "a]0;tb");
+}
+
+TEST(Protocol, JoinCodesAndSeatTokensHaveTheirShape) {
+  for (int i = 0; i < 50; ++i) {
+    const std::string code = makeJoinCode();
+    ASSERT_EQ(code.size(), 9u) << code;
+    EXPECT_EQ(code[4], '-');
+    EXPECT_EQ(code.find_first_of("01OIL"), std::string::npos) << code;
+    EXPECT_TRUE(codeMatches(code, code));
+    EXPECT_TRUE(isSeatToken(makeSeatToken()));
+  }
+  EXPECT_NE(makeJoinCode(), makeJoinCode());
+  EXPECT_NE(makeSeatToken(), makeSeatToken());
+  EXPECT_TRUE(codeMatches("7kq4 zp2m", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("7KQ4-ZP2N", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("", ""));
+  EXPECT_FALSE(tokenMatches("", ""));
+  EXPECT_FALSE(isSeatToken(std::string(32, 'A')));
+  EXPECT_FALSE(isSeatToken(std::string(31, 'a')));
+  // A hello's token is empty or 32 hex digits; a welcome's is never empty.
+  json hello = toJson(helloFrom("Bo", "X"));
+  std::string why;
+  hello["token"] = "abc";
+  EXPECT_FALSE(readMessage(hello, why).has_value());
+  EXPECT_NE(why.find("token"), std::string::npos) << why;
+  hello["token"] = "";
+  hello["code"] = std::string(kMostCodeChars + 1, 'c');
+  EXPECT_FALSE(readMessage(hello, why).has_value());
+  EXPECT_NE(why.find("code"), std::string::npos) << why;
+  json welcome = toJson(oneOfEach()[2]);
+  ASSERT_EQ(welcome["type"], "welcome");
+  welcome["token"] = "";
+  EXPECT_FALSE(readMessage(welcome, why).has_value());
+  EXPECT_NE(why.find("token"), std::string::npos) << why;
+}
+
 }  // namespace
 }  // namespace nineball::net
