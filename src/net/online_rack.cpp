@@ -1,5 +1,6 @@
 #include "net/online_rack.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <future>
@@ -244,8 +245,8 @@ class OnlineRack {
 
   // The first message of the host's answer on the joiner's side: a welcome (with the host's
   // hash behind it) or a refusal.
-  std::optional<Message> hostsAnswer() {
-    const auto in = firstWords(*link_, kHandshakeSeconds);
+  std::optional<Message> hostsAnswer(double limit) {
+    const auto in = firstWords(*link_, limit);
     if (in.empty()) {
       result_.why = link_->closed() ? "the host closed the link (" + link_->reason() + ")"
                                     : "the host did not answer the hello";
@@ -282,7 +283,8 @@ class OnlineRack {
       if (socket) {
         link_ = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
         send(helloFrom(o_.name, o_.code, token_, localPlayer()));
-        if (acceptWelcome()) return true;
+        // The answer is awaited within the rejoin's own limit too.
+        if (acceptWelcome(std::clamp(deadline - seconds(), 0.5, kHandshakeSeconds))) return true;
         if (result_.outcome == Outcome::Refused) return false;
         why = result_.why.empty() ? why : result_.why;
       }
@@ -296,8 +298,8 @@ class OnlineRack {
     return false;
   }
 
-  bool acceptWelcome() {
-    auto m = hostsAnswer();
+  bool acceptWelcome(double limit) {
+    auto m = hostsAnswer(limit);
     if (!m) return false;
     if (const auto* r = std::get_if<Refuse>(&*m)) {
       result_.why = "the host refused: " + r->reason;

@@ -54,15 +54,15 @@ inline bool connectSoon(RawPeer& peer, unsigned short port) {
 }
 
 // A seated raw peer's welcome, and every message after it up to the first hash.
-struct Seat {
+struct Seating {
   json welcome;
   std::vector<json> after;
 };
 
 // Says `hello` and reads the welcome; with `until_hash`, on to the host's first hash.
-inline std::optional<Seat> sitDown(RawPeer& peer, const json& hello, bool until_hash) {
+inline std::optional<Seating> sitDown(RawPeer& peer, const json& hello, bool until_hash) {
   if (!peer.send(hello)) return std::nullopt;
-  Seat s;
+  Seating s;
   const double deadline = now() + 4 * kAttackBound;
   while (now() < deadline) {
     const json m = peer.next(deadline - now());

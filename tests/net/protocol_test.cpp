@@ -74,7 +74,7 @@ std::vector<Message> oneOfEach() {
   decision.shoot = false;
   Aim placing{1.25, 3.0, {0.5, -0.5}, 0.2, Vec2{-0.5, 0.25}};
   Aim plain{-2.0, 0.0, {0.0, 0.0}, 0.0, std::nullopt};
-  return {Hello{kProtocolVersion, buildId(), "Ann"},
+  return {helloFrom("Ann"),
           helloFrom("Bo", "7KQ4-ZP2M", std::string(32, 'e'), ComputerSeat{ai::Level::Master}),
           w,
           Refuse{"another build"},
@@ -144,7 +144,7 @@ TEST(Protocol, AMissingOrExtraKeyIsRefusedByName) {
 }
 
 TEST(Protocol, AValueOfTheWrongTypeIsRefusedByName) {
-  const json hello = toJson(Hello{1, "b", "n"});
+  const json hello = toJson(helloFrom("n"));
   for (const char* key : {"protocol", "build", "name"}) {
     for (const json& wrong : {json(nullptr), json::array(), json::object(), json(true)}) {
       json j = hello;
@@ -198,7 +198,7 @@ TEST(Protocol, AnAimOutOfRangeIsRefusedByField) {
 }
 
 TEST(Protocol, ARaceOutOfRangeInAWelcomeIsRefused) {
-  json w = toJson(std::get<Welcome>(oneOfEach()[1]));
+  json w = toJson(std::get<Welcome>(oneOfEach()[2]));
   for (const auto& [key, value] : std::vector<std::pair<const char*, json>>{
            {"best_of", 0}, {"best_of", 100}, {"rack", -1}, {"racks_won", {1}}}) {
     json j = w;
@@ -236,7 +236,10 @@ TEST(Protocol, NamesAreCleanedOfControlCharactersAndCutToWholeCharacters) {
   const auto hello = std::get<Hello>(readBack({{"type", "hello"},
                                                {"protocol", 1},
                                                {"build", "b"},
-                                               {"name", "\x1b[2JEve" + std::string(30, '!')}}));
+                                               {"name", "\x1b[2JEve" + std::string(30, '!')},
+                                               {"code", "C"},
+                                               {"token", ""},
+                                               {"player", "human"}}));
   EXPECT_EQ(hello.name, "[2JEve" + std::string(kMostNameChars - 6, '!'));
 }
 
@@ -387,7 +390,9 @@ TEST(Protocol, MessageTextNestedTooDeepIsRefusedBeforeParsing) {
 TEST(Protocol, PeerTextIsCleanedOfControlCharactersAndCutToTheLimit) {
   EXPECT_EQ(cleanText("\x1b[31mred\r\nnineball online: forged\x07"),
             "[31mrednineball online: forged");
-  EXPECT_EQ(cleanText("caf\xc3\xa9 \xc2\x9b2J"), "caf\xc3\xa9 2J");  // a C1 CSI goes too
+  EXPECT_EQ(cleanText("caf\xc3\xa9 \xc2\x9b"
+                      "2J"),
+            "caf\xc3\xa9 2J");  // a C1 CSI goes too
   const std::string long_text = std::string(199, 'x') + "\xc3\xa9";
   EXPECT_EQ(cleanText(long_text), std::string(199, 'x')) << "cut at a whole character";
   EXPECT_EQ(cleanText(std::string(500, 'y')).size(), kMostText);
@@ -398,8 +403,12 @@ TEST(Protocol, PeerTextIsCleanedOfControlCharactersAndCutToTheLimit) {
   ASSERT_TRUE(back.has_value()) << why;
   EXPECT_EQ(std::get<Refuse>(*back).reason, std::string(kMostText, 'r'));
   // A received reason is cleaned too.
-  const auto bye =
-      readMessage({{"type", "bye"}, {"reason", "a\x1b]0;t\x07b"}, {"finished", false}}, why);
+  const auto bye = readMessage({{"type", "bye"},
+                                {"reason",
+                                 "a\x1b]0;t\x07"
+                                 "b"},
+                                {"finished", false}},
+                               why);
   ASSERT_TRUE(bye.has_value()) << why;
   EXPECT_EQ(std::get<Bye>(*bye).reason, "a]0;tb");
 }
