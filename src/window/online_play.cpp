@@ -421,6 +421,11 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
     const auto input = net::parseWireTurn(welcome.turns[i], fresh.rackSetup(), why);
     if (!input)
       return protocolError("The host's turn " + std::to_string(i) + " is refused: " + why);
+    // A turn after the rack ended (won, or a shot that left balls moving) is no rack's.
+    if (fresh.match().rack().over() || !fresh.match().world().atRest()) {
+      return protocolError("The host's turn " + std::to_string(i) +
+                           " comes after the rack was over");
+    }
     if (fresh.match().rack().shooter() == own) ++own_turns;
     try {
       fresh.playTurn(*input);

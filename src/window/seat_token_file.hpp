@@ -2,9 +2,9 @@
 
 #include <string>
 
-// The joiner's seat token, kept beside the settings ($XDG_CONFIG_HOME/nineball/online_seat.json)
-// with the host it is for: a window restarted in the middle of an online rack (a crash, a quit)
-// gives it in its hello and takes its seat back.
+// The joiner's seat tokens, kept beside the settings ($XDG_CONFIG_HOME/nineball/online_seat.json)
+// by the host each is for (the last 16): a window restarted in the middle of an online rack
+// (after a crash) gives its token in its hello and takes its seat back.
 namespace nineball::window {
 
 /// The file; empty when the environment names no home for it.
