@@ -147,8 +147,8 @@ TEST(OnlineWindow, AJoinerKilledMidRackRejoinsAndTheRackEndsInStep) {
   write(host_script, kHostScript);
   write(join_script, kJoinScript);
   const std::string join_args = "--join 127.0.0.1:" + std::to_string(port) +
-                                " --name Bob --script '" + join_script + "' --screenshot '" +
-                                join_png + "'";
+                                " --code TEST-CODE --name Bob --script '" + join_script +
+                                "' --screenshot '" + join_png + "'";
 
   auto host = std::async(std::launch::async, [&] {
     return runGameUnderXvfb("--host " + std::to_string(port) +
