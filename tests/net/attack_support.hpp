@@ -119,6 +119,14 @@ class FakeHost {
     }
     return {};
   }
+  // The joiner's link as raw bytes, once it has connected (bounded); false when none came.
+  bool acceptInto(RawPeer& peer, double timeout_s) {
+    for (const double deadline = now() + timeout_s; now() < deadline;) {
+      if (peer.acceptFrom(listener_)) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+  }
 
  private:
   sf::TcpListener listener_;
