@@ -15,6 +15,9 @@ namespace {
 
 // How long a goodbye may take to go out before the window closes.
 constexpr double kByeFlush = 0.5;
+// Heals and rejoins a rack may take (as `nineball online`); one more ends the game.
+constexpr int kMostHeals = 3;
+constexpr int kMostRejoins = 20;
 // How long the joiner waits for the host's answer to its hello.
 constexpr double kWelcomeSeconds = 10.0;
 
@@ -371,6 +374,13 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   stage_ = Stage::Playing;
   send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_,
                         gate_ ? gate_->seatToken() : std::string()));
+  if (!lockstep_->turns().empty() && ++rejoins_ > kMostRejoins) {
+    send(net::Refuse{"rejoined more than " + std::to_string(kMostRejoins) + " times in this rack"});
+    link_->flush(kByeFlush);
+    return end(peer_name_ + " rejoined more than " + std::to_string(kMostRejoins) +
+                   " times in this rack: the game is over.",
+               true);
+  }
   if (!lockstep_->turns().empty()) {
     // A rejoin: both sides say where they stand before anything more is played.
     lockstep_->rejoined();
@@ -495,6 +505,15 @@ void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
     case net::HashVerdict::Mismatch:
       logger("online")->warn("the two tables differ after {}: the host's state is sent whole",
                              turn);
+      if (lockstep_->heals() >= kMostHeals) {
+        // Disagreeing, dropping and rejoining must not keep a host healing for ever.
+        send(net::Bye{"out of step after " + turn + ", healed " +
+                          std::to_string(lockstep_->heals()) + " times in this rack already",
+                      false});
+        return end("Out of step with " + peer_name_ + " after " + turn + ": healed " +
+                       std::to_string(lockstep_->heals()) + " times in this rack already.",
+                   true);
+      }
       if (config_.side == net::Side::Host) {
         const MatchSnapshot own = session.match().snapshot();
         send(lockstep_->healMessage(own));
@@ -575,6 +594,7 @@ void OnlinePlay::installRelay(GameSession& session) {
 void OnlinePlay::newRack(GameSession& session) {
   lockstep_.emplace(config_.side, session.rackSetup());
   if (peer_player_) lockstep_->setPeerPlayer(*peer_player_);
+  rejoins_ = 0;
   pending_.reset();
   outgoing_.reset();
   local_offer_ = peer_offer_ = false;

@@ -173,6 +173,7 @@ class OnlinePlay : public RemoteControl {
   double peer_power_ = 0.0;
   AimThrottle throttle_;
   std::size_t rack_turns_seen_ = 0;
+  int rejoins_ = 0;  // host: rejoins in this rack
 };
 
 /// "m:ss" of a number of seconds (the rejoin's countdown).

@@ -317,6 +317,16 @@ TEST_F(OnlineHost, AFinishedByeBeforeTheRackIsOverIsAQuit) {
   EXPECT_NE(play_->why().find("left the game"), std::string::npos) << play_->why();
 }
 
+// Two players of one name ("Player 1" on both sides, say) are told apart by their seats.
+TEST_F(OnlineHost, AFriendOfTheHostsNameIsToldApartBySeat) {
+  peer_.send(net::helloFrom("Ann", kCode));
+  ASSERT_TRUE(
+      runUntil(*play_, session_, peer_, [&] { return peer_.take<net::Welcome>().has_value(); }));
+  EXPECT_EQ(play_->peerName(), "Ann (B)");
+  EXPECT_EQ(session_.seatName(0), "Ann");
+  EXPECT_EQ(session_.seatName(1), "Ann (B)");
+}
+
 TEST(OnlineJoiner, AHostWhoseMatchIsNonsenseIsRefused) {
   const unsigned short port = freePort();
   ASSERT_NE(port, 0);
