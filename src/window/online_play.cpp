@@ -38,13 +38,6 @@ std::string addressText(const net::Address& a) {
 
 }  // namespace
 
-std::string clockText(double seconds) {
-  const int s = std::max(0, static_cast<int>(seconds + 0.999));
-  char text[16];
-  std::snprintf(text, sizeof text, "%d:%02d", s / 60, s % 60);
-  return text;
-}
-
 std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::string& why) {
   std::unique_ptr<OnlinePlay> play(new OnlinePlay(config));
   if (config.side == net::Side::Host) {
@@ -59,11 +52,6 @@ std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::s
     play->config_.seat_token = loadSeatToken(config.seat_file, addressText(config.address));
   }
   return play;
-}
-
-std::string OnlinePlay::joinLine() const {
-  return "nineball --join " + net::localAddress() + ":" + std::to_string(config_.address.port) +
-         " --code " + config_.code;
 }
 
 OnlinePlay::OnlinePlay(const OnlineConfig& config) : config_(config) {
@@ -198,7 +186,7 @@ void OnlinePlay::connectionStep(GameSession& session) {
 // code takes the free seat, the seated player with its token takes it back (its old link
 // dead, or its window restarted), anyone else is refused by name. A rejoin is welcomed
 // between shots only: the welcome then holds every turn played.
-void OnlinePlay::hostStep(GameSession& session) {
+void OnlinePlay::hostStep(const GameSession& session) {
   if (!gate_ || session.phase() == Phase::Rolling) return;
   auto admitted = gate_->poll(*listener_, now());
   if (!admitted) return;
@@ -207,7 +195,9 @@ void OnlinePlay::hostStep(GameSession& session) {
     link_.reset();
   }
   linkUp(std::move(admitted->link));
-  onHello(session, admitted->hello);
+  // Handled with the other messages, after the turn that just ended is recorded: the welcome
+  // then holds it (and the hash of it that follows is of a turn the joiner has).
+  inbox_.push_back(admitted->hello);
 }
 
 void OnlinePlay::joinerConnect() {

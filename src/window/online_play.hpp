@@ -118,7 +118,7 @@ class OnlinePlay : public RemoteControl {
   void connectionStep(GameSession& session);
   void joinerConnect();
   void linkUp(std::unique_ptr<net::Connection> link);
-  void hostStep(GameSession& session);
+  void hostStep(const GameSession& session);
   // By value: the reason is often the dropped link's own, which goes with it.
   void linkLost(std::string reason);
   void end(const std::string& reason, bool failure);

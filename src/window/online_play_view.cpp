@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdio>
 
 #include "render/cue_stick_shape.hpp"
 #include "window/online_play.hpp"
@@ -12,6 +13,18 @@ std::string addressText(const net::Address& a) {
 }
 
 }  // namespace
+
+std::string clockText(double seconds) {
+  const int s = std::max(0, static_cast<int>(seconds + 0.999));
+  char text[16];
+  std::snprintf(text, sizeof text, "%d:%02d", s / 60, s % 60);
+  return text;
+}
+
+std::string OnlinePlay::joinLine() const {
+  return "nineball --join " + net::localAddress() + ":" + std::to_string(config_.address.port) +
+         " --code " + config_.code;
+}
 
 // --- what the window shows ---
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <iostream>
 
 #include "common/log.hpp"
@@ -378,6 +379,42 @@ TEST_F(HostileHost, AHostsRefusalIsShownCleanAndEndsTheJoinWithItsReason) {
   EXPECT_EQ(r->outcome, Outcome::Refused) << r->why;
   EXPECT_NE(r->why.find("wrong join code"), std::string::npos) << r->why;
   EXPECT_EQ(r->why.find_first_of("\x1b\x07"), std::string::npos) << json(r->why).dump();
+}
+
+// A welcome whose turns go on after the rack was over (here the 9 is potted with the first
+// shot): refused before anything more is simulated.
+TEST_F(HostileHost, AWelcomeWithTurnsAfterTheRackEndedIsRefused) {
+  const std::string text = R"({"seed": 5, "turns": [],
+      "balls": [{"id": 0, "x": 0.6, "y": 0.3}, {"id": 9, "x": 1.0, "y": 0.5}]})";
+  const io::MatchScript script = scriptOf(text);
+  Match match(script.setup);
+  Lockstep lockstep(Side::Host, script.setup);
+  TurnInput pot;
+  pot.shot.heading_rad = std::atan2(0.2, 0.4);
+  pot.shot.speed = 2.0;
+  pot.shot.tip = {0.0, -0.3};  // a little draw: the cue ball stays out of the pocket
+  TurnMessage m;
+  match.play(lockstep.localTurn(pot, HumanSeat{}, m).input);
+  ASSERT_TRUE(match.rack().over()) << "the 9 was not potted: no rack ended to test";
+  lockstep.played(m.turn, match.snapshot());
+  Welcome w =
+      welcomeFrom("Mallory", matchPart(json::parse(text)), Race{}, lockstep, makeSeatToken());
+  w.turns.push_back(w.turns.back());
+  w.hashes.push_back(w.hashes.back());
+
+  FakeHost fake(port_);
+  RackThread joiner(joinerOptions());
+  FakeLink link = fake.accept(kAttackBound);
+  ASSERT_TRUE(link.link);
+  ASSERT_EQ(link.next(kAttackBound).value("type", ""), "hello");
+  link.send(w);
+  const json answer = link.next(kAttackBound);
+  ASSERT_TRUE(answer.is_object());
+  EXPECT_EQ(answer.value("type", ""), "refuse");
+  EXPECT_NE(answer.value("reason", "").find("turns[1] comes after the rack was over"),
+            std::string::npos)
+      << answer.dump();
+  ASSERT_TRUE(joiner.result(4 * kAttackBound).has_value());
 }
 
 TEST_F(HostileHost, AWelcomeReplayHearsCtrlCWithinASecond) {
