@@ -17,8 +17,12 @@ namespace nineball::net_test {
 
 #ifdef NINEBALL_SANITIZED
 constexpr double kAttackBound = 30.0;
+constexpr double kPromptly = 15.0;  // s: a silent socket's hold, a joiner let in
+constexpr double kCtrlC = 5.0;      // s: from Ctrl-C to the joiner's end
 #else
 constexpr double kAttackBound = 8.0;
+constexpr double kPromptly = 4.0;
+constexpr double kCtrlC = 1.0;
 #endif
 
 inline json helloWith(const std::string& code, const std::string& token = "",
