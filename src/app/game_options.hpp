@@ -34,6 +34,7 @@ struct GameOptions {
   // Online play (docs/playing.md, "Playing online"): host on a port, or join a host.
   std::optional<unsigned short> host_port;  ///< --host [PORT]: wait for a friend on this port
   std::string join;                         ///< --join HOST[:PORT]: play the host there
+  std::string code;                         ///< --code: the join code (host: made when empty)
   std::string name;                         ///< --name: this player's name (else the settings')
 };
 

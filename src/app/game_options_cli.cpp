@@ -7,6 +7,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/opponent.hpp"
+#include "net/protocol.hpp"
 #include "net/wire.hpp"
 #include "nineball/games.hpp"
 
@@ -143,6 +144,19 @@ std::vector<CLI::Option*> addGameOptions(CLI::App& app, GameOptions& o) {
                    ->type_name("HOST[:PORT]");
   opts.push_back(join);
   host->excludes(join);
+  opts.push_back(app.add_option_function<std::string>(
+                        "--code",
+                        [&o](const std::string& text) {
+                          if (text.size() > net::kMostCodeChars) {
+                            throw CLI::ValidationError(
+                                "--code", "longer than " + std::to_string(net::kMostCodeChars) +
+                                              " characters");
+                          }
+                          o.code = text;
+                        },
+                        "Play online: the join code (the host's is made at random when not "
+                        "given; the joiner gives the one the host's window shows)")
+                     ->type_name("CODE"));
   opts.push_back(app.add_option_function<std::string>(
       "--name",
       [&o](const std::string& n) {

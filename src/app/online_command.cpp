@@ -3,6 +3,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <istream>
 #include <memory>
 #include <ostream>
@@ -60,6 +61,31 @@ std::optional<net::OnlineRackOptions> sideOf(const OnlineOptions& o, std::string
   return r;
 }
 
+// --seat-token: the token itself, or a file that holds it (read when it exists, written with
+// the token each welcome hands out, so a restarted joiner takes its seat back).
+bool takeSeatToken(const std::string& given, net::OnlineRackOptions& o, std::string& why) {
+  if (given.empty()) return true;
+  if (net::isSeatToken(given)) {
+    o.seat_token = given;
+    return true;
+  }
+  std::ifstream in(given);
+  std::string token;
+  if (in && std::getline(in, token) && !token.empty()) {
+    if (!net::isSeatToken(token)) {
+      why = "--seat-token: " + given + " does not hold a seat token (" +
+            std::to_string(net::kSeatTokenChars) + " hexadecimal digits)";
+      return false;
+    }
+    o.seat_token = token;
+  }
+  o.on_seat_token = [given](const std::string& t) {
+    std::ofstream out(given);
+    out << t << '\n';
+  };
+  return true;
+}
+
 // Ctrl-C (or a kill) while a rack is on: the other side is told before this one goes.
 std::atomic<bool> quit_requested{false};
 
@@ -97,6 +123,17 @@ CLI::App* addOnlineCommand(CLI::App& app, OnlineOptions& options) {
                   "This side's match script (the host's sets the game), or - for standard input")
       ->required();
   cmd->add_option("--name", options.name, "The name the other player sees")->capture_default_str();
+  cmd->add_option("--code", options.code,
+                  "The join code: the host's (made at random when not given, printed beside "
+                  "the address), which the joiner must give");
+  cmd->add_option("--seat-token", options.seat_token,
+                  "Joiner: the seat token of an earlier welcome (to take the seat back from a "
+                  "new process), or a file to keep it in (read when it exists, written on "
+                  "welcome)");
+  cmd->add_option("--turn-time", options.turn_s,
+                  "Seconds the other player may take over a turn before the rack is given up")
+      ->check(CLI::Range(1.0, 86400.0))
+      ->capture_default_str();
   cmd->add_option("--wait", options.wait_s, "Host: seconds to wait for the other player")
       ->check(CLI::Range(1.0, 86400.0))
       ->capture_default_str();
@@ -138,7 +175,26 @@ int runOnline(const OnlineOptions& options, std::istream& in, std::ostream& out,
   o.script = std::get<io::MatchScript>(std::move(parsed));
   o.match = net::matchPart(io::readJson(*text));
   o.name = options.name;
+  if (options.code.size() > net::kMostCodeChars) {
+    err << prefix << "--code: longer than " << net::kMostCodeChars << " characters\n";
+    return kExitBadInput;
+  }
+  o.code = options.code;
+  if (o.side == net::Side::Host) {
+    if (o.code.empty()) o.code = net::makeJoinCode();
+    err << prefix << "hosting on port " << o.address.port << ": join with nineball --join "
+        << net::localAddress() << ":" << o.address.port << " --code " << o.code << '\n'
+        << std::flush;
+  } else if (o.code.empty()) {
+    err << prefix << "--join needs the host's join code (--code CODE)\n";
+    return kExitBadInput;
+  }
+  if (!takeSeatToken(options.seat_token, o, why)) {
+    err << prefix << why << '\n';
+    return kExitBadInput;
+  }
   o.wait_s = options.wait_s;
+  o.turn_s = options.turn_s;
   o.rejoin_s = options.rejoin_s;
   o.limits.silence_s = options.silence_s;
   if (const auto n = options.nudge_after) {

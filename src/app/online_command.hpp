@@ -13,7 +13,10 @@ struct OnlineOptions {
   std::string join;         ///< --join HOST[:PORT]
   std::string script_path;  ///< this side's match script, or "-"
   std::string name = "Player";
+  std::string code;        ///< --code: the join code (host: made at random when empty)
+  std::string seat_token;  ///< --seat-token: a token, or a file holding one
   double wait_s = 300.0;
+  double turn_s = 300.0;
   double rejoin_s = 60.0;
   double silence_s = 10.0;
   // Hidden, for tests: knock this side out of step after turn N (a ball nudged 1 um); drop the
@@ -24,7 +27,7 @@ struct OnlineOptions {
   std::optional<long> quit_before;
 };
 
-/// Registers `online (--host PORT | --join HOST[:PORT]) SCRIPT` on the app.
+/// Registers `online (--host PORT | --join HOST[:PORT]) SCRIPT [--code CODE]` on the app.
 CLI::App* addOnlineCommand(CLI::App& app, OnlineOptions& options);
 
 /// Plays one rack with another nineball over the network, this side's turns from the script

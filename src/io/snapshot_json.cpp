@@ -1,6 +1,7 @@
 #include "io/snapshot_json.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -66,7 +67,7 @@ std::vector<int> ballNumbers(const json& obj, const std::string& path, const cha
   if (!v.is_array() || v.size() > like.size()) refuse(at, "expected a list of balls");
   std::vector<int> out;
   for (std::size_t i = 0; i < v.size(); ++i) {
-    const int id = integer(v[i], element(at, i), 0, 1000);
+    const int id = integer(v[i], element(at, i), 0, INT_MAX);
     const bool known =
         std::any_of(like.begin(), like.end(), [id](const BallState& b) { return b.id == id; });
     if (!known) refuse(element(at, i), "no ball " + std::to_string(id) + " in this match");
@@ -92,7 +93,7 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
     expectObject(b, at);
     allowOnly(b, at, {"id", "x", "y", "vx", "vy", "w", "mass", "pocket"});
     BallState ball;
-    ball.id = integer(required(b, at, "id"), member(at, "id"), 0, 1000);
+    ball.id = integer(required(b, at, "id"), member(at, "id"), 0, INT_MAX);
     if (whole && ball.id != like[i].id) {
       refuse(member(at, "id"), "expected ball " + std::to_string(like[i].id));
     }

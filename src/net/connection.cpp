@@ -7,6 +7,7 @@
 
 #include "common/log.hpp"
 #include "io/json_reader.hpp"
+#include "net/protocol.hpp"
 
 namespace nineball::net {
 namespace {
@@ -15,6 +16,8 @@ namespace {
 constexpr int kMostDepth = 16;
 // Bytes read per pump at most, so a fast sender cannot hold the game loop.
 constexpr std::size_t kMostReadPerPump = 4 * kMaxMessageBytes;
+// How long a refusal for a broken stream may take to go out before the link closes.
+constexpr double kRefusalFlushSeconds = 0.2;
 
 bool tooDeep(const std::string& text) {
   int depth = 0;
@@ -55,7 +58,8 @@ std::optional<nlohmann::json> parseMessage(const std::string& text, std::string&
     }
     return j;
   } catch (const io::ParseError& e) {
-    why = "a message that is not JSON (" + e.message + ")";
+    // The parser quotes the bytes it stopped at: cleaned, as anything a peer sends.
+    why = "a message that is not JSON (" + cleanText(e.message, 120) + ")";
     return std::nullopt;
   }
 }
@@ -67,7 +71,8 @@ Connection::Connection(std::unique_ptr<sf::TcpSocket> socket, double now, LinkLi
       last_said_(now),
       window_start_(now) {
   socket_->setBlocking(false);
-  remote_ = socket_->getRemoteAddress().toString() + ":" + std::to_string(socket_->getRemotePort());
+  address_ = socket_->getRemoteAddress().toString();
+  remote_ = address_ + ":" + std::to_string(socket_->getRemotePort());
 }
 
 Connection::~Connection() {
@@ -81,9 +86,21 @@ std::string Connection::remote() const {
 void Connection::close(const std::string& reason) {
   if (closed_) return;
   closed_ = true;
-  reason_ = reason;
-  logger("net")->info("link to {} closed: {}", remote_, reason);
+  // Often the peer's own words: logged and shown, so cleaned as all peer text is.
+  reason_ = cleanText(reason, std::string::npos);
+  logger("net")->info("link to {} closed: {}", remote_, reason_);
   socket_->disconnect();
+}
+
+void Connection::refuseAndClose(const std::string& what_it_did) {
+  if (closed_) return;
+  // The peer hears why before the link closes (as every refusal), bounded: the stream it
+  // sent is broken, but it may still read.
+  unsent_ += framed(
+      nlohmann::json{{"type", "refuse"}, {"reason", cleanText("disconnected: you " + what_it_did)}}
+          .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  flush(kRefusalFlushSeconds);
+  close("the other side " + what_it_did);
 }
 
 void Connection::send(const nlohmann::json& message) {
@@ -122,14 +139,14 @@ bool Connection::accept(const std::string& text, double now, nlohmann::json& out
     window_count_ = 0;
   }
   if (++window_count_ > limits_.messages_per_second) {
-    close("the other side flooded the link (more than " +
-          std::to_string(limits_.messages_per_second) + " messages a second)");
+    refuseAndClose("flooded the link (more than " + std::to_string(limits_.messages_per_second) +
+                   " messages a second)");
     return false;
   }
   std::string why;
   auto message = parseMessage(text, why);
   if (!message) {
-    close("the other side sent " + why);
+    refuseAndClose("sent " + why);
     return false;
   }
   out = std::move(*message);
@@ -150,13 +167,14 @@ void Connection::receive(double now, std::vector<nlohmann::json>& out) {
     }
     if (got == 0) break;
     total += got;
-    last_heard_ = now;
     std::string why;
     if (!reader_.feed(chunk, got, why)) {
-      close("the other side sent " + why);
+      refuseAndClose("sent " + why);
       break;
     }
     while (auto text = reader_.next()) {
+      // Only a whole message is a sign of life: a frame dripped a byte at a time is not.
+      last_heard_ = now;
       nlohmann::json message;
       if (!accept(*text, now, message)) break;
       if (message["type"] != "ping") out.push_back(std::move(message));

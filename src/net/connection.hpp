@@ -35,8 +35,9 @@ class Connection {
   /// Queues one message (an object with "type"); sent by pump().
   void send(const nlohmann::json& message);
   /// Sends what is queued and reads what has arrived; the whole messages received, in order.
-  /// A broken stream, a message too long, too deep or not JSON, a flood, or silence past the
-  /// limit closes the link (closed(), reason()); pings go out when we have been quiet.
+  /// A broken stream, a message too long, too deep or not JSON, or a flood is answered with
+  /// `refuse` and closes the link (closed(), reason()); so does silence past the limit (only
+  /// whole messages count as heard). Pings go out when we have been quiet.
   std::vector<nlohmann::json> pump(double now);
   /// Sends what is queued for up to `seconds` (a goodbye before closing).
   void flush(double seconds);
@@ -47,11 +48,15 @@ class Connection {
   const std::string& reason() const { return reason_; }
   /// The peer's address, "ip:port".
   std::string remote() const;
+  /// The peer's IP address alone (what limits per address count).
+  const std::string& address() const { return address_; }
 
  private:
   void sendQueued();
   void receive(double now, std::vector<nlohmann::json>& out);
   bool accept(const std::string& text, double now, nlohmann::json& out);
+  // Sends `refuse` ("disconnected: you <what_it_did>") and closes.
+  void refuseAndClose(const std::string& what_it_did);
 
   std::unique_ptr<sf::TcpSocket> socket_;
   LinkLimits limits_;
@@ -64,6 +69,7 @@ class Connection {
   bool closed_ = false;
   std::string reason_;
   std::string remote_;
+  std::string address_;
 };
 
 /// A listening socket, accepting without blocking.

@@ -1,12 +1,36 @@
 #include "net/handshake.hpp"
 
+#include <cctype>
+#include <random>
+
 namespace nineball::net {
 
-Hello helloFrom(const std::string& name) {
-  return Hello{kProtocolVersion, buildId(), cleanName(name)};
+Hello helloFrom(const std::string& name, const std::string& code, const std::string& token,
+                const Seat& player) {
+  Hello h;
+  h.protocol = kProtocolVersion;
+  h.build = buildId();
+  h.name = cleanName(name);
+  h.code = code.substr(0, kMostCodeChars);
+  h.token = token;
+  h.player = player;
+  return h;
 }
 
 namespace {
+
+// No 0/O, 1/I/L: a code read out over the phone is typed right.
+constexpr char kCodeAlphabet[] = "23456789ABCDEFGHJKMNPQRSTUVWXYZ";
+
+// Equal strings, compared in a time that does not say how much of a guess was right.
+bool sameSecret(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.empty()) return false;
+  unsigned char diff = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+  }
+  return diff == 0;
+}
 
 std::optional<std::string> mismatch(int protocol, const std::string& build) {
   if (protocol != kProtocolVersion) {
@@ -14,7 +38,7 @@ std::optional<std::string> mismatch(int protocol, const std::string& build) {
            std::to_string(kProtocolVersion);
   }
   if (build != buildId()) {
-    return "the other side runs " + build + ", this one " + buildId() +
+    return "the other side runs " + cleanText(build, 80) + ", this one " + buildId() +
            ": both players need the same build (its physics could differ)";
   }
   return std::nullopt;
@@ -31,7 +55,7 @@ std::optional<std::string> refusalOf(const Welcome& welcome) {
 }
 
 Welcome welcomeFrom(const std::string& name, const nlohmann::json& match, const Race& race,
-                    const Lockstep& lockstep) {
+                    const Lockstep& lockstep, const std::string& token) {
   Welcome w;
   w.protocol = kProtocolVersion;
   w.build = buildId();
@@ -40,7 +64,44 @@ Welcome welcomeFrom(const std::string& name, const nlohmann::json& match, const 
   w.race = race;
   w.turns = lockstep.turns();
   w.hashes = lockstep.hashes();
+  w.token = token;
   return w;
+}
+
+std::string makeJoinCode() {
+  std::random_device source;
+  std::uniform_int_distribution<std::size_t> pick(0, sizeof kCodeAlphabet - 2);
+  std::string code;
+  for (int i = 0; i < 8; ++i) {
+    if (i == 4) code += '-';
+    code += kCodeAlphabet[pick(source)];
+  }
+  return code;
+}
+
+std::string makeSeatToken() {
+  std::random_device source;
+  std::uniform_int_distribution<int> digit(0, 15);
+  std::string token;
+  for (std::size_t i = 0; i < kSeatTokenChars; ++i) token += "0123456789abcdef"[digit(source)];
+  return token;
+}
+
+std::string normalCode(const std::string& code) {
+  std::string out;
+  for (char c : code) {
+    if (c == '-' || c == ' ') continue;
+    out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+bool codeMatches(const std::string& typed, const std::string& code) {
+  return sameSecret(normalCode(typed), normalCode(code));
+}
+
+bool tokenMatches(const std::string& offered, const std::string& token) {
+  return sameSecret(offered, token);
 }
 
 std::optional<MatchSetup> setupOf(const Welcome& welcome, std::string& why) {

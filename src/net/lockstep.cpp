@@ -1,6 +1,7 @@
 #include "net/lockstep.hpp"
 
 #include "io/snapshot_json.hpp"
+#include "net/heal_check.hpp"
 #include "nineball/table.hpp"
 
 namespace nineball::net {
@@ -43,6 +44,11 @@ std::optional<CheckedTurn> Lockstep::peerTurn(const TurnMessage& message, const 
   }
   if (match.rack().shooter() == localSeat()) {
     why = "a turn out of turn (it is this side's move)";
+    return std::nullopt;
+  }
+  if (peer_player_ && seatName(message.turn.player) != seatName(*peer_player_)) {
+    why = "a turn labelled " + seatName(message.turn.player) + " from a seat its hello said " +
+          seatName(*peer_player_) + " plays";
     return std::nullopt;
   }
   const auto input = parseWireTurn(message.turn, setup_, why);
@@ -95,7 +101,12 @@ std::optional<MatchSnapshot> Lockstep::healState(const StateMessage& message, co
   const TableDef& t = match.world().table().def;
   const double bound = 0.5 * std::max(t.length, t.width) + 1.0;
   try {
-    return io::parseSnapshot(message.state, match.balls(), bound);
+    MatchSnapshot s = io::parseSnapshot(message.state, match.balls(), bound);
+    if (const auto problem = healProblem(s, setup_, match, turns_.size())) {
+      why = "a state the rack cannot be in (" + *problem + ")";
+      return std::nullopt;
+    }
+    return s;
   } catch (const io::ParseError& e) {
     why = "a state that does not fit the rack (" + e.message + ")";
     return std::nullopt;

@@ -70,6 +70,9 @@ class Lockstep {
   HashMessage healed(const MatchSnapshot& restored, bool& took);
   /// Heals so far in this rack.
   int heals() const { return heals_; }
+  /// Who plays the peer's seat, as its hello said: a turn labelled otherwise is refused (a
+  /// person's turn cannot pass for the computer's). Unset: any label.
+  void setPeerPlayer(const Seat& player) { peer_player_ = player; }
 
   /// The hash of the last turn again, after a rejoin (nothing before the first turn).
   std::optional<HashMessage> lastHash() const;
@@ -90,6 +93,7 @@ class Lockstep {
   bool healing_ = false;         // a mismatch is being healed (the index is the last turn)
   std::uint64_t host_hash_ = 0;  // the joiner: the host's hash of the turn being healed
   int heals_ = 0;
+  std::optional<Seat> peer_player_;
 };
 
 }  // namespace nineball::net

@@ -1,5 +1,6 @@
 #include "net/online_rack.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <future>
@@ -23,8 +24,6 @@ constexpr std::size_t kMaxTurns = kMostTurns;
 constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
 constexpr double kRetrySeconds = 0.25;
-// Newcomers heard at once while a game is on; more are refused straight away.
-constexpr std::size_t kMostNewcomers = 4;
 
 double seconds() {
   using namespace std::chrono;
@@ -48,7 +47,7 @@ struct Dropped {};
 
 class OnlineRack {
  public:
-  explicit OnlineRack(const OnlineRackOptions& o) : o_(o) {}
+  explicit OnlineRack(const OnlineRackOptions& o) : o_(o), token_(o.seat_token) {}
 
   OnlineRackResult run() {
     try {
@@ -59,6 +58,8 @@ class OnlineRack {
     } catch (const Stop&) {
     }
     if (match_) describeRack();
+    // What the peer said reaches the terminal: without control characters.
+    result_.why = cleanText(result_.why, std::string::npos);
     if (link_ && !link_->closed()) {
       link_->flush(1.0);
       // The side that closes first holds its port for a minute (TCP's TIME_WAIT), and SFML's
@@ -102,44 +103,23 @@ class OnlineRack {
 
   // The other side broke the protocol: tell it why and drop it; it may rejoin.
   [[noreturn]] void refusePeer(const std::string& why) {
-    logger("net")->warn("the other side sent {}: disconnected it", why);
+    logger("net")->warn("the other side sent {}: disconnected it", cleanText(why, 400));
     send(Refuse{"disconnected: you sent " + why});
     link_->flush(0.5);
     link_->close("it sent " + why);
     throw Dropped{};
   }
 
-  // The host, while a game is on: someone else connects. A good hello is the other player
-  // back on a new connection (the old one is dead without our knowing yet): it takes the
-  // seat, and the rack goes on through a rejoin. Anyone else is refused and the game goes on.
-  // Newcomers are heard without waiting for them, so they cannot hold up the game.
+  // The host, while a game is on: someone else connects. The gate hears every newcomer at
+  // once, without waiting for any: a hello with the code and the seat's token is the other
+  // player back on a new connection (the old one is dead without our knowing yet, or its
+  // program was restarted): it takes the seat, and the rack goes on through a rejoin. Anyone
+  // else is refused and the game goes on.
   void watchForRejoin() {
     if (!listener_ || !link_ || link_->closed()) return;
-    const double now = seconds();
-    while (auto socket = listener_->accept()) {
-      auto c = std::make_unique<Connection>(std::move(socket), now, o_.limits);
-      if (newcomers_.size() >= kMostNewcomers) {
-        refuse(*c, "too many connections at once");
-        continue;
-      }
-      newcomers_.push_back({std::move(c), now + kHandshakeSeconds});
-    }
-    for (auto it = newcomers_.begin(); it != newcomers_.end();) {
-      const auto in = it->link->pump(now);
-      if (in.empty() && !it->link->closed() && now < it->deadline) {
-        ++it;
-        continue;
-      }
-      std::string build_refusal;
-      const auto hello = helloOf(*it->link, in, build_refusal);
-      if (hello) {
-        link_->close("the other player connected again");
-        rejoining_ = std::move(it->link);
-        rejoining_hello_ = *hello;
-        newcomers_.clear();
-        return;
-      }
-      it = newcomers_.erase(it);
+    if (auto admitted = gate_->poll(*listener_, seconds())) {
+      link_->close("the other player connected again");
+      rejoining_ = std::move(admitted);
     }
   }
 
@@ -160,6 +140,13 @@ class OnlineRack {
       }
       leaveIfAsked();
       if (link_->closed()) return std::nullopt;
+      if (turn_deadline_ > 0.0 && seconds() > turn_deadline_) {
+        const std::string why = "no turn within " + std::to_string(static_cast<int>(o_.turn_s)) +
+                                " s: the rack is given up";
+        send(Bye{why, false});
+        link_->flush(0.5);
+        end(Outcome::LinkLost, "the other player played " + why);
+      }
       for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
       watchForRejoin();
       if (inbox_.empty()) nap();
@@ -169,6 +156,10 @@ class OnlineRack {
   // A lost link: the rack pauses, and goes on if the peer comes back in time.
   void recover() {
     const std::string reason = link_->reason();
+    if (++rejoins_ > o_.most_rejoins) {
+      end(Outcome::LinkLost, "the link was lost (" + reason + ") more than " +
+                                 std::to_string(o_.most_rejoins) + " times in this rack");
+    }
     logger("net")->warn("link lost ({}): waiting up to {} s for a rejoin", reason, o_.rejoin_s);
     inbox_.clear();
     const bool back = o_.side == Side::Host ? awaitJoiner(o_.rejoin_s) : join(o_.rejoin_s);
@@ -181,12 +172,19 @@ class OnlineRack {
     auto m = next();
     if (!m) throw Dropped{};
     if (const auto* bye = std::get_if<Bye>(&*m)) {
-      if (bye->finished) {
+      if (bye->finished && byeBelieved()) {
         end(Outcome::InStep, "the other side's rack is played: " + bye->reason);
       }
       end(Outcome::LinkLost, "the other player left: " + bye->reason);
     }
     return *m;
+  }
+
+  // A peer's "finished" is believed only where a rack can end for it: the rack is over here
+  // too, or the peer's own script ran out at its move. Anywhere else it is a quit.
+  bool byeBelieved() {
+    if (match_->rack().over() || records_.size() >= kMaxTurns) return true;
+    return lockstep_->settled() && match_->rack().shooter() != lockstep_->localSeat();
   }
 
   // --- the handshake ---
@@ -199,47 +197,45 @@ class OnlineRack {
       result_.why = why;
       return false;
     }
-    logger("net")->info("hosting on port {}: join with {}:{}", o_.address.port, localAddress(),
-                        o_.address.port);
+    gate_ =
+        std::make_unique<HostGate>(o_.code.empty() ? makeJoinCode() : o_.code, o_.limits, o_.gate);
+    logger("net")->info("hosting on port {}: join with --join {}:{} --code {}", o_.address.port,
+                        localAddress(), o_.address.port, gate_->code());
     return true;
   }
 
-  // The host: the next peer that connects and says a good hello is welcomed to the match (the
-  // rack as it stands, when it is a rejoin).
+  // The host: the first newcomer the gate lets in is welcomed to the match (the rack as it
+  // stands, when it is a rejoin). Newcomers are heard at once, however many say nothing.
   bool awaitJoiner(double limit) {
     const double deadline = seconds() + limit;
-    if (rejoining_) {
-      link_ = std::move(rejoining_);
-      if (welcome(rejoining_hello_)) return true;
-    }
-    while (seconds() < deadline) {
+    while (!rejoining_ && seconds() < deadline) {
       leaveIfAsked();
-      auto socket = listener_->accept();
-      if (!socket) {
-        nap();
-        continue;
-      }
-      link_ = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
-      if (welcomeJoiner()) return true;
+      rejoining_ = gate_->poll(*listener_, seconds());
+      if (!rejoining_) nap();
     }
-    if (!result_.why.empty()) return false;
+    if (rejoining_) {
+      link_ = std::move(rejoining_->link);
+      const Hello hello = rejoining_->hello;
+      rejoining_.reset();
+      welcome(hello);
+      return true;
+    }
+    if (!match_ && !gate_->buildRefusal().empty()) {
+      // The host's friend knew the code but runs another build: say so, not "nobody".
+      result_.outcome = Outcome::Refused;
+      result_.why = "refused the other side: " + gate_->buildRefusal();
+      return false;
+    }
     result_.outcome = Outcome::NoPeer;
     result_.why = "nobody joined within " + std::to_string(static_cast<int>(limit)) + " s";
     return false;
-  }
-
-  // Tells a peer why it is refused and closes its link.
-  static void refuse(Connection& c, const std::string& why) {
-    if (c.closed()) return;
-    c.send(toJson(Refuse{why}));
-    c.flush(0.5);
-    c.close(why);
   }
 
   // What a new link says first: waits until it says something, closes, or `limit` passes.
   std::vector<nlohmann::json> firstWords(Connection& c, double limit) {
     const double deadline = seconds() + limit;
     while (seconds() < deadline && !c.closed()) {
+      leaveIfAsked();
       auto in = c.pump(seconds());
       if (!in.empty()) return in;
       nap();
@@ -247,72 +243,33 @@ class OnlineRack {
     return {};
   }
 
-  // A peer's first words, if they are a hello of this build and nothing more (nothing may
-  // come before the welcome); anything else is refused and the link closed. A hello of another
-  // build or protocol leaves its reason in `build_refusal`.
-  static std::optional<Hello> helloOf(Connection& c, const std::vector<nlohmann::json>& in,
-                                      std::string& build_refusal) {
-    std::string why;
-    const auto m = in.empty() ? std::nullopt : readMessage(in.front(), why);
-    const auto* hello = m ? std::get_if<Hello>(&*m) : nullptr;
-    if (!hello) {
-      logger("net")->warn("a peer at {} did not say hello: refused", c.remote());
-      refuse(c, in.empty() ? "expected a hello" : "expected a hello, not " + why);
-      return std::nullopt;
-    }
-    if (in.size() > 1) {
-      refuse(c, "messages before the welcome");
-      return std::nullopt;
-    }
-    if (const auto mismatch = refusalOf(*hello)) {
-      logger("net")->warn("refused {}: {}", c.remote(), *mismatch);
-      refuse(c, *mismatch);
-      build_refusal = *mismatch;
-      return std::nullopt;
-    }
-    return *hello;
-  }
-
   // The first message of the host's answer on the joiner's side: a welcome (with the host's
   // hash behind it) or a refusal.
-  std::optional<Message> hostsAnswer() {
-    const auto in = firstWords(*link_, kHandshakeSeconds);
-    if (in.empty()) return std::nullopt;
+  std::optional<Message> hostsAnswer(double limit) {
+    const auto in = firstWords(*link_, limit);
+    if (in.empty()) {
+      result_.why = link_->closed() ? "the host closed the link (" + link_->reason() + ")"
+                                    : "the host did not answer the hello";
+      return std::nullopt;
+    }
     std::string why;
     auto m = readMessage(in.front(), why);
     if (!m) {
-      refuse(*link_, "a bad first message (" + why + ")");
+      refuseLink(*link_, "a bad first message (" + why + ")");
       return std::nullopt;
     }
     for (std::size_t i = 1; i < in.size(); ++i) inbox_.push_back(in[i]);
     return m;
   }
 
-  // The first words of a peer that connected to the host, if they are a good hello; a hello
-  // of another build is remembered as the result's reason.
-  std::optional<Hello> goodHello() {
-    std::string build_refusal;
-    const auto hello = helloOf(*link_, firstWords(*link_, kHandshakeSeconds), build_refusal);
-    if (!build_refusal.empty()) {
-      result_.outcome = Outcome::Refused;
-      result_.why = "refused the other side: " + build_refusal;
-    }
-    return hello;
-  }
-
-  bool welcomeJoiner() {
-    const auto hello = goodHello();
-    return hello && welcome(*hello);
-  }
-
-  bool welcome(const Hello& hello) {
+  void welcome(const Hello& hello) {
     peer_name_ = hello.name;
     if (!match_) startRack(o_.script.setup);
-    send(welcomeFrom(o_.name, o_.match, Race{}, *lockstep_));
+    lockstep_->setPeerPlayer(hello.player);
+    send(welcomeFrom(o_.name, o_.match, Race{}, *lockstep_, gate_->seatToken()));
     lockstep_->rejoined();
     if (const auto h = lockstep_->lastHash()) send(*h);
     logger("net")->info("{} joined from {}", peer_name_, link_->remote());
-    return true;
   }
 
   // The joiner: reaches the host (again and again until `limit`), says hello, and replays the
@@ -325,25 +282,29 @@ class OnlineRack {
       auto socket = connectTo(o_.address, std::min(o_.connect_s, deadline - seconds()), why);
       if (socket) {
         link_ = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
-        send(helloFrom(o_.name));
-        if (acceptWelcome()) return true;
+        send(helloFrom(o_.name, o_.code, token_, localPlayer()));
+        // The answer is awaited within the rejoin's own limit too.
+        if (acceptWelcome(std::clamp(deadline - seconds(), 0.5, kHandshakeSeconds))) return true;
         if (result_.outcome == Outcome::Refused) return false;
+        why = result_.why.empty() ? why : result_.why;
       }
       std::this_thread::sleep_for(std::chrono::duration<double>(kRetrySeconds));
     }
-    if (result_.why.empty()) {
+    // Nobody answered, or only "busy" or silence did (a bad welcome has said LinkLost).
+    if (result_.outcome == Outcome::InStep) {
       result_.outcome = Outcome::NoPeer;
       result_.why = why;
     }
     return false;
   }
 
-  bool acceptWelcome() {
-    auto m = hostsAnswer();
+  bool acceptWelcome(double limit) {
+    auto m = hostsAnswer(limit);
     if (!m) return false;
     if (const auto* r = std::get_if<Refuse>(&*m)) {
-      result_.outcome = Outcome::Refused;
       result_.why = "the host refused: " + r->reason;
+      // A full host is tried again; any other refusal is final.
+      if (!isBusyRefusal(r->reason)) result_.outcome = Outcome::Refused;
       return false;
     }
     const auto* w = std::get_if<Welcome>(&*m);
@@ -367,15 +328,27 @@ class OnlineRack {
       return false;
     }
     peer_name_ = w->name;
+    token_ = w->token;
+    if (o_.on_seat_token) o_.on_seat_token(token_);
     if (const auto h = lockstep_->lastHash()) send(*h);
     return true;
   }
 
-  // The joiner: the rack from its start, the welcome's turns played again.
+  Seat localPlayer() const { return o_.script.players[o_.side == Side::Host ? 0 : 1]; }
+
+  // The joiner: the rack from its start, the welcome's turns played again. Between turns the
+  // link is kept alive and Ctrl-C heard; a turn after one that left balls moving (the rack
+  // was over there) refuses the welcome.
   bool replay(const MatchSetup& setup, const Welcome& w, std::string& why) {
     startRack(setup);
     std::vector<std::uint64_t> hashes;
     for (std::size_t i = 0; i < w.turns.size(); ++i) {
+      leaveIfAsked();
+      keepAlive();
+      if (rackDone()) {
+        why = "turns[" + std::to_string(i) + "] comes after the rack was over";
+        return false;
+      }
       const auto input = parseWireTurn(w.turns[i], setup, why);
       if (!input) return false;
       const CheckedTurn turn{*input, w.turns[i].player};
@@ -402,6 +375,7 @@ class OnlineRack {
     records_.clear();
     computer_.clear();
     next_script_turn_ = 0;
+    partial_ = false;
     const rules::Player seat = lockstep_->localSeat();
     const Seat& mine = o_.script.players[seat == rules::Player::A ? 0 : 1];
     // A rejoin keeps the computer's stream of cueing errors where it was.
@@ -501,7 +475,9 @@ class OnlineRack {
   }
 
   void playPeerTurn() {
+    turn_deadline_ = seconds() + o_.turn_s;
     const Message m = nextOrDrop();
+    turn_deadline_ = 0.0;
     const auto* t = std::get_if<TurnMessage>(&m);
     if (!t) refusePeer("a message other than a turn when its turn was due");
     std::string why;
@@ -534,6 +510,7 @@ class OnlineRack {
 
   void onVerdict(HashVerdict verdict, std::size_t index) {
     if (verdict == HashVerdict::Mismatch && o_.side == Side::Host) {
+      if (lockstep_->heals() >= o_.most_heals) tooManyHeals(index);
       logger("net")->warn("out of step after turn {}: sending this side's state whole", index);
       const MatchSnapshot own = match_->snapshot();
       send(lockstep_->healMessage(own));
@@ -549,7 +526,16 @@ class OnlineRack {
     }
   }
 
+  [[noreturn]] void tooManyHeals(std::size_t index) {
+    const std::string why = "out of step after turn " + std::to_string(index) + ", healed " +
+                            std::to_string(lockstep_->heals()) + " times in this rack already";
+    send(Bye{why, false});
+    link_->flush(0.5);
+    end(Outcome::OutOfStep, why);
+  }
+
   void heal(const StateMessage& s) {
+    if (lockstep_->heals() >= o_.most_heals) tooManyHeals(s.index);
     std::string why;
     auto snapshot = lockstep_->healState(s, *match_, why);
     if (!snapshot) refusePeer(why);
@@ -578,13 +564,11 @@ class OnlineRack {
   OnlineRackResult result_;
   std::unique_ptr<Listener> listener_;
   std::unique_ptr<Connection> link_;
-  std::unique_ptr<Connection> rejoining_;  // the other player back on a new connection
-  struct Newcomer {
-    std::unique_ptr<Connection> link;
-    double deadline = 0.0;  // by when it must have said hello
-  };
-  std::vector<Newcomer> newcomers_;  // connected while a game is on, not yet heard
-  Hello rejoining_hello_;
+  std::unique_ptr<HostGate> gate_;     // the host: who may sit down
+  std::optional<Admitted> rejoining_;  // the other player back on a new connection
+  std::string token_;                  // the joiner: its seat token
+  int rejoins_ = 0;
+  double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)
   std::deque<nlohmann::json> inbox_;
   std::unique_ptr<Match> match_;
   std::unique_ptr<Lockstep> lockstep_;

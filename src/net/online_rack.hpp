@@ -8,6 +8,7 @@
 
 #include "io/match_json.hpp"
 #include "net/connection.hpp"
+#include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
 
 // One rack over the network without a window: `nineball online`. Each side takes its own
@@ -25,10 +26,24 @@ struct OnlineRackOptions {
   /// Host: the script's setup as JSON (matchPart), what the joiner is sent.
   nlohmann::json match;
   std::string name = "Player";
+  /// Host: the join code every hello must carry (made at random when empty). Joiner: the code
+  /// sent.
+  std::string code;
+  /// Joiner: the seat token of an earlier welcome, to take the seat back (a new process).
+  std::string seat_token;
+  /// Joiner: called with the seat token each welcome hands out (to keep it for a restart).
+  std::function<void(const std::string&)> on_seat_token;
   double wait_s = 300.0;    ///< host: how long to wait for the joiner
   double rejoin_s = 60.0;   ///< a lost link: how long to wait for (or keep trying) a rejoin
   double connect_s = 10.0;  ///< joiner: each attempt to connect
+  /// How long the other player may take over a turn (while its link answers) before the rack
+  /// is given up.
+  double turn_s = 300.0;
+  /// Heals and rejoins a rack may take; one more ends it (out of step, or the link lost).
+  int most_heals = 3;
+  int most_rejoins = 20;
   LinkLimits limits;
+  GateLimits gate;
   /// Raised (by Ctrl-C, say) to leave: the other side is told, and the rack ends.
   const std::atomic<bool>* quit = nullptr;
   /// Tests: called after each turn is played on this side (a test knocks a peer out of step).

@@ -13,16 +13,22 @@ using io::Bounds;
 using io::refuse;
 using nlohmann::json;
 
-// Longest text a peer may send (a reason, a build name).
-constexpr std::size_t kMostText = 200;
 // Radians agree with the degrees beside them within this (a rounding, not another shot).
 constexpr double kAngleAgreement = 1e-9;
 // Where a cue ball may be drawn, m from the table's centre: past any table.
 constexpr double kMostPlace = 5.0;
 
-std::string textField(const json& j, const char* key) {
+std::string textField(const json& j, const char* key, std::size_t most = kMostText) {
   const std::string s = io::text(io::required(j, "", key), key);
-  if (s.size() > kMostText) refuse(key, "longer than " + std::to_string(kMostText) + " bytes");
+  if (s.size() > most) refuse(key, "longer than " + std::to_string(most) + " bytes");
+  return s;
+}
+
+std::string tokenField(const json& j, const char* key) {
+  const std::string s = textField(j, key, kSeatTokenChars);
+  if (!s.empty() && !isSeatToken(s)) {
+    refuse(key, "expected " + std::to_string(kSeatTokenChars) + " hexadecimal digits or \"\"");
+  }
   return s;
 }
 
@@ -45,6 +51,13 @@ Vec2 pair(const json& v, const std::string& path, Bounds bounds) {
           io::number(v[1], io::element(path, 1), bounds)};
 }
 
+Seat seatField(const json& v, const std::string& path) {
+  const std::string name = io::text(io::required(v, path, "player"), io::member(path, "player"));
+  const auto seat = seatFromName(name);
+  if (!seat) refuse(io::member(path, "player"), "expected " + seatNamesText());
+  return *seat;
+}
+
 WireTurn parseTurnEntry(const json& v, const std::string& path) {
   io::expectObject(v, path);
   io::allowOnly(v, path, {"turn", "player"});
@@ -52,10 +65,7 @@ WireTurn parseTurnEntry(const json& v, const std::string& path) {
   io::expectObject(turn, io::member(path, "turn"));
   WireTurn w;
   w.turn = turn;
-  const std::string name = io::text(io::required(v, path, "player"), io::member(path, "player"));
-  const auto seat = seatFromName(name);
-  if (!seat) refuse(io::member(path, "player"), "expected " + seatNamesText());
-  w.player = *seat;
+  w.player = seatField(v, path);
   return w;
 }
 
@@ -79,12 +89,19 @@ Race parseRace(const json& v) {
 Message parse(const json& j) {
   const std::string type = io::text(io::required(j, "", "type"), "type");
   if (type == "hello") {
-    io::allowOnly(j, "", {"type", "protocol", "build", "name"});
-    return Hello{io::integer(io::required(j, "", "protocol"), "protocol", 0, 1 << 20),
-                 textField(j, "build"), cleanName(textField(j, "name"))};
+    io::allowOnly(j, "", {"type", "protocol", "build", "name", "code", "token", "player"});
+    Hello h;
+    h.protocol = io::integer(io::required(j, "", "protocol"), "protocol", 0, 1 << 20);
+    h.build = textField(j, "build");
+    h.name = cleanName(textField(j, "name"));
+    h.code = textField(j, "code", kMostCodeChars);
+    h.token = tokenField(j, "token");
+    h.player = seatField(j, "");
+    return h;
   }
   if (type == "welcome") {
-    io::allowOnly(j, "", {"type", "protocol", "build", "name", "match", "race", "turns", "hashes"});
+    io::allowOnly(
+        j, "", {"type", "protocol", "build", "name", "match", "race", "turns", "hashes", "token"});
     Welcome w;
     w.protocol = io::integer(io::required(j, "", "protocol"), "protocol", 0, 1 << 20);
     w.build = textField(j, "build");
@@ -103,17 +120,19 @@ Message parse(const json& j) {
       w.turns.push_back(parseTurnEntry(turns[i], io::element("turns", i)));
       w.hashes.push_back(parseHash(hashes[i], io::element("hashes", i)));
     }
+    w.token = tokenField(j, "token");
+    if (w.token.empty()) refuse("token", "expected the joiner's seat token");
     return w;
   }
   if (type == "refuse") {
     io::allowOnly(j, "", {"type", "reason"});
-    return Refuse{textField(j, "reason")};
+    return Refuse{cleanText(textField(j, "reason"))};
   }
   if (type == "bye") {
     io::allowOnly(j, "", {"type", "reason", "finished"});
     const json& finished = io::required(j, "", "finished");
     if (!finished.is_boolean()) refuse("finished", "expected true or false");
-    return Bye{textField(j, "reason"), finished.get<bool>()};
+    return Bye{cleanText(textField(j, "reason")), finished.get<bool>()};
   }
   if (type == "turn") {
     io::allowOnly(j, "", {"type", "index", "turn", "player"});
@@ -157,7 +176,13 @@ Message parse(const json& j) {
 
 struct ToJson {
   json operator()(const Hello& m) const {
-    return {{"type", "hello"}, {"protocol", m.protocol}, {"build", m.build}, {"name", m.name}};
+    return {{"type", "hello"},
+            {"protocol", m.protocol},
+            {"build", m.build},
+            {"name", m.name},
+            {"code", m.code},
+            {"token", m.token},
+            {"player", seatName(m.player)}};
   }
   json operator()(const Welcome& m) const {
     json turns = json::array();
@@ -174,9 +199,13 @@ struct ToJson {
               {"rack", m.race.rack},
               {"racks_won", {m.race.racks_won[0], m.race.racks_won[1]}}}},
             {"turns", turns},
-            {"hashes", hashes}};
+            {"hashes", hashes},
+            {"token", m.token}};
   }
-  json operator()(const Refuse& m) const { return {{"type", "refuse"}, {"reason", m.reason}}; }
+  // A reason is cut to what the other side reads (kMostText), so a long one still arrives.
+  json operator()(const Refuse& m) const {
+    return {{"type", "refuse"}, {"reason", cleanText(m.reason)}};
+  }
   json operator()(const TurnMessage& m) const {
     return {{"type", "turn"},
             {"index", m.index},
@@ -199,7 +228,7 @@ struct ToJson {
   }
   json operator()(const Rematch&) const { return {{"type", "rematch"}}; }
   json operator()(const Bye& m) const {
-    return {{"type", "bye"}, {"reason", m.reason}, {"finished", m.finished}};
+    return {{"type", "bye"}, {"reason", cleanText(m.reason)}, {"finished", m.finished}};
   }
 };
 
@@ -298,27 +327,43 @@ bool isControl(const std::string& s, std::size_t at, std::size_t n) {
   return n == 2 && u == 0xc2 && static_cast<unsigned char>(s[at + 1]) < 0xa0;
 }
 
-}  // namespace
-
-std::string cleanName(const std::string& name) {
-  // Whole UTF-8 characters only, so a cut never leaves half of one; bytes that are not UTF-8
-  // are dropped as control characters are (a peer's JSON cannot carry them, but a local name
-  // from the command line can).
+// `text` without control characters and bytes that are not UTF-8, whole characters only (a
+// cut never leaves half of one), at most `most_chars` characters and `most_bytes` bytes.
+std::string printable(const std::string& text, std::size_t most_chars, std::size_t most_bytes) {
   std::string out;
   std::size_t chars = 0;
-  for (std::size_t i = 0; i < name.size() && chars < kMostNameChars;) {
-    const std::size_t n = utf8Length(name, i);
+  for (std::size_t i = 0; i < text.size() && chars < most_chars;) {
+    const std::size_t n = utf8Length(text, i);
     if (n == 0) {
       ++i;
       continue;
     }
-    if (!isControl(name, i, n)) {
-      out.append(name, i, n);
+    if (!isControl(text, i, n)) {
+      if (out.size() + n > most_bytes) break;
+      out.append(text, i, n);
       ++chars;
     }
     i += n;
   }
+  return out;
+}
+
+}  // namespace
+
+std::string cleanName(const std::string& name) {
+  // Bytes that are not UTF-8 are dropped as control characters are (a peer's JSON cannot
+  // carry them, but a local name from the command line can).
+  const std::string out = printable(name, kMostNameChars, std::string::npos);
   return out.empty() ? "Player" : out;
+}
+
+std::string cleanText(const std::string& text, std::size_t most_bytes) {
+  return printable(text, std::string::npos, most_bytes);
+}
+
+bool isSeatToken(const std::string& text) {
+  return text.size() == kSeatTokenChars &&
+         text.find_first_not_of("0123456789abcdef") == std::string::npos;
 }
 
 }  // namespace nineball::net

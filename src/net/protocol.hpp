@@ -20,12 +20,27 @@ namespace nineball::net {
 constexpr std::size_t kMostNameChars = 24;
 /// Most turns a rack may hold (as `nineball match` plays at most 500).
 constexpr std::size_t kMostTurns = 500;
+/// Longest text a peer may send (a reason, a build name): what either side reads. A refusal or
+/// a goodbye longer than this is cut to it before it is sent, never dropped.
+constexpr std::size_t kMostText = 200;
+/// Longest join code a hello may carry.
+constexpr std::size_t kMostCodeChars = 32;
+/// A seat token's length: 32 hexadecimal digits (128 random bits).
+constexpr std::size_t kSeatTokenChars = 32;
 
 /// The joiner's first words.
 struct Hello {
   int protocol = 0;
   std::string build;
   std::string name;
+  /// The host's join code as the joiner typed it (compared without case and dashes).
+  std::string code;
+  /// The seat token a welcome handed this player before, to take the seat back after a drop;
+  /// empty for a first join.
+  std::string token;
+  /// Who plays the joiner's seat: a human, or the computer at a level. Every turn it sends
+  /// must say the same.
+  Seat player = HumanSeat{};
 };
 
 /// The match a host plays: its setup as a match script without "turns" and "players", and
@@ -53,6 +68,8 @@ struct Welcome {
   Race race;
   std::vector<WireTurn> turns;
   std::vector<std::uint64_t> hashes;
+  /// The joiner's seat token: a hello carrying it takes the seat back after a drop.
+  std::string token;
 };
 
 struct Refuse {
@@ -109,5 +126,11 @@ std::optional<TurnInput> parseWireTurn(const WireTurn& wire, const MatchSetup& s
 std::string hashText(std::uint64_t hash);
 /// A name as shown to the other side: printable, at most kMostNameChars.
 std::string cleanName(const std::string& name);
+/// Text from (or for) a peer as it may be logged, shown or sent: control characters (C0, C1,
+/// DEL: a terminal's escape sequences, a forged line) and bytes that are not UTF-8 dropped,
+/// cut at a whole character to at most `most_bytes`.
+std::string cleanText(const std::string& text, std::size_t most_bytes = kMostText);
+/// True for a seat token's form: kSeatTokenChars lowercase hexadecimal digits.
+bool isSeatToken(const std::string& text);
 
 }  // namespace nineball::net

@@ -21,6 +21,7 @@
 #include "window/rack_save.hpp"
 #include "window/rack_script.hpp"
 #include "window/rack_seed.hpp"
+#include "window/seat_token_file.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
@@ -257,6 +258,7 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
     config.address = *net::parseAddress(options_.join, why);  // checked with the options
   }
   config.name = options_.name;
+  config.code = options_.code;
   config.match = start.online_match;
   config.scripted = !options_.script.empty();
   config.script = start.turns;
@@ -281,10 +283,10 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
 // taken.
 bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
   const std::string remembered = settings_.last.names[0];
-  if (config.name.empty()) {
-    config.name =
-        config.side == net::Side::Joiner && remembered == "Player 1" ? "Player 2" : remembered;
-  }
+  if (config.name.empty()) config.name = remembered;
+  // The default name on both sides would show both players as "Player 1".
+  if (config.side == net::Side::Joiner && config.name == "Player 1") config.name = "Player 2";
+  if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
   online_ = OnlinePlay::start(config, why);
   if (!online_) return false;
   computer_.setOpponent(session_, HumanSeat{});
@@ -307,7 +309,10 @@ void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
   } else {
     config.side = net::Side::Joiner;
     config.address = net::parseAddress(settings_.join_address, why).value_or(net::Address{});
+    config.code = settings_.join_code;
   }
+  // The name typed on the menu's main screen (seat 1), as a game at this computer uses it.
+  config.name = settings_.last.names[0];
   if (!beginOnline(config, why)) {
     session_.say("Cannot host: " + why + ". Playing at this computer instead.",
                  render::Tone::Warning);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "net/protocol.hpp"
 #include "net/wire.hpp"
 #include "nineball/games.hpp"
 #include "window/player_name.hpp"
@@ -98,7 +99,8 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   if (screen_ == Screen::Settings) {
     return {Item::Volume, Item::Sound, Item::Guide, Item::Bank, Item::FrameCap, Item::Back};
   }
-  if (screen_ == Screen::Online) return {Item::Host, Item::Join, Item::JoinAddress, Item::Back};
+  if (screen_ == Screen::Online)
+    return {Item::Host, Item::Join, Item::JoinAddress, Item::JoinCode, Item::Back};
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
   for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
@@ -164,6 +166,12 @@ MenuRow MenuModel::row(Item item) const {
       r.kind = Kind::Text;
       r.label = "Friend's address";
       r.value = settings_.join_address;
+      r.editing = editing_ && items()[selected_] == item;
+      break;
+    case Item::JoinCode:
+      r.kind = Kind::Text;
+      r.label = "Join code";
+      r.value = settings_.join_code;
       r.editing = editing_ && items()[selected_] == item;
       break;
     case Item::Versus:
@@ -356,6 +364,7 @@ void MenuModel::activate(Item item) {
     case Item::Name1:
     case Item::Name2:
     case Item::JoinAddress:
+    case Item::JoinCode:
       editing_ = true;
       break;
     case Item::OpenSettings:
@@ -392,7 +401,7 @@ void MenuModel::key(MenuKey k) {
     if (k == MenuKey::Enter || k == MenuKey::Escape || k == MenuKey::Tab || k == MenuKey::Up ||
         k == MenuKey::Down) {
       editing_ = false;
-      if (name.empty() && item != Item::JoinAddress) {
+      if (name.empty() && item != Item::JoinAddress && item != Item::JoinCode) {
         name = item == Item::Name1 ? "Player 1" : "Player 2";
       }
       if (k == MenuKey::Up) move(-1);
@@ -438,6 +447,15 @@ void MenuModel::text(char32_t c) {
     }
     return;
   }
+  if (items()[selected_] == Item::JoinCode) {
+    // The host's code: letters, digits and dashes, as it shows it.
+    const bool fits =
+        (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '-';
+    if (fits && settings_.join_code.size() < net::kMostCodeChars) {
+      settings_.join_code += static_cast<char>(c);
+    }
+    return;
+  }
   std::string& name = editedText();
   const std::string add = utf8(c);
   if (name.size() + add.size() <= kMaxNameBytes) name += add;
@@ -446,6 +464,7 @@ void MenuModel::text(char32_t c) {
 std::string& MenuModel::editedText() {
   const Item item = items()[selected_];
   if (item == Item::JoinAddress) return settings_.join_address;
+  if (item == Item::JoinCode) return settings_.join_code;
   return settings_.last.names[item == Item::Name1 ? 0 : 1];
 }
 

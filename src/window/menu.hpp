@@ -79,6 +79,7 @@ class MenuModel {
     Host,
     Join,
     JoinAddress,
+    JoinCode,
     OpenSettings,
     Quit,
     Volume,

@@ -8,12 +8,18 @@
 #include "common/log.hpp"
 #include "net/handshake.hpp"
 #include "render/cue_stick_shape.hpp"
+#include "window/seat_token_file.hpp"
 
 namespace nineball::window {
 namespace {
 
 // How long a goodbye may take to go out before the window closes.
 constexpr double kByeFlush = 0.5;
+// Heals and rejoins a rack may take (as `nineball online`); one more ends the game.
+constexpr int kMostHeals = 3;
+constexpr int kMostRejoins = 20;
+// How long the joiner waits for the host's answer to its hello.
+constexpr double kWelcomeSeconds = 10.0;
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -32,20 +38,18 @@ std::string addressText(const net::Address& a) {
 
 }  // namespace
 
-std::string clockText(double seconds) {
-  const int s = std::max(0, static_cast<int>(seconds + 0.999));
-  char text[16];
-  std::snprintf(text, sizeof text, "%d:%02d", s / 60, s % 60);
-  return text;
-}
-
 std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::string& why) {
   std::unique_ptr<OnlinePlay> play(new OnlinePlay(config));
   if (config.side == net::Side::Host) {
     play->listener_ = net::Listener::open(config.address.port, why);
     if (!play->listener_) return nullptr;
-    logger("online")->info("hosting on port {}: the friend joins with nineball --join {}:{}",
-                           config.address.port, net::localAddress(), config.address.port);
+    if (play->config_.code.empty()) play->config_.code = net::makeJoinCode();
+    play->gate_ = std::make_unique<net::HostGate>(play->config_.code, config.limits);
+    logger("online")->info("hosting on port {}: the friend joins with {}", config.address.port,
+                           play->joinLine());
+  }
+  if (config.side == net::Side::Joiner && config.seat_token.empty() && !config.seat_file.empty()) {
+    play->config_.seat_token = loadSeatToken(config.seat_file, addressText(config.address));
   }
   return play;
 }
@@ -126,17 +130,21 @@ void OnlinePlay::update(GameSession& session, double seconds) {
 }
 
 void OnlinePlay::connectionStep(GameSession& session) {
-  if (stage_ == Stage::Over) return;
-  const double t = now();
-  if (!link_) {
-    if (config_.side == net::Side::Host) {
-      // A rejoin is welcomed between shots only: the welcome then holds every turn played.
-      if (session.phase() != Phase::Rolling) {
-        if (auto socket = listener_->accept()) linkUp(std::move(socket));
-      }
-    } else {
-      joinerConnect();
+  if (stage_ == Stage::Over) {
+    // Whoever comes now (the friend's restarted window) hears why, and does not hang.
+    while (listener_) {
+      auto socket = listener_->accept();
+      if (!socket) break;
+      net::Connection c(std::move(socket), now(), config_.limits);
+      net::refuseLink(c, "the game is over: " + why_);
     }
+    return;
+  }
+  const double t = now();
+  if (config_.side == net::Side::Host) {
+    hostStep(session);
+  } else if (!link_) {
+    joinerConnect();
   }
   if (!link_) {
     if (stage_ == Stage::Lost && t - lost_at_ > config_.rejoin_s) {
@@ -162,7 +170,34 @@ void OnlinePlay::connectionStep(GameSession& session) {
     }
     inbox_.push_back(*message);
   }
-  if (link_->closed()) linkLost(link_->reason());
+  if (link_->closed()) return linkLost(link_->reason());
+  if (config_.side == net::Side::Joiner && handshaking_ && t - hello_sent_ > kWelcomeSeconds) {
+    // A host that says nothing to the hello (it is over, or not a nineball): said, not hung on.
+    link_->close("no welcome");
+    link_.reset();
+    handshaking_ = false;
+    end("The host did not answer the hello within " + clockText(kWelcomeSeconds) +
+            " (its game may be over).",
+        true);
+  }
+}
+
+// The host hears everyone who connects through the gate, in every stage: a friend with the
+// code takes the free seat, the seated player with its token takes it back (its old link
+// dead, or its window restarted), anyone else is refused by name. A rejoin is welcomed
+// between shots only: the welcome then holds every turn played.
+void OnlinePlay::hostStep(const GameSession& session) {
+  if (!gate_ || session.phase() == Phase::Rolling) return;
+  auto admitted = gate_->poll(*listener_, now());
+  if (!admitted) return;
+  if (link_) {
+    link_->close("the other player connected again");
+    link_.reset();
+  }
+  linkUp(std::move(admitted->link));
+  // Handled with the other messages, after the turn that just ended is recorded: the welcome
+  // then holds it (and the hash of it that follows is of a turn the joiner has).
+  inbox_.push_back(admitted->hello);
 }
 
 void OnlinePlay::joinerConnect() {
@@ -170,7 +205,7 @@ void OnlinePlay::joinerConnect() {
     if (connecting_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
     ConnectAttempt attempt = connecting_.get();
     if (attempt.socket) {
-      linkUp(std::move(attempt.socket));
+      linkUp(std::make_unique<net::Connection>(std::move(attempt.socket), now(), config_.limits));
     } else {
       why_ = attempt.why;
       next_attempt_ = now() + config_.retry_s;
@@ -188,15 +223,19 @@ void OnlinePlay::joinerConnect() {
   });
 }
 
-void OnlinePlay::linkUp(std::unique_ptr<sf::TcpSocket> socket) {
-  link_ = std::make_unique<net::Connection>(std::move(socket), now(), config_.limits);
+void OnlinePlay::linkUp(std::unique_ptr<net::Connection> link) {
+  link_ = std::move(link);
   logger("online")->info("linked with {}", link_->remote());
   if (stage_ != Stage::Lost) stage_ = Stage::Handshake;
   handshaking_ = true;
-  if (config_.side == net::Side::Joiner) send(net::helloFrom(config_.name));
+  if (config_.side == net::Side::Joiner) {
+    send(net::helloFrom(config_.name, config_.code, config_.seat_token));
+    hello_sent_ = now();
+  }
 }
 
 void OnlinePlay::linkLost(std::string reason) {
+  reason = net::cleanText(reason, std::string::npos);
   logger("online")->warn("link lost: {}", reason);
   link_.reset();
   handshaking_ = false;
@@ -215,12 +254,12 @@ void OnlinePlay::linkLost(std::string reason) {
 void OnlinePlay::end(const std::string& reason, bool failure) {
   if (stage_ == Stage::Over) return;
   stage_ = Stage::Over;
-  why_ = reason;
+  why_ = net::cleanText(reason, std::string::npos);  // often the peer's words: shown clean
   failed_ = failure;
   if (failure) {
-    logger("online")->warn("{}", reason);
+    logger("online")->warn("{}", why_);
   } else {
-    logger("online")->info("{}", reason);
+    logger("online")->info("{}", why_);
   }
 }
 
@@ -252,7 +291,10 @@ void OnlinePlay::handle(GameSession& session, const net::Message& message) {
                    }
                    onWelcome(session, m);
                  },
-                 [&](const net::Refuse& m) { end("The other side refused: " + m.reason, true); },
+                 [&](const net::Refuse& m) {
+                   if (net::isBusyRefusal(m.reason)) return linkLost(m.reason);  // tried again
+                   end("The other side refused: " + m.reason, true);
+                 },
                  [&](const net::TurnMessage& m) {
                    if (!playing) return outOfPlace("a turn");
                    onTurn(session, m);
@@ -275,7 +317,13 @@ void OnlinePlay::handle(GameSession& session, const net::Message& message) {
                    onRematch(session);
                  },
                  [&](const net::Bye& m) {
-                   if (m.finished) {
+                   // "Finished" is believed where the peer's rack can end: the rack is over,
+                   // or its script ran out at its move; anywhere else it is a quit.
+                   const bool can_end =
+                       session.match().rack().over() ||
+                       (lockstep_ && lockstep_->settled() &&
+                        session.match().rack().shooter() != net::seatOf(config_.side));
+                   if (m.finished && can_end) {
                      peer_finished_ = true;
                      end(peer_name_ + " has played out the rack.", false);
                    } else {
@@ -302,14 +350,27 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   }
   handshaking_ = false;
   peer_name_ = hello.name.empty() ? std::string("Player 2") : net::cleanName(hello.name);
+  // Two players of one name are told apart by their seats.
+  if (peer_name_ == config_.name) peer_name_ = net::cleanName(peer_name_ + " (B)");
   session.setSeatName(1, peer_name_);
+  session.setSeatName(0, config_.name);
+  peer_player_ = hello.player;
   if (!lockstep_) {
     session.setFixedSeats(true);
     if (session.bestOf() == 0) session.setBestOf(1);  // the race needs a length: one rack
     newRack(session);
   }
+  lockstep_->setPeerPlayer(hello.player);
   stage_ = Stage::Playing;
-  send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_));
+  send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_,
+                        gate_ ? gate_->seatToken() : std::string()));
+  if (!lockstep_->turns().empty() && ++rejoins_ > kMostRejoins) {
+    send(net::Refuse{"rejoined more than " + std::to_string(kMostRejoins) + " times in this rack"});
+    link_->flush(kByeFlush);
+    return end(peer_name_ + " rejoined more than " + std::to_string(kMostRejoins) +
+                   " times in this rack: the game is over.",
+               true);
+  }
   if (!lockstep_->turns().empty()) {
     // A rejoin: both sides say where they stand before anything more is played.
     lockstep_->rejoined();
@@ -334,6 +395,11 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   const std::optional<MatchSetup> setup = net::setupOf(welcome, why);
   if (!setup) return protocolError("The host's match is refused: " + why);
   peer_name_ = welcome.name.empty() ? std::string("Player 1") : net::cleanName(welcome.name);
+  if (peer_name_ == config_.name) peer_name_ = net::cleanName(peer_name_ + " (A)");
+  if (welcome.token != config_.seat_token && !config_.seat_file.empty()) {
+    keepSeatToken(config_.seat_file, addressText(config_.address), welcome.token);
+  }
+  config_.seat_token = welcome.token;
   std::optional<GameSession> made;
   try {
     made.emplace(*setup);
@@ -355,6 +421,11 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
     const auto input = net::parseWireTurn(welcome.turns[i], fresh.rackSetup(), why);
     if (!input)
       return protocolError("The host's turn " + std::to_string(i) + " is refused: " + why);
+    // A turn after the rack ended (won, or a shot that left balls moving) is no rack's.
+    if (fresh.match().rack().over() || !fresh.match().world().atRest()) {
+      return protocolError("The host's turn " + std::to_string(i) +
+                           " comes after the rack was over");
+    }
     if (fresh.match().rack().shooter() == own) ++own_turns;
     try {
       fresh.playTurn(*input);
@@ -424,6 +495,15 @@ void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
     case net::HashVerdict::Mismatch:
       logger("online")->warn("the two tables differ after {}: the host's state is sent whole",
                              turn);
+      if (lockstep_->heals() >= kMostHeals) {
+        // Disagreeing, dropping and rejoining must not keep a host healing for ever.
+        send(net::Bye{"out of step after " + turn + ", healed " +
+                          std::to_string(lockstep_->heals()) + " times in this rack already",
+                      false});
+        return end("Out of step with " + peer_name_ + " after " + turn + ": healed " +
+                       std::to_string(lockstep_->heals()) + " times in this rack already.",
+                   true);
+      }
       if (config_.side == net::Side::Host) {
         const MatchSnapshot own = session.match().snapshot();
         send(lockstep_->healMessage(own));
@@ -503,6 +583,8 @@ void OnlinePlay::installRelay(GameSession& session) {
 
 void OnlinePlay::newRack(GameSession& session) {
   lockstep_.emplace(config_.side, session.rackSetup());
+  if (peer_player_) lockstep_->setPeerPlayer(*peer_player_);
+  rejoins_ = 0;
   pending_.reset();
   outgoing_.reset();
   local_offer_ = peer_offer_ = false;
@@ -601,66 +683,6 @@ net::Race OnlinePlay::race(const GameSession& session) const {
   r.rack = std::clamp(session.rackNumber() - 1, 0, 200);
   r.racks_won = {std::clamp(session.racksWon(0), 0, 99), std::clamp(session.racksWon(1), 0, 99)};
   return r;
-}
-
-// --- what the window shows ---
-
-bool OnlinePlay::controls(const GameSession& session) const {
-  const Phase phase = session.phase();
-  if (phase != Phase::Aiming && phase != Phase::PushOutChoice) return false;
-  return config_.scripted || !ourMove(session);
-}
-
-bool OnlinePlay::showsCue() const {
-  return peer_aiming_;
-}
-
-double OnlinePlay::pull() const {
-  return std::clamp(peer_power_, 0.0, 1.0) * render::CueStickShape::kMaxPull;
-}
-
-std::string OnlinePlay::banner(const GameSession& session) const {
-  const double t = now();
-  switch (stage_) {
-    case Stage::Waiting:
-      if (config_.side == net::Side::Host) {
-        return "Waiting for a friend to join: nineball --join " + net::localAddress() + ":" +
-               std::to_string(config_.address.port) + "  (Esc cancels)";
-      }
-      return "Connecting to " + addressText(config_.address) + "..." +
-             (why_.empty() ? std::string() : " (" + why_ + ")");
-    case Stage::Handshake:
-      return "Connected: greeting the other side...";
-    case Stage::Lost: {
-      const std::string left = clockText(config_.rejoin_s - (t - lost_at_));
-      return config_.side == net::Side::Host
-                 ? "Connection lost - waiting for " + peer_name_ + " to rejoin (" + left + ")"
-                 : "Connection lost - reconnecting to " + peer_name_ + " (" + left + ")";
-    }
-    case Stage::Over:
-      return why_ + " (Esc leaves)";
-    case Stage::Playing:
-      break;
-  }
-  (void)session;
-  return "";
-}
-
-std::string OnlinePlay::status(const GameSession& session) const {
-  if (stage_ != Stage::Playing) return banner(session);
-  if (pending_ || (lockstep_ && !lockstep_->settled())) {
-    return "Waiting for " + peer_name_ + "'s table to agree...";
-  }
-  if (local_finished_) return "Your script is over: the rack ends here.";
-  if (ourMove(session)) return "Your script plays your turn...";
-  if (session.phase() == Phase::PushOutChoice) return peer_name_ + " decides...";
-  return peer_aiming_ ? peer_name_ + " is aiming..." : peer_name_ + "'s turn...";
-}
-
-bool OnlinePlay::finished(const GameSession& session) const {
-  if (session.phase() == Phase::Rolling || pending_ || !inbox_.empty()) return false;
-  if (local_finished_ || peer_finished_) return true;
-  return lockstep_ && lockstep_->settled() && session.match().rack().over();
 }
 
 }  // namespace nineball::window

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "net/connection.hpp"
+#include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
 #include "net/protocol.hpp"
 #include "net/wire.hpp"
@@ -28,6 +29,15 @@ struct OnlineConfig {
   /// Host: the port (address.port). Joiner: where the host is.
   net::Address address;
   std::string name = "Player 1";
+  /// Host: the join code a friend must give (made at random when empty). Joiner: the code
+  /// typed.
+  std::string code;
+  /// Joiner: the seat token of an earlier welcome to this rack (kept with the saved online
+  /// rack), to take the seat back from a new window.
+  std::string seat_token;
+  /// Joiner: the file the seat token is kept in for a restarted window (seat_token_file.hpp);
+  /// empty: not kept.
+  std::string seat_file;
   /// Host: the match offered (a script without turns and players, net::matchPart).
   nlohmann::json match;
   /// This side's own turns from a script, played in order as its moves come; with `scripted`,
@@ -85,6 +95,11 @@ class OnlinePlay : public RemoteControl {
   /// Leaves: Bye with `reason`.
   void leave(const std::string& reason);
   const std::string& peerName() const { return peer_name_; }
+  /// Host: the join code. Joiner: the seat token the host handed out (empty before).
+  const std::string& joinCode() const { return config_.code; }
+  const std::string& seatToken() const { return config_.seat_token; }
+  /// Host: the line a friend types to join: "nineball --join ADDRESS:PORT --code CODE".
+  std::string joinLine() const;
   /// True once the rack with this peer began (the handshake went through once).
   bool started() const { return lockstep_.has_value(); }
   /// Rematch offers so far (either side), for the HUD.
@@ -102,7 +117,8 @@ class OnlinePlay : public RemoteControl {
   void installRelay(GameSession& session);
   void connectionStep(GameSession& session);
   void joinerConnect();
-  void linkUp(std::unique_ptr<sf::TcpSocket> socket);
+  void linkUp(std::unique_ptr<net::Connection> link);
+  void hostStep(const GameSession& session);
   // By value: the reason is often the dropped link's own, which goes with it.
   void linkLost(std::string reason);
   void end(const std::string& reason, bool failure);
@@ -128,10 +144,12 @@ class OnlinePlay : public RemoteControl {
   std::string why_;
   bool failed_ = false;
   std::unique_ptr<net::Listener> listener_;
+  std::unique_ptr<net::HostGate> gate_;  // host: who may sit down
   std::unique_ptr<net::Connection> link_;
   std::future<ConnectAttempt> connecting_;
   double next_attempt_ = 0.0;
   double waiting_since_ = 0.0;
+  double hello_sent_ = 0.0;  // joiner: when the hello went out (the welcome is awaited)
   double lost_at_ = 0.0;
   double progress_at_ = 0.0;        // the last turn or hash
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
@@ -149,11 +167,13 @@ class OnlinePlay : public RemoteControl {
   bool replaced_ = false;
   std::size_t script_next_ = 0;
   std::string peer_name_;
+  std::optional<Seat> peer_player_;  // host: who plays the joiner's seat, as its hello said
   AimSmoother peer_aim_;
   bool peer_aiming_ = false;
   double peer_power_ = 0.0;
   AimThrottle throttle_;
   std::size_t rack_turns_seen_ = 0;
+  int rejoins_ = 0;  // host: rejoins in this rack
 };
 
 /// "m:ss" of a number of seconds (the rejoin's countdown).

@@ -35,6 +35,8 @@ struct Settings {
   int frame_cap = 60;        ///< frames per second at most; 0: as fast as vertical sync allows
   MenuChoice last;           ///< the game chosen last time (resume is never kept)
   std::string join_address;  ///< the host last joined online, HOST[:PORT] (empty: none yet)
+  /// The host's join code typed on the Join screen (not saved: each hosting has its own).
+  std::string join_code;
 
   bool operator==(const Settings& o) const;
   bool operator!=(const Settings& o) const { return !(*this == o); }

@@ -11,6 +11,7 @@
 #include "app/cli_runner.hpp"
 #include "net/connection.hpp"
 #include "net/free_port.hpp"
+#include "net/handshake.hpp"
 #include "net/protocol.hpp"
 
 namespace {
@@ -36,11 +37,11 @@ Pair playOnline(const std::string& host_script, const std::string& join_script,
   TempFile js(join_script);
   Pair r;
   std::thread host([&] {
-    r.host = runNineball("online --host " + std::to_string(port) + " --wait 120 " + host_flags +
-                         " " + shellQuoted(hs.path()));
+    r.host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 120 " +
+                         host_flags + " " + shellQuoted(hs.path()));
   });
-  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + join_flags + " " +
-                       shellQuoted(js.path()));
+  r.join = runNineball("online --join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE " +
+                       join_flags + " " + shellQuoted(js.path()));
   host.join();
   return r;
 }
@@ -158,10 +159,13 @@ TEST(OnlineCli, ANewProcessRejoinsARackInTheMiddle) {
   TempFile js(kJoinClub);
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 60 --rejoin 60 " +
-                       shellQuoted(hs.path()));
+    host = runNineball("online --host " + std::to_string(port) +
+                       " --code TEST-CODE --wait 60 --rejoin 60 " + shellQuoted(hs.path()));
   });
-  const std::string join = "online --join 127.0.0.1:" + std::to_string(port) + " ";
+  // The seat token the first process was welcomed with is kept in a file the second reads.
+  TempFile token("");
+  const std::string join = "online --join 127.0.0.1:" + std::to_string(port) +
+                           " --code TEST-CODE --seat-token " + shellQuoted(token.path()) + " ";
   const CliOutcome dead = runNineball(join + "--test-quit-before 3 " + shellQuoted(js.path()));
   const CliOutcome second = runNineball(join + shellQuoted(js.path()));
   t.join();
@@ -182,13 +186,13 @@ TEST(OnlineCli, APlayerWhoQuitsTellsTheOtherSide) {
   TempFile js(R"({"players": {"B": "ai:master"}})");
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 60 --rejoin 60 " +
-                       shellQuoted(hs.path()));
+    host = runNineball("online --host " + std::to_string(port) +
+                       " --code TEST-CODE --wait 60 --rejoin 60 " + shellQuoted(hs.path()));
   });
   const auto started = std::chrono::steady_clock::now();
-  const CliOutcome quitter =
-      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + shellQuoted(js.path()),
-                  "/dev/null", "timeout --preserve-status -s INT 1 ");
+  const CliOutcome quitter = runNineball("online --join 127.0.0.1:" + std::to_string(port) +
+                                             " --code TEST-CODE " + shellQuoted(js.path()),
+                                         "/dev/null", "timeout --preserve-status -s INT 1 ");
   t.join();
   EXPECT_EQ(quitter.status, 5) << quitter.err;
   EXPECT_NE(quitter.err.find("quit before the rack was over"), std::string::npos) << quitter.err;
@@ -215,7 +219,7 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
   TempFile hs(kHostPro);
   CliOutcome host;
   std::thread t([&] {
-    host = runNineball("online --host " + std::to_string(port) + " --wait 3 " +
+    host = runNineball("online --host " + std::to_string(port) + " --code TEST-CODE --wait 3 " +
                        shellQuoted(hs.path()));
   });
   std::unique_ptr<sf::TcpSocket> socket;
@@ -230,8 +234,9 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
         .count();
   };
   nineball::net::Connection link(std::move(socket), now());
-  link.send(nineball::net::toJson(
-      nineball::net::Hello{nineball::net::kProtocolVersion, "nineball 0.0.1 (elsewhere)", "Eve"}));
+  nineball::net::Hello eve = nineball::net::helloFrom("Eve", "TEST-CODE");
+  eve.build = "nineball 0.0.1 (elsewhere)";
+  link.send(nineball::net::toJson(eve));
   std::string reason;
   for (int i = 0; i < 2000 && reason.empty() && !link.closed(); ++i) {
     for (const json& m : link.pump(now())) {
@@ -244,6 +249,36 @@ TEST(OnlineCli, APeerOfAnotherBuildIsRefusedByName) {
   EXPECT_NE(reason.find(nineball::net::buildId()), std::string::npos) << reason;
   EXPECT_EQ(host.status, 2) << host.err;
   EXPECT_NE(host.err.find("refused the other side"), std::string::npos) << host.err;
+}
+
+// Issue 46: the host prints the line to join with, its code made at random; a joiner with a
+// wrong code is refused by the host and says so (exit 2), and the host waits on.
+TEST(OnlineCli, AJoinerWithAWrongCodeIsRefusedAndExitsTwo) {
+  const unsigned short port = freePort();
+  TempFile hs(kHostPro);
+  TempFile js(kJoinClub);
+  CliOutcome host;
+  std::thread t([&] {
+    host = runNineball("online --host " + std::to_string(port) + " --wait 4 " +
+                       shellQuoted(hs.path()));
+  });
+  const CliOutcome wrong = runNineball("online --join 127.0.0.1:" + std::to_string(port) +
+                                       " --code AAAA-BBBB --wait 20 " + shellQuoted(js.path()));
+  t.join();
+  EXPECT_EQ(wrong.status, 2) << wrong.err;
+  EXPECT_NE(wrong.err.find("the host refused: wrong join code"), std::string::npos) << wrong.err;
+  EXPECT_EQ(host.status, 5) << host.err;
+  const auto line = host.err.find("join with nineball --join ");
+  ASSERT_NE(line, std::string::npos) << host.err;
+  const auto code = host.err.find(" --code ", line);
+  ASSERT_NE(code, std::string::npos) << host.err;
+  const std::string made = host.err.substr(code + 8, 9);
+  EXPECT_EQ(made[4], '-') << made;
+  EXPECT_EQ(made.find_first_of("01OIL"), std::string::npos) << made;
+  const CliOutcome no_code =
+      runNineball("online --join 127.0.0.1:" + std::to_string(port) + " " + shellQuoted(js.path()));
+  EXPECT_EQ(no_code.status, 2);
+  EXPECT_NE(no_code.err.find("--code"), std::string::npos) << no_code.err;
 }
 
 TEST(OnlineCli, BadCommandLinesExitTwoWithTheReason) {

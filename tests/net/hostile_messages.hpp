@@ -51,11 +51,15 @@ inline std::string framedText(const std::string& text) {
   return net::framed(text);
 }
 
-inline json goodHello(const std::string& name = "Fuzz") {
-  return {{"type", "hello"},
-          {"protocol", net::kProtocolVersion},
-          {"build", net::buildId()},
-          {"name", name}};
+/// The join code the tests' hosts are given.
+constexpr char kCode[] = "7KQ4-ZP2M";
+
+/// A hello the tests' hosts take: this build, the code, and the seat's token when it is taken.
+inline json goodHello(const std::string& name = "Fuzz", const std::string& token = "") {
+  return {{"type", "hello"},         {"protocol", net::kProtocolVersion},
+          {"build", net::buildId()}, {"name", name},
+          {"code", kCode},           {"token", token},
+          {"player", "human"}};
 }
 
 /// A turn that reads as a turn of nine-ball (heading, speed, tip, elevation and the exact
@@ -216,11 +220,44 @@ inline std::string notAMessage(Rng& rng) {
   }
 }
 
-/// A hello the host refuses: another protocol or build (by name), or a field out of shape.
+/// A join code of the host's alphabet that is not the tests' (a guess).
+inline std::string randomCode(Rng& rng) {
+  static const char kAlphabet[] = "23456789ABCDEFGHJKMNPQRSTUVWXYZ";
+  std::string code;
+  do {
+    code.clear();
+    for (int i = 0; i < 8; ++i) code += kAlphabet[uniform(rng, 0, 30)];
+  } while (code == "7KQ4ZP2M");
+  return code;
+}
+
+/// A hello the host refuses: another protocol or build (by name), no or a wrong join code, or a
+/// field out of shape.
 inline Hostile badHello(Rng& rng) {
   json h = goodHello();
   Hostile out;
-  switch (uniform(rng, 0, 7)) {
+  switch (uniform(rng, 0, 12)) {
+    case 8:
+      h["code"] = uniform(rng, 0, 1) ? std::string() : randomCode(rng);
+      out.kind = "hello without the join code";
+      out.reason_has = "join code";
+      break;
+    case 9:
+      h["code"] = std::string(uniform(rng, 33, 300), 'C');
+      out.kind = "hello, join code too long";
+      out.reason_has = "code";
+      break;
+    case 10:
+      h["token"] =
+          uniform(rng, 0, 1) ? std::string(32, 'Z') : std::string(uniform(rng, 1, 31), 'a');
+      out.kind = "hello, a seat token out of shape";
+      out.reason_has = "token";
+      break;
+    case 11:
+      h["player"] = uniform(rng, 0, 1) ? json("ai:god") : json(7);
+      out.kind = "hello, a player that is none";
+      out.reason_has = "player";
+      break;
     case 0:
       h["protocol"] = net::kProtocolVersion + uniform(rng, 1, 1000);
       out.kind = "hello of another protocol";

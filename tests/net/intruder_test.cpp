@@ -46,6 +46,7 @@ TEST_F(Intruders, SilentIntrudersDoNotSilenceTheHostTowardsTheSeatedPlayer) {
   host.rejoin_s = 4 * kBound;
   host.limits.silence_s = 0.5;  // an intruder that says nothing is dropped after this
   host.limits.ping_s = 0.1;
+  host.code = kCode;
   RackThread rack(host);
 
   RawPeer seated;
@@ -56,10 +57,12 @@ TEST_F(Intruders, SilentIntrudersDoNotSilenceTheHostTowardsTheSeatedPlayer) {
   ASSERT_TRUE(seated.send(goodHello("Seated")));
   // The welcome, the host's break and its hash.
   int hashes = 0;
+  std::string token;
   for (double until = now() + 4 * kBound; hashes == 0 && now() < until;) {
     const json m = seated.next(until - now());
     ASSERT_FALSE(m.is_null()) << "no welcome and break";
     hashes += m.value("type", "") == "hash";
+    if (m.value("type", "") == "welcome") token = m.value("token", "");
   }
 
   // Three intruders connect at once and say nothing; the host reads them one by one.
@@ -102,7 +105,7 @@ TEST_F(Intruders, SilentIntrudersDoNotSilenceTheHostTowardsTheSeatedPlayer) {
   // Ends the host: a seated player who leaves.
   RawPeer last;
   ASSERT_TRUE(last.connect(port, kBound));
-  last.send(goodHello("Last"));
+  last.send(goodHello("Last", token));
   last.next(kBound);
   last.send(json{{"type", "bye"}, {"reason", "the test is over"}, {"finished", false}});
   const auto result = rack.result(kBound);

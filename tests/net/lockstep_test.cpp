@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 
 #include "io/snapshot_json.hpp"
@@ -241,6 +242,57 @@ TEST(Lockstep, AStateNotAskedForOrThatDoesNotFitIsRefused) {
   EXPECT_NE(why.find("balls[0].x"), std::string::npos) << why;
   // The good one is still taken.
   EXPECT_TRUE(t.joiner.healState(state, t.joiner_match, why).has_value()) << why;
+}
+
+// A host's state is believed only when the rack could be in it (issue 46: a hostile host).
+TEST(Lockstep, AHealedStateIsCheckedAsASceneAndAgainstTheRules) {
+  OutOfStep o;
+  breakOutOfStep(o);
+  Table& t = o.t;
+  EXPECT_EQ(verdict(t.joiner, o.host_hash), HashVerdict::Mismatch);
+  const StateMessage good = t.host.healMessage(t.host_match.snapshot());
+  const struct {
+    const char* what;
+    std::function<void(nlohmann::json&)> tamper;
+    const char* why;
+  } cases[] = {
+      {"cue in hand on the table", [](nlohmann::json& s) { s["cue_pocketed"] = true; },
+       "in hand is on the table"},
+      {"stacked",
+       [](nlohmann::json& s) {
+         for (auto& b : s["balls"]) b["x"] = 0.2, b["y"] = 0.0;
+       },
+       "overlaps"},
+      {"off the cloth", [](nlohmann::json& s) { s["balls"][0]["x"] = 2.2; }, "off the table"},
+      {"too fast", [](nlohmann::json& s) { s["balls"][1]["vy"] = -20.0; }, "faster than any cue"},
+      {"spinning",
+       [](nlohmann::json& s) {
+         s["balls"][1]["w"] = {0.0, 0.0, 9000.0};
+       },
+       "spins faster"},
+      {"a winner", [](nlohmann::json& s) { s["rack"]["winner"] = "B"; }, "winner"},
+      {"a draw", [](nlohmann::json& s) { s["rack"]["draw"] = true; }, "winner"},
+      {"fouls",
+       [](nlohmann::json& s) {
+         s["rack"]["fouls"] = {0, 1000000};
+       },
+       "fouls"},
+      {"score",
+       [](nlohmann::json& s) {
+         s["rack"]["score"] = {500, 0};
+       },
+       "score"},
+      {"on_table", [](nlohmann::json& s) { s["rack"]["on_table"] = nlohmann::json::array(); },
+       "on the table"},
+  };
+  std::string why;
+  for (const auto& c : cases) {
+    StateMessage bad{good.index, nlohmann::json::parse(good.state.dump())};
+    c.tamper(bad.state);
+    EXPECT_FALSE(t.joiner.healState(bad, t.joiner_match, why).has_value()) << c.what;
+    EXPECT_NE(why.find(c.why), std::string::npos) << c.what << ": " << why;
+  }
+  EXPECT_TRUE(t.joiner.healState(good, t.joiner_match, why).has_value()) << why;
 }
 
 TEST(Lockstep, ARejoinAsksForTheLastTurnsHashAgain) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "net/connection.hpp"
+#include "net/handshake.hpp"
 #include "nineball/match.hpp"
 
 namespace nineball::net {
@@ -67,12 +68,14 @@ std::vector<Message> oneOfEach() {
   w.turns = {wireTurn(aShot(1.0, 6.0), HumanSeat{}, setup.game),
              wireTurn(placed, ComputerSeat{ai::Level::Beginner}, setup.game)};
   w.hashes = {0x0123456789abcdefull, 0xfedcba9876543210ull};
+  w.token = "0123456789abcdef0123456789abcdef";
   TurnInput decision;
   decision.kind = TurnInput::Kind::Decision;
   decision.shoot = false;
   Aim placing{1.25, 3.0, {0.5, -0.5}, 0.2, Vec2{-0.5, 0.25}};
   Aim plain{-2.0, 0.0, {0.0, 0.0}, 0.0, std::nullopt};
-  return {Hello{kProtocolVersion, buildId(), "Ann"},
+  return {helloFrom("Ann"),
+          helloFrom("Bo", "7KQ4-ZP2M", std::string(32, 'e'), ComputerSeat{ai::Level::Master}),
           w,
           Refuse{"another build"},
           TurnMessage{4, wireTurn(aShot(-2.5, 1.5), HumanSeat{}, setup.game)},
@@ -141,7 +144,7 @@ TEST(Protocol, AMissingOrExtraKeyIsRefusedByName) {
 }
 
 TEST(Protocol, AValueOfTheWrongTypeIsRefusedByName) {
-  const json hello = toJson(Hello{1, "b", "n"});
+  const json hello = toJson(helloFrom("n"));
   for (const char* key : {"protocol", "build", "name"}) {
     for (const json& wrong : {json(nullptr), json::array(), json::object(), json(true)}) {
       json j = hello;
@@ -195,7 +198,7 @@ TEST(Protocol, AnAimOutOfRangeIsRefusedByField) {
 }
 
 TEST(Protocol, ARaceOutOfRangeInAWelcomeIsRefused) {
-  json w = toJson(std::get<Welcome>(oneOfEach()[1]));
+  json w = toJson(std::get<Welcome>(oneOfEach()[2]));
   for (const auto& [key, value] : std::vector<std::pair<const char*, json>>{
            {"best_of", 0}, {"best_of", 100}, {"rack", -1}, {"racks_won", {1}}}) {
     json j = w;
@@ -233,7 +236,10 @@ TEST(Protocol, NamesAreCleanedOfControlCharactersAndCutToWholeCharacters) {
   const auto hello = std::get<Hello>(readBack({{"type", "hello"},
                                                {"protocol", 1},
                                                {"build", "b"},
-                                               {"name", "\x1b[2JEve" + std::string(30, '!')}}));
+                                               {"name", "\x1b[2JEve" + std::string(30, '!')},
+                                               {"code", "C"},
+                                               {"token", ""},
+                                               {"player", "human"}}));
   EXPECT_EQ(hello.name, "[2JEve" + std::string(kMostNameChars - 6, '!'));
 }
 
@@ -379,6 +385,67 @@ TEST(Protocol, MessageTextNestedTooDeepIsRefusedBeforeParsing) {
     EXPECT_FALSE(parseMessage(bad, why).has_value()) << bad;
     EXPECT_FALSE(why.empty());
   }
+}
+
+TEST(Protocol, PeerTextIsCleanedOfControlCharactersAndCutToTheLimit) {
+  EXPECT_EQ(cleanText("\x1b[31mred\r\nnineball online: forged\x07"),
+            "[31mrednineball online: forged");
+  EXPECT_EQ(cleanText("caf\xc3\xa9 \xc2\x9b"
+                      "2J"),
+            "caf\xc3\xa9 2J");  // a C1 CSI goes too
+  const std::string long_text = std::string(199, 'x') + "\xc3\xa9";
+  EXPECT_EQ(cleanText(long_text), std::string(199, 'x')) << "cut at a whole character";
+  EXPECT_EQ(cleanText(std::string(500, 'y')).size(), kMostText);
+  // A refusal too long to read is cut when sent, never dropped.
+  const json refusal = toJson(Refuse{std::string(300, 'r')});
+  std::string why;
+  const auto back = readMessage(refusal, why);
+  ASSERT_TRUE(back.has_value()) << why;
+  EXPECT_EQ(std::get<Refuse>(*back).reason, std::string(kMostText, 'r'));
+  // A received reason is cleaned too.
+  const auto bye = readMessage({{"type", "bye"},
+                                {"reason",
+                                 "a\x1b]0;t\x07"
+                                 "b"},
+                                {"finished", false}},
+                               why);
+  ASSERT_TRUE(bye.has_value()) << why;
+  EXPECT_EQ(std::get<Bye>(*bye).reason, "a]0;tb");
+}
+
+TEST(Protocol, JoinCodesAndSeatTokensHaveTheirShape) {
+  for (int i = 0; i < 50; ++i) {
+    const std::string code = makeJoinCode();
+    ASSERT_EQ(code.size(), 9u) << code;
+    EXPECT_EQ(code[4], '-');
+    EXPECT_EQ(code.find_first_of("01OIL"), std::string::npos) << code;
+    EXPECT_TRUE(codeMatches(code, code));
+    EXPECT_TRUE(isSeatToken(makeSeatToken()));
+  }
+  EXPECT_NE(makeJoinCode(), makeJoinCode());
+  EXPECT_NE(makeSeatToken(), makeSeatToken());
+  EXPECT_TRUE(codeMatches("7kq4 zp2m", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("7KQ4-ZP2N", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("", "7KQ4-ZP2M"));
+  EXPECT_FALSE(codeMatches("", ""));
+  EXPECT_FALSE(tokenMatches("", ""));
+  EXPECT_FALSE(isSeatToken(std::string(32, 'A')));
+  EXPECT_FALSE(isSeatToken(std::string(31, 'a')));
+  // A hello's token is empty or 32 hex digits; a welcome's is never empty.
+  json hello = toJson(helloFrom("Bo", "X"));
+  std::string why;
+  hello["token"] = "abc";
+  EXPECT_FALSE(readMessage(hello, why).has_value());
+  EXPECT_NE(why.find("token"), std::string::npos) << why;
+  hello["token"] = "";
+  hello["code"] = std::string(kMostCodeChars + 1, 'c');
+  EXPECT_FALSE(readMessage(hello, why).has_value());
+  EXPECT_NE(why.find("code"), std::string::npos) << why;
+  json welcome = toJson(oneOfEach()[2]);
+  ASSERT_EQ(welcome["type"], "welcome");
+  welcome["token"] = "";
+  EXPECT_FALSE(readMessage(welcome, why).has_value());
+  EXPECT_NE(why.find("token"), std::string::npos) << why;
 }
 
 }  // namespace

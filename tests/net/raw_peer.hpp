@@ -3,6 +3,7 @@
 #pragma once
 
 #include <SFML/Network/IpAddress.hpp>
+#include <SFML/Network/TcpListener.hpp>
 #include <SFML/Network/TcpSocket.hpp>
 #include <algorithm>
 #include <chrono>
@@ -45,6 +46,13 @@ class RawPeer {
                         sf::seconds(static_cast<float>(timeout_s))) != sf::Socket::Done) {
       return false;
     }
+    socket_.setBlocking(false);
+    return true;
+  }
+
+  /// Takes the next connection waiting on `listener` (a fake host's side of a link).
+  bool acceptFrom(sf::TcpListener& listener) {
+    if (listener.accept(socket_) != sf::Socket::Done) return false;
     socket_.setBlocking(false);
     return true;
   }

@@ -275,5 +275,19 @@ TEST(Menu, TheAddressIsTypedRememberedAndJoined) {
   EXPECT_FALSE(bad.rows()[rowNamed(bad, "Join")].enabled);
 }
 
+// The Join screen has a field for the host's join code: letters, digits and dashes only.
+TEST(Menu, TheJoinScreenTakesTheHostsJoinCode) {
+  MenuModel m(Settings{}, std::nullopt);
+  selectRow(m, "Play online: host / join");
+  m.key(MenuKey::Enter);
+  selectRow(m, "Join code");
+  m.key(MenuKey::Enter);
+  ASSERT_TRUE(m.editing());
+  for (char32_t c : std::u32string(U"7kq4 -ZP2M\u00e9!")) m.text(c);
+  m.key(MenuKey::Enter);
+  EXPECT_EQ(m.settings().join_code, "7kq4-ZP2M");
+  EXPECT_EQ(m.rows()[rowNamed(m, "Join code")].value, "7kq4-ZP2M");
+}
+
 }  // namespace
 }  // namespace nineball::window

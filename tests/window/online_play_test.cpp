@@ -20,6 +20,7 @@ namespace {
 using nineball::testing::freePort;
 
 constexpr double kFrame = 1.0 / 60.0;
+constexpr char kCode[] = "7KQ4-ZP2M";
 
 double clockNow() {
   static sf::Clock clock;
@@ -91,6 +92,7 @@ class OnlineHost : public ::testing::Test {
     config.side = net::Side::Host;
     config.address.port = port_;
     config.name = "Ann";
+    config.code = kCode;
     config.match = onlineMatchOf(nineBall());
     config.scripted = true;
     config.script = {shot(0.4, 9.0), shot(10.0, 3.0)};
@@ -105,7 +107,7 @@ class OnlineHost : public ::testing::Test {
 
   // The hello, and the welcome back.
   net::Welcome join() {
-    peer_.send(net::helloFrom("Bob"));
+    peer_.send(net::helloFrom("Bob", kCode));
     std::optional<net::Welcome> welcome;
     EXPECT_TRUE(runUntil(*play_, session_, peer_,
                          [&] { return (welcome = peer_.take<net::Welcome>()).has_value(); }));
@@ -217,7 +219,7 @@ TEST_F(OnlineHost, AHashOfATurnNotPlayedIsRefused) {
 }
 
 TEST_F(OnlineHost, AnotherBuildIsRefusedByNameAndTheHostWaitsOn) {
-  net::Hello hello = net::helloFrom("Eve");
+  net::Hello hello = net::helloFrom("Eve", kCode);
   hello.build = "nineball 0.0.1 (elsewhere)";
   peer_.send(hello);
   std::optional<net::Refuse> refused;
@@ -251,6 +253,80 @@ TEST_F(OnlineHost, ALostLinkPausesTheGameAndCountsDown) {
   EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Lost);
 }
 
+// Issue 46: the window's host lets in only a friend with the code, and nobody else into a
+// taken seat; it shows the code beside its address.
+TEST_F(OnlineHost, AStrangerWithoutTheCodeIsRefusedAndTheHostWaitsOn) {
+  EXPECT_NE(play_->banner(session_).find("--code 7KQ4-ZP2M"), std::string::npos)
+      << play_->banner(session_);
+  peer_.send(net::helloFrom("Eve", "AAAA-BBBB"));
+  std::optional<net::Refuse> refused;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_,
+                       [&] { return (refused = peer_.take<net::Refuse>()).has_value(); }));
+  EXPECT_NE(refused->reason.find("wrong join code"), std::string::npos) << refused->reason;
+  EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Waiting);
+}
+
+TEST_F(OnlineHost, AnIntruderWithTheCodeCannotTakeTheSeat) {
+  const net::Welcome welcome = join();
+  EXPECT_TRUE(net::isSeatToken(welcome.token));
+  FakePeer intruder;
+  std::string why;
+  auto socket = net::connectTo({"127.0.0.1", port_}, 5.0, why);
+  ASSERT_TRUE(socket) << why;
+  intruder.link = std::make_unique<net::Connection>(std::move(socket), clockNow());
+  intruder.send(net::helloFrom("Mallory", kCode));
+  std::optional<net::Refuse> refused;
+  ASSERT_TRUE(runUntil(*play_, session_, peer_, [&] {
+    intruder.pump();
+    return (refused = intruder.take<net::Refuse>()).has_value();
+  }));
+  EXPECT_NE(refused->reason.find("the seat is taken"), std::string::npos) << refused->reason;
+  EXPECT_EQ(play_->stage(), OnlinePlay::Stage::Playing);
+  EXPECT_EQ(play_->peerName(), "Bob");
+}
+
+TEST_F(OnlineHost, AFriendWhoLeftAndComesBackIsToldTheGameIsOver) {
+  join();
+  peer_.send(net::Bye{"dinner", false});
+  ASSERT_TRUE(
+      runUntil(*play_, session_, peer_, [&] { return play_->stage() == OnlinePlay::Stage::Over; }));
+  FakePeer back;
+  std::string why;
+  auto socket = net::connectTo({"127.0.0.1", port_}, 5.0, why);
+  ASSERT_TRUE(socket) << why;
+  back.link = std::make_unique<net::Connection>(std::move(socket), clockNow());
+  back.send(net::helloFrom("Bob", kCode));
+  std::optional<net::Refuse> refused;
+  ASSERT_TRUE(runUntil(
+      *play_, session_, peer_,
+      [&] {
+        back.pump();
+        return (refused = back.take<net::Refuse>()).has_value();
+      },
+      5.0))
+      << "the restarted joiner heard nothing";
+  EXPECT_NE(refused->reason.find("the game is over"), std::string::npos) << refused->reason;
+}
+
+TEST_F(OnlineHost, AFinishedByeBeforeTheRackIsOverIsAQuit) {
+  join();
+  // The host breaks: its move, not the friend's; "finished" cannot be true here.
+  peer_.send(net::Bye{"played out", true});
+  ASSERT_TRUE(
+      runUntil(*play_, session_, peer_, [&] { return play_->stage() == OnlinePlay::Stage::Over; }));
+  EXPECT_NE(play_->why().find("left the game"), std::string::npos) << play_->why();
+}
+
+// Two players of one name ("Player 1" on both sides, say) are told apart by their seats.
+TEST_F(OnlineHost, AFriendOfTheHostsNameIsToldApartBySeat) {
+  peer_.send(net::helloFrom("Ann", kCode));
+  ASSERT_TRUE(
+      runUntil(*play_, session_, peer_, [&] { return peer_.take<net::Welcome>().has_value(); }));
+  EXPECT_EQ(play_->peerName(), "Ann (B)");
+  EXPECT_EQ(session_.seatName(0), "Ann");
+  EXPECT_EQ(session_.seatName(1), "Ann (B)");
+}
+
 TEST(OnlineJoiner, AHostWhoseMatchIsNonsenseIsRefused) {
   const unsigned short port = freePort();
   ASSERT_NE(port, 0);
@@ -276,6 +352,7 @@ TEST(OnlineJoiner, AHostWhoseMatchIsNonsenseIsRefused) {
   w.protocol = net::kProtocolVersion;
   w.build = net::buildId();
   w.name = "Mallory";
+  w.token = net::makeSeatToken();
   w.match = {{"game", "nine-ball"}, {"seed", 3}, {"table", {{"length", -4}}}};
   host.send(w);
   ASSERT_TRUE(

@@ -98,16 +98,17 @@ TEST(OnlineWindow, TwoWindowsPlayOneRackAndShowTheSameTable) {
   std::remove(join_png.c_str());
 
   auto host = std::async(std::launch::async, [&] {
-    return runGameUnderXvfb("--host " + std::to_string(port) + " --name Ann --script '" +
-                                host_script + "' --screenshot '" + host_png + "'",
+    return runGameUnderXvfb("--host " + std::to_string(port) +
+                                " --code TEST-CODE --name Ann --script '" + host_script +
+                                "' --screenshot '" + host_png + "'",
                             kWidth, kHeight);
   });
   // The host's display and port first; the joiner retries anyway while nobody answers.
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
-  const XvfbRun join =
-      runGameUnderXvfb("--join 127.0.0.1:" + std::to_string(port) + " --name Bob --script '" +
-                           join_script + "' --screenshot '" + join_png + "'",
-                       kWidth, kHeight);
+  const XvfbRun join = runGameUnderXvfb("--join 127.0.0.1:" + std::to_string(port) +
+                                            " --code TEST-CODE --name Bob --script '" +
+                                            join_script + "' --screenshot '" + join_png + "'",
+                                        kWidth, kHeight);
   const XvfbRun hosted = host.get();
   ASSERT_EQ(join.status, 0) << join.err;
   ASSERT_EQ(hosted.status, 0) << hosted.err;
@@ -146,12 +147,13 @@ TEST(OnlineWindow, AJoinerKilledMidRackRejoinsAndTheRackEndsInStep) {
   write(host_script, kHostScript);
   write(join_script, kJoinScript);
   const std::string join_args = "--join 127.0.0.1:" + std::to_string(port) +
-                                " --name Bob --script '" + join_script + "' --screenshot '" +
-                                join_png + "'";
+                                " --code TEST-CODE --name Bob --script '" + join_script +
+                                "' --screenshot '" + join_png + "'";
 
   auto host = std::async(std::launch::async, [&] {
-    return runGameUnderXvfb("--host " + std::to_string(port) + " --name Ann --script '" +
-                                host_script + "' --screenshot '" + host_png + "'",
+    return runGameUnderXvfb("--host " + std::to_string(port) +
+                                " --code TEST-CODE --name Ann --script '" + host_script +
+                                "' --screenshot '" + host_png + "'",
                             kWidth, kHeight);
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
@@ -187,9 +189,10 @@ TEST(OnlineWindow, AJoinerNobodyAnswersFailsWithAMessage) {
   ASSERT_NE(port, 0);
   const std::string script = tempPath("lonely.json"), png = tempPath("lonely.png");
   write(script, kJoinScript);
-  const XvfbRun r = runGameUnderXvfb("--join 127.0.0.1:" + std::to_string(port) + " --script '" +
-                                         script + "' --screenshot '" + png + "'",
-                                     kWidth, kHeight, "NINEBALL_ONLINE_WAIT=3");
+  const XvfbRun r =
+      runGameUnderXvfb("--join 127.0.0.1:" + std::to_string(port) + " --code TEST-CODE --script '" +
+                           script + "' --screenshot '" + png + "'",
+                       kWidth, kHeight, "NINEBALL_ONLINE_WAIT=3");
   EXPECT_NE(r.status, 0);  // 1 (xvfb-run may say 5 when its own clean-up fails)
   EXPECT_NE(r.err.find("No host answered at 127.0.0.1:" + std::to_string(port)), std::string::npos)
       << r.err;
