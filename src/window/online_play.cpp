@@ -184,20 +184,25 @@ void OnlinePlay::connectionStep(GameSession& session) {
 
 // The host hears everyone who connects through the gate, in every stage: a friend with the
 // code takes the free seat, the seated player with its token takes it back (its old link
-// dead, or its window restarted), anyone else is refused by name. A rejoin is welcomed
-// between shots only: the welcome then holds every turn played.
+// dead, or its window restarted), anyone else is refused by name, silent ones dropped, while
+// a shot rolls too. The one let in is welcomed between shots only: the welcome then holds every
+// turn played (a later one let in meanwhile, the same player again, takes its place).
 void OnlinePlay::hostStep(const GameSession& session) {
-  if (!gate_ || session.phase() == Phase::Rolling) return;
-  auto admitted = gate_->poll(*listener_, now());
-  if (!admitted) return;
+  if (!gate_) return;
+  if (auto admitted = gate_->poll(*listener_, now())) {
+    if (admitted_) admitted_->link->close("the other player connected again");
+    admitted_ = std::move(admitted);
+  }
+  if (!admitted_ || session.phase() == Phase::Rolling) return;
   if (link_) {
     link_->close("the other player connected again");
     link_.reset();
   }
-  linkUp(std::move(admitted->link));
+  linkUp(std::move(admitted_->link));
   // Handled with the other messages, after the turn that just ended is recorded: the welcome
   // then holds it (and the hash of it that follows is of a turn the joiner has).
-  inbox_.push_back(admitted->hello);
+  inbox_.push_back(admitted_->hello);
+  admitted_.reset();
 }
 
 void OnlinePlay::joinerConnect() {

@@ -144,7 +144,8 @@ class OnlinePlay : public RemoteControl {
   std::string why_;
   bool failed_ = false;
   std::unique_ptr<net::Listener> listener_;
-  std::unique_ptr<net::HostGate> gate_;  // host: who may sit down
+  std::unique_ptr<net::HostGate> gate_;    // host: who may sit down
+  std::optional<net::Admitted> admitted_;  // host: heard while a shot rolled, welcomed after it
   std::unique_ptr<net::Connection> link_;
   std::future<ConnectAttempt> connecting_;
   double next_attempt_ = 0.0;

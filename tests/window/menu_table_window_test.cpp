@@ -10,7 +10,8 @@
 #include <filesystem>
 #include <string>
 
-#include "window/xvfb_run.hpp"
+#include "support/picture_diff.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace nineball::window {
 namespace {
@@ -53,19 +54,6 @@ class MenuTableWindow : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-// The share of pixels that differ clearly between two pictures of one size.
-double differing(const sf::Image& a, const sf::Image& b) {
-  if (a.getSize() != b.getSize() || a.getSize().x == 0) return 1.0;
-  long n = 0;
-  for (unsigned y = 0; y < a.getSize().y; ++y) {
-    for (unsigned x = 0; x < a.getSize().x; ++x) {
-      const sf::Color p = a.getPixel(x, y), q = b.getPixel(x, y);
-      if (std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) > 30) ++n;
-    }
-  }
-  return static_cast<double>(n) / (a.getSize().x * a.getSize().y);
-}
-
 // The menu's keys that turn the Game row `steps` to the right and play (two players, so the
 // computer's level row is skipped: Play, Practice, Opponent, Game).
 std::string pickGame(int steps) {
@@ -83,7 +71,7 @@ TEST_F(MenuTableWindow, EachGamePickedInTheMenuIsDrawnOnItsOwnTable) {
     const sf::Image direct = shoot(std::string("direct-") + kGames[g],
                                    "--game " + std::string(kGames[g]) + " " + common, "");
     // The start menu's own picture is not the game: the keys did pick and play.
-    EXPECT_LT(differing(picked, direct), 0.002);
+    EXPECT_LT(nineball::testing::differingShare(picked, direct), 0.002);
   }
 }
 
@@ -92,7 +80,7 @@ TEST_F(MenuTableWindow, APoolGamePickedAfterSnookerIsDrawnOnThePoolTable) {
   // From snooker (the last game) one step to the right is nine-ball, one more eight-ball.
   const sf::Image picked = shoot("menu-eight", "--menu --game snooker " + common, pickGame(2));
   const sf::Image direct = shoot("direct-eight", "--game eight-ball " + common, "");
-  EXPECT_LT(differing(picked, direct), 0.002);
+  EXPECT_LT(nineball::testing::differingShare(picked, direct), 0.002);
 }
 
 TEST_F(MenuTableWindow, SnookerPickedInTheMenuBreaksOffOnTheSnookerTable) {
@@ -100,7 +88,7 @@ TEST_F(MenuTableWindow, SnookerPickedInTheMenuBreaksOffOnTheSnookerTable) {
   const std::string common = "--opponent human --seed 5 --frames 90";
   const sf::Image picked = shoot("menu-break", "--menu --game nine-ball " + common, pickGame(4));
   const sf::Image direct = shoot("direct-break", "--game snooker " + common, "");
-  EXPECT_LT(differing(picked, direct), 0.002);
+  EXPECT_LT(nineball::testing::differingShare(picked, direct), 0.002);
 }
 
 TEST_F(MenuTableWindow, KeysThatPickNothingEndTheRunWithoutHanging) {

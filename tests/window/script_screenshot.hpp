@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "window/xvfb_run.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace nineball::testing {
 

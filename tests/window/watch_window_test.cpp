@@ -9,25 +9,14 @@
 #include <fstream>
 #include <string>
 
-#include "window/xvfb_run.hpp"
+#include "support/picture_diff.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace nineball::window {
 namespace {
 
 constexpr unsigned kWidth = 960;
 constexpr unsigned kHeight = 600;
-
-double differing(const sf::Image& a, const sf::Image& b) {
-  if (a.getSize() != b.getSize() || a.getSize().x == 0) return 1.0;
-  long n = 0;
-  for (unsigned y = 0; y < a.getSize().y; ++y) {
-    for (unsigned x = 0; x < a.getSize().x; ++x) {
-      const sf::Color p = a.getPixel(x, y), q = b.getPixel(x, y);
-      if (std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) > 30) ++n;
-    }
-  }
-  return static_cast<double>(n) / (a.getSize().x * a.getSize().y);
-}
 
 sf::Image shoot(const std::string& stem, const std::string& args) {
   const std::string png = stem + ".png";
@@ -57,9 +46,9 @@ TEST(WatchWindow, TheScriptsTurnsPlayOnScreenAndEndWhereTheScriptEnds) {
   std::remove((stem + ".json").c_str());
   // The balls where the script leaves them (the numbers turned as they rolled, and the gauge at
   // the last turn's power, differ a little).
-  EXPECT_LT(differing(watched, at_once), 0.01);
+  EXPECT_LT(nineball::testing::differingShare(watched, at_once), 0.01);
   // Two frames in, nothing is played yet: the rack.
-  EXPECT_GT(differing(first, at_once), 0.02);
+  EXPECT_GT(nineball::testing::differingShare(first, at_once), 0.02);
 }
 
 }  // namespace
