@@ -21,8 +21,8 @@
 #include "render/cue_stick_shape.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/game_session.hpp"
-#include "xvfb_run.hpp"
 
 using nineball::BallState;
 using nineball::kCueBall;

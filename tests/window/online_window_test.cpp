@@ -17,7 +17,7 @@
 
 #include "net/free_port.hpp"
 #include "nineball/colours.hpp"
-#include "xvfb_run.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace {
 

@@ -15,8 +15,8 @@
 #include "render/ball_painter.hpp"
 #include "render/ball_spin.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/game_session.hpp"
-#include "xvfb_run.hpp"
 
 namespace nineball {
 namespace {
