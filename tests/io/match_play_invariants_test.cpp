@@ -120,8 +120,11 @@ TEST(MatchInvariants, AThreeCushionGameBetweenTwoComputersCountsPointsAndInnings
                    EXPECT_EQ(after[shooter]["innings"].get<int>(),
                              before[shooter]["innings"].get<int>() + new_inning)
                        << "turn " << i;
+                   // A point keeps the shooter at the table, but the one that reaches the
+                   // distance hands the other player the equal inning.
+                   const bool reached = pointsOf(after, shooter) == doc["points"].get<int>();
                    if (t["winner"].is_null()) {
-                     EXPECT_EQ(t["next"], point ? shooter : them) << "turn " << i;
+                     EXPECT_EQ(t["next"], point && !reached ? shooter : them) << "turn " << i;
                    }
                    for (const std::string p : {"A", "B"}) {
                      const int innings = after[p]["innings"];
