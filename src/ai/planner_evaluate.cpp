@@ -18,7 +18,7 @@ namespace {
 
 // A planned shot that still rolls after this long (s) is cut short: its outcome is as good as
 // known, and a pathological one must not stall the search.
-constexpr double kMaxShotTime = 40.0;
+constexpr double kPlanningHorizon = 40.0;
 
 constexpr double kLeaveBase = 0.45;
 constexpr double kLeaveSpread = 0.4;
@@ -74,7 +74,7 @@ Evaluator::Evaluator(const PlanInput& in, const TableGeometry& table, double jud
       group_sense_(group_sense),
       legal_first_(in.rack.legalFirstBalls()) {
   keepFreedHeap();
-  step_.max_time = std::min(step_.max_time, kMaxShotTime);
+  step_.max_time = std::min(step_.max_time, kPlanningHorizon);
   // The exact engine is also the faster one; it agrees with the Box2D engine to the suite's
   // 1 mm, far inside the noise the planner judges its shots under.
   step_.engine = EngineKind::named("reference");

@@ -22,7 +22,6 @@ namespace {
 // Catch-up in one frame, s of play: past this a slow frame slows the game down.
 constexpr double kMaxCatchUp = 0.25;
 // A shot still rolling after this long (s, simulated) is run to rest at once.
-constexpr double kMaxShotTime = 120.0;
 // The picture's clock runs on this long (s) after the balls stop: a ball that dropped as the
 // shot ended finishes sinking into its pocket (the balls at rest turn no further).
 constexpr double kAfterRest = 1.0;
@@ -419,7 +418,7 @@ std::vector<audio::Impact> GameSession::advance(double frame_seconds) {
     after_rest_ = std::min(kAfterRest, after_rest_ + seconds);
     return impacts;
   }
-  if (shot_.take(*match_, clock_.advance(seconds), kMaxShotTime, impacts)) finishShot();
+  if (shot_.take(*match_, clock_.advance(seconds), impacts)) finishShot();
   return impacts;
 }
 

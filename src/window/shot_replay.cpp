@@ -6,8 +6,6 @@
 namespace nineball::window {
 namespace {
 
-// As the live game: a shot still rolling after this long (s, simulated) is over.
-constexpr double kMaxShotTime = 120.0;
 // Frames longer than this (s of play) are not caught up in one go.
 constexpr double kMaxCatchUp = 0.25;
 
@@ -44,7 +42,7 @@ ShotReplay::~ShotReplay() = default;
 std::vector<audio::Impact> ShotReplay::advance(double seconds) {
   std::vector<audio::Impact> impacts;
   if (finished_) return impacts;
-  if (steps_.take(*match_, clock_.advance(seconds * rate_), kMaxShotTime, impacts)) {
+  if (steps_.take(*match_, clock_.advance(seconds * rate_), impacts)) {
     // A shot cut short for the eye still ends where it ended: run it out, as the game did.
     match_->finishShot();
     finished_ = true;

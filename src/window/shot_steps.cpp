@@ -8,8 +8,7 @@ void ShotSteps::begin(const Match& match) {
   start = previous_time = current_time = match.world().time();
 }
 
-bool ShotSteps::take(Match& match, int steps, double max_time,
-                     std::vector<audio::Impact>& impacts) {
+bool ShotSteps::take(Match& match, int steps, std::vector<audio::Impact>& impacts) {
   const Engine& world = match.world();
   for (int i = 0; i < steps; ++i) {
     previous = current;
@@ -26,7 +25,7 @@ bool ShotSteps::take(Match& match, int steps, double max_time,
       impacts.insert(impacts.end(), more.begin(), more.end());
       events_heard = events.size();
     }
-    if (over || world.time() - start > max_time) return true;
+    if (over) return true;
   }
   return false;
 }

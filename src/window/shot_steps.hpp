@@ -21,8 +21,9 @@ struct ShotSteps {
   /// Starts following the shot `match` has just begun.
   void begin(const Match& match);
   /// Takes up to `steps` fixed steps, adding the sounds of new events to `impacts`; true (and
-  /// no more steps) once every ball rests or the shot has run for `max_time` s.
-  bool take(Match& match, int steps, double max_time, std::vector<audio::Impact>& impacts);
+  /// no more steps) once every ball rests or the shot has run as long as the match lets a shot
+  /// run (its physics' max_time: the same cut as headless).
+  bool take(Match& match, int steps, std::vector<audio::Impact>& impacts);
   /// The balls a frame `alpha` (0 to 1) of a step past the last state should draw: centres
   /// on the chord, velocities and spins in between (the cloth changes them at a steady rate
   /// within a phase, so a frame between two events has the physics' own).
