@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <future>
 #include <memory>
@@ -33,10 +34,14 @@ inline io::MatchScript scriptOf(const std::string& text) {
 }
 
 // A rack played in a thread; its result comes back through a future, waited on with a bound.
+// A rack still on when the test is done is asked to end (as Ctrl-C asks it) and waited for: a
+// thread left running past the test would outlive the logger it writes to, and the sanitizers
+// then hang the program's exit.
 class RackThread {
  public:
   explicit RackThread(OnlineRackOptions o)
       : options_(std::make_shared<OnlineRackOptions>(std::move(o))) {
+    if (options_->quit == nullptr) options_->quit = &own_quit_;
     auto promise = std::make_shared<std::promise<OnlineRackResult>>();
     future_ = promise->get_future();
     thread_ = std::thread([options = options_, promise] {
@@ -47,25 +52,36 @@ class RackThread {
       }
     });
   }
-  ~RackThread() {
-    if (thread_.joinable()) thread_.detach();
-  }
+  ~RackThread() { stop(); }
   RackThread(const RackThread&) = delete;
   RackThread& operator=(const RackThread&) = delete;
 
   bool finished() const {
     return future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
   }
-  // The result, or nothing when the rack is still on after `seconds` (the thread is then left
-  // to its own limits, detached, so the test ends).
+  // The result, or nothing when the rack is still on after `seconds` (it is then stopped).
   std::optional<OnlineRackResult> result(double seconds) {
     if (future_.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready) {
-      thread_.detach();
+      stop();
       return std::nullopt;
     }
     thread_.join();
     return future_.get();
   }
+
+ private:
+  void stop() {
+    if (!thread_.joinable()) return;
+    // The flag is the test's own or this one's, never a const object: it may be raised here.
+    const_cast<std::atomic<bool>*>(options_->quit)->store(true);
+    if (future_.wait_for(std::chrono::seconds(30)) == std::future_status::ready) {
+      thread_.join();
+    } else {
+      thread_.detach();  // a rack deaf to the flag: left to its own limits
+    }
+  }
+
+  std::atomic<bool> own_quit_{false};
 
  private:
   std::shared_ptr<OnlineRackOptions> options_;
