@@ -38,8 +38,10 @@ std::optional<std::string> mismatch(int protocol, const std::string& build) {
            std::to_string(kProtocolVersion);
   }
   if (build != buildId()) {
-    return "the other side runs " + cleanText(build, 80) + ", this one " + buildId() +
-           ": both players need the same build (its physics could differ)";
+    // The reason first: a refusal is cut to what the other side reads, and long build names
+    // (a sanitizer build's) would push it out.
+    return "both players need the same build (its physics could differ): the other side runs " +
+           cleanText(build, 80) + ", this one " + buildId();
   }
   return std::nullopt;
 }
