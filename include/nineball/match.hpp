@@ -37,6 +37,10 @@ struct MatchSetup {
   std::optional<std::vector<BallState>> balls;
   /// The distance of a game played to points (GameDef::default_points; 0 for pool's games).
   int points = 0;
+  /// Who plays the rack's first stroke (the break, the break-off): the later racks of a race
+  /// are opened by the players in turn or by the last rack's winner. Carom's rules know only
+  /// A as the opener (A plays the white).
+  rules::Player opener = rules::Player::A;
 
   /// Plays `g` by its default rules, with its equipment (GameDef::physics), on the first of the
   /// tables it is played on (GameDef::tables), to its default distance.

@@ -15,6 +15,7 @@
 #include "nineball/params.hpp"
 #include "nineball/planner.hpp"
 #include "nineball/pocket_id.hpp"
+#include "nineball/race.hpp"
 #include "nineball/random.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/scenes.hpp"

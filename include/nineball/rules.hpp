@@ -251,6 +251,8 @@ class Rack {
   /// one included), the points of the inning being played and each player's best inning.
   int targetPoints() const { return s_.target; }
   void setTargetPoints(int points) { s_.target = points; }
+  /// Who plays the first stroke: set before it.
+  void setOpener(Player p);
   int innings(Player p) const { return s_.innings[p == Player::A ? 0 : 1]; }
   int currentRun() const { return s_.run; }
   int highRun(Player p) const { return s_.high_run[p == Player::A ? 0 : 1]; }

@@ -55,11 +55,33 @@ void describeComputerTurn(const ComputerTurn& c, ordered_json& turn) {
   if (c.input.cue) turn["cue"] = {c.input.cue->x, c.input.cue->y};
 }
 
+// "race_to" N racks (pool) or frames (snooker), "breaks" "alternate" or "winner".
+Race parseRace(const json& doc, rules::Game game) {
+  Race race;
+  if (const json* p = optional(doc, "race_to")) {
+    if (gameDef(game).default_points > 0) {
+      refuse("race_to", std::string(rules::gameName(game)) +
+                            " is one game played to a number of points (\"points\"), not a race of "
+                            "racks");
+    }
+    race.race_to = integer(*p, "race_to", 1, kLongestRace);
+  }
+  if (const json* p = optional(doc, "breaks")) {
+    if (race.race_to == 0) refuse("breaks", "who breaks the next rack is for a race (\"race_to\")");
+    const std::string word = text(*p, "breaks");
+    const auto order = breakOrderFromName(word.c_str());
+    if (!order)
+      refuse("breaks", "unknown order " + quote(word) + " (expected alternate or winner)");
+    race.breaks = *order;
+  }
+  return race;
+}
+
 MatchScript parseDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
-  allowOnly(
-      doc, "",
-      {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns", "points"});
+  allowOnly(doc, "",
+            {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns",
+             "points", "race_to", "breaks"});
   MatchScript script;
   MatchSetup& setup = script.setup;
   setup.setGame(gameField(doc));
@@ -70,6 +92,7 @@ MatchScript parseDocument(const json& doc) {
     }
     setup.points = integer(*p, "points", 1, kMostPoints);
   }
+  script.race = parseRace(doc, setup.game);
   if (const json* p = optional(doc, "players")) script.players = parsePlayers(*p);
   const bool computer_plays = isComputer(script.players[0]) || isComputer(script.players[1]);
   setup.rules = rulesField(doc, setup.game);

@@ -10,13 +10,15 @@
 #include "io/parse_error.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/race.hpp"
 #include "nineball/seat.hpp"
 
 namespace nineball::io {
 
 /// A match script: how the rack starts, who plays, and the turns of the human players.
 struct MatchScript {
-  MatchSetup setup;
+  MatchSetup setup;  ///< the first rack's
+  Race race;         ///< race_to 0: the script plays one rack
   std::array<Seat, 2> players{};  ///< A, B; both human unless "players" says otherwise
   std::vector<TurnInput> turns;
 };
@@ -29,7 +31,8 @@ struct ComputerTurn {
 
 using MatchScriptResult = std::variant<MatchScript, ParseError>;
 
-/// Parses `{"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns"}`;
+/// Parses `{"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns",
+/// "points", "race_to", "breaks"}`;
 /// a turn may carry "call": {"ball", "pocket"};
 /// refusals name the field ("turns[2].speed: ...", "players.A: ..."). "turns" may be left out
 /// when a player is the computer.

@@ -86,6 +86,9 @@ Match::Match(const MatchSetup& setup)
       rack_(setup.game, setup.rules, {}, !setup.balls) {
   const std::string table_problem = tableProblem(gameDef(setup.game), setup.table);
   if (!table_problem.empty()) throw IllegalAction(table_problem);
+  if (setup.opener != rules::Player::A && gameDef(setup.game).family == GameFamily::Carom) {
+    throw IllegalAction(std::string(gameDef(setup.game).name) + " is opened by A, who plays the white");
+  }
   std::vector<BallState> balls;
   if (setup.balls) {
     balls = *setup.balls;
@@ -107,6 +110,7 @@ Match::Match(const MatchSetup& setup)
   }
   rack_ = rules::Rack(setup.game, setup.rules, objectBalls(balls), !setup.balls);
   rack_.setTargetPoints(setup.points);
+  rack_.setOpener(setup.opener);
 }
 
 Match::~Match() = default;

@@ -19,6 +19,10 @@ Rack::Rack(const RuleBook& book, std::vector<int> object_balls, bool opening_bre
   s_.break_next = opening_break;
 }
 
+void Rack::setOpener(Player p) {
+  s_.shooter = p;
+}
+
 int RuleBook::ballOn(const RackState& s) const {
   const std::vector<int> balls = legalFirstBalls(s);
   return balls.empty() ? 0 : *std::min_element(balls.begin(), balls.end());
