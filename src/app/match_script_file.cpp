@@ -7,7 +7,8 @@
 namespace nineball::app {
 
 std::optional<io::MatchScript> loadMatchScript(const std::string& path, std::istream& in,
-                                               std::ostream& err, const std::string& prefix) {
+                                               std::ostream& err, const std::string& prefix,
+                                               std::string* text_out) {
   const std::string where = prefix + shownPath(path) + ": ";
   std::string why;
   const auto text = readInput(path, in, why);
@@ -16,6 +17,7 @@ std::optional<io::MatchScript> loadMatchScript(const std::string& path, std::ist
     return std::nullopt;
   }
   auto parsed = io::parseMatchScript(*text);
+  if (text_out) *text_out = *text;
   if (const auto* refused = std::get_if<io::ParseError>(&parsed)) {
     err << where << refused->message << '\n';
     return std::nullopt;

@@ -173,6 +173,12 @@ int runOnline(const OnlineOptions& options, std::istream& in, std::ostream& out,
   }
   net::OnlineRackOptions& o = *side;
   o.script = std::get<io::MatchScript>(std::move(parsed));
+  if (o.script.race.race_to > 0) {
+    err << where
+        << "race_to: nineball online plays one rack a script (a race online is the window's, "
+           "from the host's menu)\n";
+    return kExitBadInput;
+  }
   o.match = net::matchPart(io::readJson(*text));
   o.name = options.name;
   if (options.code.size() > net::kMostCodeChars) {

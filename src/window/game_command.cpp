@@ -7,6 +7,7 @@
 #include "app/exit_codes.hpp"
 #include "app/match_script_file.hpp"
 #include "app/read_input.hpp"
+#include "io/json_reader.hpp"
 #include "io/match_json.hpp"
 #include "net/handshake.hpp"
 #include "nineball/games.hpp"
@@ -41,7 +42,8 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
   }
   if (!options.script.empty()) {
     start.script_name = app::shownPath(options.script);
-    auto script = app::loadMatchScript(options.script, in, err, "nineball: ");
+    std::string text;
+    auto script = app::loadMatchScript(options.script, in, err, "nineball: ", &text);
     if (!script) return app::kExitBadInput;
     // The window plays the script's turns for both seats (online, its own seat's);
     // computer players are its own option.
@@ -54,17 +56,16 @@ int runGameCommand(const app::GameOptions& options, std::istream& in, std::ostre
       }
     }
     start.setup = script->setup;
+    start.race = script->race;
     start.turns = std::move(script->turns);
-    // The host offers the script's own setup (its table, physics, layout), read once more.
-    std::string why;
-    if (options.host_port && options.script != "-") {
-      if (const auto text = app::readInput(options.script, in, why)) {
-        try {
-          start.online_match = net::matchPart(nlohmann::json::parse(*text));
-        } catch (const nlohmann::json::exception&) {
-          start.online_match = nullptr;
-        }
-      }
+    // Parsed once already: the text is JSON.
+    start.script_setup = net::matchPart(io::readJson(text));
+    // The host offers the script's own setup (its table, physics, layout); the race is the
+    // welcome's.
+    if (options.host_port) {
+      start.online_match = start.script_setup;
+      start.online_match.erase("race_to");
+      start.online_match.erase("breaks");
     }
   }
   if (start.online_match.is_null()) start.online_match = onlineMatchOf(start.setup);

@@ -19,7 +19,6 @@
 #include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
-#include "window/rack_script.hpp"
 #include "window/rack_seed.hpp"
 #include "window/seat_token_file.hpp"
 #include "window/start_menu.hpp"
@@ -129,6 +128,11 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
 
 std::optional<int> GameLoop::setUp(const GameStart& start) {
   session_.setTurnObserver(count_);
+  script_setup_ = start.script_setup;
+  if (start.race.race_to > 0) {
+    session_.setBestOf(2 * start.race.race_to - 1);
+    session_.setBreaks(start.race.breaks);
+  }
   ui_.leave_to_menu = show_menu_;
   ui_.rack_kept = keep_rack_;
   if (!options_.practice) {

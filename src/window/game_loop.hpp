@@ -117,6 +117,7 @@ class GameLoop {
   long frame_ = 0;
   // --watch: the script's turns still to play on screen, and how long the balls have rested.
   std::vector<TurnInput> watched_;
+  nlohmann::json script_setup_;  // the --script's setup, which F5's save keeps
   std::size_t next_watched_ = 0;
   double rested_ = 0.0;
   std::optional<int> setup_status_;

@@ -10,6 +10,8 @@ namespace {
 
 // --watch: the balls rest this long (s) before the next turn is played, as a player would.
 constexpr double kWatchPause = 0.8;
+// s the end of a rack stays on screen before a watched race racks the next.
+constexpr double kRackOverPause = 2.5;
 
 }  // namespace
 
@@ -35,6 +37,14 @@ void GameLoop::zoomView(const render::Frame& picture) {
 void GameLoop::playWatchedTurn(double dt) {
   if (next_watched_ >= watched_.size() || session_.replaying()) return;
   const Phase phase = session_.phase();
+  if (phase == Phase::GameOver && session_.bestOf() > 0 && !session_.matchWinner()) {
+    // A race's script goes on into the next rack once the last one's end has been seen.
+    rested_ += dt;
+    if (rested_ < kRackOverPause) return;
+    rested_ = 0.0;
+    session_.rematch();
+    return;
+  }
   if (phase != Phase::Aiming && phase != Phase::PushOutChoice) {
     rested_ = 0.0;
     return;
@@ -53,20 +63,24 @@ void GameLoop::playWatchedTurn(double dt) {
   }
 }
 
-// F5: the rack as a match script in the current directory, to play again headless or here.
+// F5: the match (or the rack) as a match script in the current directory, to play again
+// headless or here.
 void GameLoop::saveRackScript() {
-  const auto script = rackScript(session_);
-  if (!script || session_.rackTurns().empty()) {
+  const bool match = savesMatch(session_);
+  const auto script = gameScript(session_, script_setup_);
+  const bool played = match ? !session_.matchTurns().empty() : !session_.rackTurns().empty();
+  if (!script || !played) {
     session_.say("No rack to save yet: F5 saves a rack once it has a turn.", render::Tone::Warning);
     return;
   }
-  const std::string name = rackScriptName();
+  const std::string name = gameScriptName(match);
+  const std::string what = match ? "Match" : "Rack";
   std::string why;
   if (writeFileAtomically(name, script->dump(2) + "\n", why)) {
-    session_.say("Rack saved: " + name + " (nineball match " + name + " plays it again).");
-    logger("game")->info("rack saved as a match script: {}", name);
+    session_.say(what + " saved: " + name + " (nineball match " + name + " plays it again).");
+    logger("game")->info("{} saved as a match script: {}", match ? "match" : "rack", name);
   } else {
-    session_.say("Rack not saved: " + why, render::Tone::Warning);
+    session_.say(what + " not saved: " + why, render::Tone::Warning);
   }
 }
 

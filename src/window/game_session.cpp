@@ -71,12 +71,6 @@ GameSession::~GameSession() = default;
 GameSession::GameSession(GameSession&&) noexcept = default;
 GameSession& GameSession::operator=(GameSession&&) noexcept = default;
 
-int GameSession::seatOf(rules::Player p) const {
-  // Player A breaks; the seats take turns at being A (online, the host is always A).
-  const int a = fixed_seats_ ? 0 : rack_ % 2;
-  return p == rules::Player::A ? a : 1 - a;
-}
-
 void GameSession::setSpeed(double mps) {
   speed_ = std::clamp(mps, kMinSpeed, kMaxSpeed);
 }
@@ -189,11 +183,9 @@ AimGuide GameSession::aimGuide() const {
 
 void GameSession::startRack() {
   last_count_.clear();
-  MatchSetup s = setup_;
-  if (rack_ > 0) {
-    s.balls.reset();  // a rematch racks, whatever the first layout was
-    s.seed = setup_.seed + static_cast<std::uint64_t>(rack_);
-  }
+  breaker_seat_ = breakerOfRack();
+  // The breaker is the rack's Player A (seatOf): the rules see A break every rack.
+  const MatchSetup s = nineball::rackSetup(setup_, rack_, rules::Player::A);
   match_ = std::make_unique<Match>(s);
   rack_setup_ = s;
   rack_turns_.clear();
@@ -357,6 +349,7 @@ bool GameSession::shoot(const TurnInput& given) {
   if (relay_.begun && !practice_) relay_.begun(turn);
   if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
   rack_turns_.push_back(turn);
+  if (!practice_) match_turns_.push_back(turn);
   heading_ = turn.shot.heading_rad;
   setSpeed(turn.shot.speed);
   tip_ = turn.shot.tip;
@@ -465,7 +458,10 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   say(m.text, m.tone);
   logger("game")->info("turn: {}", m.text);
   if (match_->rack().over()) {
-    if (const auto winner = match_->rack().winner()) ++racks_won_[seatOf(*winner)];
+    if (const auto winner = match_->rack().winner()) {
+      ++racks_won_[seatOf(*winner)];
+      last_winner_seat_ = seatOf(*winner);
+    }
     shot_.current = shot_.previous = match_->balls();
     shot_.current_time = shot_.previous_time = match_->world().time();
     phase_ = Phase::GameOver;
@@ -489,26 +485,11 @@ void GameSession::decide(bool shoot_now, bool replace) {
   groups_at_shot_ = match_->rack().groups();
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
+  match_turns_.push_back(turn);
   if (relay_.begun) relay_.begun(turn);
   // A re-rack puts every ball back: the tray of balls down empties with it.
   if (match_->rack().isBreak()) pocketed_.clear();
   afterTurn(record, match_->rack().ballOn());
-}
-
-std::optional<int> GameSession::matchWinner() const {
-  const int needed = framesToWinMatch(best_of_);
-  for (int seat = 0; seat < 2; ++seat) {
-    if (needed > 0 && racks_won_[seat] >= needed) return seat;
-  }
-  return std::nullopt;
-}
-
-void GameSession::rematch() {
-  if (practice_) return;
-  if (relay_.rematch && !relay_.rematch()) return;
-  if (matchWinner()) racks_won_[0] = racks_won_[1] = 0;
-  ++rack_;
-  startRack();
 }
 
 void GameSession::playTurn(const TurnInput& turn) {
@@ -519,11 +500,13 @@ void GameSession::playTurn(const TurnInput& turn) {
                         formatSpeed(kMaxSpeed) + " m/s in the game, not " +
                         formatSpeed(turn.shot.speed));
   }
+  nextRackForScript();
   const int ball_on = match_->rack().ballOn();
   groups_at_shot_ = match_->rack().groups();
   breaking_ = match_->rack().isBreak() && turn.kind != TurnInput::Kind::Decision;
   const TurnRecord record = match_->play(turn);
   rack_turns_.push_back(turn);
+  match_turns_.push_back(turn);
   afterTurn(record, ball_on);
 }
 
@@ -537,13 +520,6 @@ void GameSession::restoreMatch(const MatchSnapshot& snapshot) {
     return;
   }
   startTurn();
-}
-
-void GameSession::resumeRack(int rack_index, int racks_won0, int racks_won1) {
-  rack_ = std::max(0, rack_index);
-  racks_won_[0] = racks_won0;
-  racks_won_[1] = racks_won1;
-  startRack();
 }
 
 std::vector<BallState> GameSession::ballsToDraw() const {

@@ -8,6 +8,7 @@
 
 #include "audio/impact.hpp"
 #include "nineball/match.hpp"
+#include "nineball/race.hpp"
 #include "play/aim_guide.hpp"
 #include "render/hud_state.hpp"
 #include "window/fixed_step_clock.hpp"
@@ -76,8 +77,22 @@ class GameSession {
   /// save and a replay play them again). In practice, the last shot alone.
   const std::vector<TurnInput>& rackTurns() const { return rack_turns_; }
   /// Racks again as rack `rack_index` of the session (its seed and breaker) with the score
-  /// given: where a saved rack resumes.
-  void resumeRack(int rack_index, int racks_won0, int racks_won1);
+  /// given: where a saved rack resumes. The match's turns before it are not known: F5 then
+  /// saves the rack alone.
+  void resumeRack(int rack_index, int racks_won0, int racks_won1,
+                  std::optional<int> breaker_seat = std::nullopt);
+  /// Racks `first_rack` as the first of a new match at 0-0: a saved match replays from there.
+  void startMatchAt(int first_rack);
+  /// The turns of the match in play (a race: bestOf() > 0) from its first rack, as played;
+  /// with the seed of its first rack (matchSeed) and the break order they are the match as a
+  /// `nineball match` script. matchKnown() is false after resumeRack.
+  const std::vector<TurnInput>& matchTurns() const { return match_turns_; }
+  std::uint64_t matchSeed() const;
+  int matchFirstRack() const { return match_first_rack_; }
+  bool matchKnown() const { return match_known_; }
+  /// Who breaks the racks after a match's first: in turn (the default) or the last winner.
+  void setBreaks(BreakOrder order) { breaks_ = order; }
+  BreakOrder breaks() const { return breaks_; }
   /// Called with each turn's record as the turn ends: the seat that played it and whether
   /// it was the rack's break (the session statistics).
   using TurnObserver = std::function<void(int seat, const TurnRecord& record, bool was_break)>;
@@ -95,11 +110,13 @@ class GameSession {
   /// Online play: the seats keep their sides (seat 0 is Player A, and breaks, in every rack),
   /// as the two sides of a network game do.
   void setFixedSeats(bool fixed) { fixed_seats_ = fixed; }
+  bool fixedSeats() const { return fixed_seats_; }
   /// Puts the rack in a state Match::snapshot() gave (online play's heal), between turns.
   void restoreMatch(const MatchSnapshot& snapshot);
   Phase phase() const { return phase_; }
 
-  /// Seat 0 is "Player 1", seat 1 "Player 2"; they take turns to break.
+  /// Seat 0 is "Player 1", seat 1 "Player 2"; seat 0 breaks a match's first rack, the later
+  /// racks as breaks() says.
   const std::string& seatName(int seat) const { return names_[seat]; }
   /// Renames a seat ("Computer" when the computer plays it); later messages use the name.
   void setSeatName(int seat, const std::string& name) { names_[seat] = name; }
@@ -192,7 +209,7 @@ class GameSession {
   /// the shot back. After an illegal break: play on (true) or re-rack. After a snooker foul:
   /// play on (true) or put the offender back in; after a miss also `replace` the balls.
   void decide(bool shoot_now, bool replace = false);
-  /// Racks again after a game over; the other player breaks. After a match won (bestOf()), a
+  /// Racks again after a game over, broken as breaks() says. After a match won (bestOf()), a
   /// new match: the racks won go back to 0-0.
   void rematch();
   /// Plays a whole turn at once, as `nineball match` does (a script before the window opens).
@@ -249,12 +266,18 @@ class GameSession {
   void rebuildPractice();
   void restorePracticeShot(const PracticeShot& shot);
   void afterTurn(const TurnRecord& record, int ball_on_before);
+  /// The seat that breaks the rack being racked (the match's break order, or a resumed rack's).
+  int breakerOfRack();
+  /// A script's turn after a rack of a race ended: racks the next one. Throws IllegalAction
+  /// when the game or the match is over.
+  void nextRackForScript();
   Vec2 freeCueSpot() const;
 
   MatchSetup setup_;
   MatchSetup rack_setup_;
   std::unique_ptr<Match> match_;
   std::vector<TurnInput> rack_turns_;
+  std::vector<TurnInput> match_turns_;
   std::unique_ptr<ShotReplay> replay_;
   std::unique_ptr<PracticeTable> practice_;
   Phase phase_ = Phase::Aiming;
@@ -262,6 +285,12 @@ class GameSession {
   int racks_won_[2] = {0, 0};
   int rack_ = 0;
   int best_of_ = 0;
+  BreakOrder breaks_ = BreakOrder::Alternate;
+  int breaker_seat_ = 0;                 // the seat that broke the rack in play (is its Player A)
+  int match_first_rack_ = 0;             // the rack the match in play began with
+  std::optional<int> last_winner_seat_;  // the seat that won the rack before, in this match
+  bool match_known_ = true;              // match_turns_ hold the whole match
+  std::optional<int> resumed_breaker_;   // the breaker of the rack resumeRack() racks
   double heading_ = 0.0;
   double speed_ = kShotSpeed;
   Vec2 tip_;

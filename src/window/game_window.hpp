@@ -7,6 +7,7 @@
 
 #include "app/game_options.hpp"
 #include "nineball/match.hpp"
+#include "nineball/race.hpp"
 
 namespace nineball::window {
 
@@ -16,6 +17,9 @@ struct GameStart {
   MatchSetup setup;
   std::vector<TurnInput> turns;
   std::string script_name;  ///< for messages about the script's turns
+  Race race;                ///< the script's race (race_to 0: its turns play one rack)
+  /// The script's setup as written (without "turns" and "players"): F5 saves the game with it.
+  nlohmann::json script_setup;
   /// Online (--host): the match offered to the joiner, a script without turns and players.
   nlohmann::json online_match;
 };

@@ -73,6 +73,12 @@ std::string matchLengthLabel(rules::Game game, int best_of) {
   return "Race to " + first + " racks";
 }
 
+// WPA's standard format alternates the break, as WPBSA's frames alternate the break-off.
+std::string breaksLabel(BreakOrder order, bool snooker) {
+  if (order == BreakOrder::Winner) return "Winner of the last rack";
+  return snooker ? "In turn (WPBSA)" : "In turn (WPA standard)";
+}
+
 std::string capLabel(int cap) {
   return cap == 0 ? "Unlimited (vsync)" : std::to_string(cap) + " fps";
 }
@@ -104,10 +110,11 @@ std::vector<MenuModel::Item> MenuModel::items() const {
   std::vector<Item> v;
   if (resume_) v.push_back(Item::Resume);
   for (Item i : {Item::Play, Item::Practice, Item::Versus, Item::Level, Item::Game, Item::Rules,
-                 Item::Points, Item::Frames, Item::Name1, Item::Name2, Item::OpenOnline,
-                 Item::OpenSettings, Item::Quit}) {
+                 Item::Points, Item::Frames, Item::Breaks, Item::Name1, Item::Name2,
+                 Item::OpenOnline, Item::OpenSettings, Item::Quit}) {
     // Only a game played in frames has a match length to choose.
-    if (i == Item::Frames && gameDef(settings_.last.game).best_of_choices.empty()) continue;
+    const bool in_frames = i == Item::Frames || i == Item::Breaks;
+    if (in_frames && gameDef(settings_.last.game).best_of_choices.empty()) continue;
     v.push_back(i);
   }
   return v;
@@ -125,6 +132,8 @@ bool MenuModel::enabled(Item item) const {
       return severalRules();
     case Item::Points:
       return !gameDef(settings_.last.game).points_choices.empty();
+    case Item::Breaks:
+      return bestOf() > 0;  // a single rack or racks without end: each seat breaks in turn
     case Item::Name2:
       return !computer_;  // the computer's seat is called "Computer"
     case Item::Sound:
@@ -194,6 +203,11 @@ MenuRow MenuModel::row(Item item) const {
       r = {Kind::Choice, "Points to win",
            r.enabled ? std::to_string(pointsToWin()) : std::string("(a game won on a ball)"),
            r.enabled, false};
+      break;
+    case Item::Breaks:
+      r = {Kind::Choice, gameDef(settings_.last.game).snookers ? "Break-off" : "Break",
+           breaksLabel(settings_.last.breaks, gameDef(settings_.last.game).snookers), r.enabled,
+           false};
       break;
     case Item::Frames:
       r = {Kind::Choice, gameDef(settings_.last.game).snookers ? "Frames" : "Match",
@@ -312,6 +326,11 @@ void MenuModel::change(Item item, int step) {
       settings_.last.best_of = choices[((at + step) % n + n) % n];
       break;
     }
+    case Item::Breaks:
+      settings_.last.breaks = settings_.last.breaks == BreakOrder::Alternate
+                                  ? BreakOrder::Winner
+                                  : BreakOrder::Alternate;
+      break;
     case Item::Rules:
       settings_.last.rules =
           settings_.last.rules == rules::RuleSet::Wpa ? rules::RuleSet::Paper : rules::RuleSet::Wpa;

@@ -73,6 +73,7 @@ class MenuModel {
     Rules,
     Points,
     Frames,
+    Breaks,
     Name1,
     Name2,
     OpenOnline,

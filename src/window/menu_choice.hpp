@@ -4,6 +4,7 @@
 #include <string>
 
 #include "nineball/games.hpp"
+#include "nineball/race.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/seat.hpp"
 
@@ -27,6 +28,8 @@ struct MenuChoice {
   /// A match of frames or racks: best of N, a race to ceil(N/2) (GameDef::best_of_choices; 0:
   /// none, the racks add up).
   int best_of = 0;
+  /// Who breaks the racks of a match after its first.
+  BreakOrder breaks = BreakOrder::Alternate;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   bool resume = false;  ///< play on the saved rack instead (the rest is then the saved one's)
 };

@@ -40,9 +40,8 @@ void expect(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
 
-void checkTurn(const TurnInput& t, std::size_t i) {
+void checkTurn(const TurnInput& t, const std::string& at) {
   if (t.kind == TurnInput::Kind::Decision) return;
-  const std::string at = "turns[" + std::to_string(i) + "]";
   const Shot& s = t.shot;
   expect(std::isfinite(s.heading_rad) && std::abs(s.heading_rad) <= 8.0,
          at + ".heading_rad: not a heading");
@@ -59,6 +58,41 @@ void checkTurn(const TurnInput& t, std::size_t i) {
   }
   // Snooker's colours are 16-21: the highest ball any game calls or nominates.
   if (t.call) expect(t.call->ball >= 1 && t.call->ball <= 21, at + ".call.ball: no such ball");
+}
+
+TurnInput turnFromJson(const nlohmann::json& t);
+
+std::vector<TurnInput> turnsFromJson(const nlohmann::json& list, const std::string& path,
+                                     std::size_t most) {
+  expect(list.is_array() && list.size() <= most, path + ": not a rack's turns");
+  std::vector<TurnInput> turns;
+  for (const auto& t : list) {
+    turns.push_back(turnFromJson(t));
+    checkTurn(turns.back(), path + "[" + std::to_string(turns.size() - 1) + "]");
+  }
+  return turns;
+}
+
+nlohmann::ordered_json turnsToJson(const std::vector<TurnInput>& turns) {
+  // Radians as doubles: JSON numbers keep every bit, degrees would round.
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const TurnInput& t : turns) {
+    nlohmann::ordered_json o;
+    o["kind"] = kindName(t.kind);
+    if (t.kind == TurnInput::Kind::Decision) {
+      o["shoot"] = t.shoot;
+      if (t.replace) o["replace"] = true;
+    } else {
+      o["heading_rad"] = t.shot.heading_rad;
+      o["speed"] = t.shot.speed;
+      o["tip"] = {t.shot.tip.x, t.shot.tip.y};
+      o["elevation_rad"] = t.shot.elevation_rad;
+      if (t.cue) o["cue"] = {t.cue->x, t.cue->y};
+      if (t.call) o["call"] = {{"ball", t.call->ball}, {"pocket", pocketName(t.call->pocket)}};
+    }
+    list.push_back(o);
+  }
+  return list;
 }
 
 // Throws nlohmann's errors for a wrong type; rackFromJson turns them into `why`.
@@ -105,6 +139,12 @@ SavedRack saveOf(const GameSession& session, const Seat& opponent) {
   r.names = {session.seatName(0), session.seatName(1)};
   r.opponent = opponent;
   r.turns = session.rackTurns();
+  r.breaks = session.breaks();
+  r.breaker = session.seatOf(rules::Player::A);
+  if (session.bestOf() > 0 && session.matchKnown() && !session.fixedSeats()) {
+    r.first_rack = session.matchFirstRack();
+    r.match_turns = session.matchTurns();
+  }
   return r;
 }
 
@@ -119,25 +159,12 @@ nlohmann::ordered_json rackToJson(const SavedRack& rack) {
   if (rack.best_of > 0) j["best_of"] = rack.best_of;
   j["names"] = {rack.names[0], rack.names[1]};
   j["opponent"] = seatName(rack.opponent);
-  // Radians as doubles: JSON numbers keep every bit, degrees would round.
-  nlohmann::ordered_json turns = nlohmann::ordered_json::array();
-  for (const TurnInput& t : rack.turns) {
-    nlohmann::ordered_json o;
-    o["kind"] = kindName(t.kind);
-    if (t.kind == TurnInput::Kind::Decision) {
-      o["shoot"] = t.shoot;
-      if (t.replace) o["replace"] = true;
-    } else {
-      o["heading_rad"] = t.shot.heading_rad;
-      o["speed"] = t.shot.speed;
-      o["tip"] = {t.shot.tip.x, t.shot.tip.y};
-      o["elevation_rad"] = t.shot.elevation_rad;
-      if (t.cue) o["cue"] = {t.cue->x, t.cue->y};
-      if (t.call) o["call"] = {{"ball", t.call->ball}, {"pocket", pocketName(t.call->pocket)}};
-    }
-    turns.push_back(o);
+  j["breaks"] = breakOrderName(rack.breaks);
+  if (rack.breaker) j["breaker"] = *rack.breaker;
+  j["turns"] = turnsToJson(rack.turns);
+  if (rack.first_rack >= 0) {
+    j["match"] = {{"first_rack", rack.first_rack}, {"turns", turnsToJson(rack.match_turns)}};
   }
-  j["turns"] = turns;
   return j;
 }
 
@@ -178,11 +205,24 @@ std::optional<SavedRack> rackFromJson(const nlohmann::json& j, std::string& why)
     // Saves from before matches of frames have none.
     r.best_of = j.value("best_of", 0);
     expect(r.best_of >= 0 && r.best_of <= kMaxRackIndex, "best_of: not a match length");
-    const auto& turns = j.at("turns");
-    expect(turns.is_array() && turns.size() <= kMaxSavedTurns, "turns: not a rack's turns");
-    for (const auto& t : turns) {
-      r.turns.push_back(turnFromJson(t));
-      checkTurn(r.turns.back(), r.turns.size() - 1);
+    r.turns = turnsFromJson(j.at("turns"), "turns", kMaxSavedTurns);
+    // Saves from before the break order was kept: in turn.
+    if (j.contains("breaks")) {
+      const auto order = breakOrderFromName(j.at("breaks").get<std::string>().c_str());
+      expect(order.has_value(), "breaks: not alternate or winner");
+      r.breaks = *order;
+    }
+    if (j.contains("breaker")) {
+      r.breaker = j.at("breaker").get<int>();
+      expect(*r.breaker == 0 || *r.breaker == 1, "breaker: not a seat");
+    }
+    if (j.contains("match")) {
+      const auto& match = j.at("match");
+      r.first_rack = match.at("first_rack").get<int>();
+      expect(r.first_rack >= 0 && r.first_rack <= r.rack_index, "match.first_rack: not a rack");
+      expect(r.best_of > 0, "match: a rack without a match length");
+      const std::size_t racks = static_cast<std::size_t>(r.best_of);
+      r.match_turns = turnsFromJson(match.at("turns"), "match.turns", racks * kMaxSavedTurns);
     }
     return r;
   } catch (const std::exception& e) {
@@ -221,9 +261,23 @@ void forgetRack(const std::string& path) {
 
 void replayRack(GameSession& session, const SavedRack& rack) {
   session.setBestOf(rack.best_of);
-  session.resumeRack(rack.rack_index, rack.racks_won[0], rack.racks_won[1]);
+  session.setBreaks(rack.breaks);
   for (int seat = 0; seat < 2; ++seat) session.setSeatName(seat, rack.names[seat]);
-  for (const TurnInput& t : rack.turns) session.playTurn(t);
+  if (rack.first_rack < 0) {
+    session.resumeRack(rack.rack_index, rack.racks_won[0], rack.racks_won[1], rack.breaker);
+    for (const TurnInput& t : rack.turns) session.playTurn(t);
+    return;
+  }
+  session.startMatchAt(rack.first_rack);
+  for (const TurnInput& t : rack.match_turns) session.playTurn(t);
+  // Saved as the next rack was racked, before its break.
+  if (session.phase() == Phase::GameOver && session.rackNumber() - 1 < rack.rack_index) {
+    session.rematch();
+  }
+  const bool same =
+      session.rackNumber() - 1 == rack.rack_index && session.racksWon(0) == rack.racks_won[0] &&
+      session.racksWon(1) == rack.racks_won[1] && session.rackTurns().size() == rack.turns.size();
+  if (!same) throw IllegalAction("the saved match does not come back to its rack and score");
 }
 
 }  // namespace nineball::window

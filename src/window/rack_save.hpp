@@ -8,6 +8,7 @@
 
 #include "nineball/games.hpp"
 #include "nineball/match.hpp"
+#include "nineball/race.hpp"
 #include "nineball/seat.hpp"
 
 namespace nineball::window {
@@ -24,6 +25,13 @@ struct SavedRack {
   int rack_index = 0;      ///< 0 for the session's first rack
   std::array<int, 2> racks_won{};
   int best_of = 0;  ///< the match's length in frames (GameSession::bestOf); 0: none
+  BreakOrder breaks = BreakOrder::Alternate;
+  /// The seat that broke the rack (files from before it was kept: the seats took turns).
+  std::optional<int> breaker;
+  /// A match of several racks whose every turn is known: the rack it began with (else -1) and
+  /// its turns from there, this rack's last. The rack resumes by playing them all again.
+  int first_rack = -1;
+  std::vector<TurnInput> match_turns;
   std::array<std::string, 2> names = {"Player 1", "Player 2"};
   Seat opponent;  ///< who played Player 2
   std::vector<TurnInput> turns;
@@ -47,8 +55,10 @@ std::optional<SavedRack> loadRack(const std::string& path);
 /// Removes the file if there is one (a finished rack has nothing to resume).
 void forgetRack(const std::string& path);
 
-/// A session at the saved position: the rack racked as it was, the turns replayed. Throws
-/// IllegalAction when a turn does not replay (a file from another version, edited by hand).
+/// A session at the saved position: the match's racks played again (or, for a rack alone, the
+/// rack racked as it was), the turns replayed. Throws IllegalAction when a turn does not replay
+/// or the match does not come back to the saved rack (a file from another version, edited by
+/// hand).
 void replayRack(GameSession& session, const SavedRack& rack);
 
 }  // namespace nineball::window

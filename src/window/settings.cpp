@@ -70,7 +70,8 @@ bool Settings::operator==(const Settings& o) const {
          frame_cap == o.frame_cap && last.mode == o.last.mode && last.game == o.last.game &&
          last.opponent == o.last.opponent && last.rules == o.last.rules &&
          last.points == o.last.points && last.best_of == o.last.best_of &&
-         last.names == o.last.names && join_address == o.join_address;
+         last.breaks == o.last.breaks && last.names == o.last.names &&
+         join_address == o.join_address;
 }
 
 std::string xdgFile(const char* env, const char* fallback, const char* file) {
@@ -98,6 +99,7 @@ nlohmann::ordered_json settingsToJson(const Settings& s) {
                {"rules", rules::ruleSetName(s.last.rules)},
                {"points", s.last.points},
                {"best_of", s.last.best_of},
+               {"breaks", breakOrderName(s.last.breaks)},
                {"names", {s.last.names[0], s.last.names[1]}}};
   j["join_address"] = s.join_address;
   return j;
@@ -200,6 +202,15 @@ Settings settingsFromJson(const nlohmann::json& j, std::string& warnings) {
     } else {
       warn(warnings, "last.best_of: expected a whole number from 0 to " +
                          std::to_string(kMostFramesInAMatch));
+    }
+  }
+  if (const auto* v = field(*last, "breaks")) {
+    const auto order = v->is_string() ? breakOrderFromName(v->get<std::string>().c_str())
+                                      : std::optional<BreakOrder>{};
+    if (order) {
+      s.last.breaks = *order;
+    } else {
+      warn(warnings, "last.breaks: expected \"alternate\" or \"winner\"");
     }
   }
   if (const auto* v = field(*last, "names")) {

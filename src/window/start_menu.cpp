@@ -116,6 +116,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   }
   session = GameSession(setup);
   session.setBestOf(choice.best_of);
+  session.setBreaks(choice.breaks);
   session.setTurnObserver(observer);
   computer.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);

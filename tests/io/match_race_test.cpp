@@ -91,14 +91,20 @@ TEST(MatchRace, RacksUntilOneSideWinsTheRaceAlternatingTheBreak) {
 }
 
 TEST(MatchRace, TheWinnerOfARackBreaksTheNextWhenTheBreaksSaySo) {
-  const MatchPlayed played = play(computerRace("ten-ball", 3, "winner", 5));
+  // Seed 1: A wins the first rack and breaks the second (alternate breaks would give it to B),
+  // B wins that and breaks the third.
+  const MatchPlayed played = play(computerRace("ten-ball", 3, "winner", 1));
   ASSERT_EQ(played.outcome, MatchPlayed::Outcome::Done) << played.why;
   const ordered_json& racks = played.doc.at("racks");
   ASSERT_GE(racks.size(), 3u);
   EXPECT_EQ(racks[0].at("breaker"), "A");
+  int breaks_by_b = 0;
   for (std::size_t i = 1; i < racks.size(); ++i) {
     EXPECT_EQ(racks[i].at("breaker"), racks[i - 1].at("winner"));
+    breaks_by_b += racks[i].at("breaker") == "B" ? 1 : 0;
   }
+  EXPECT_GT(breaks_by_b, 0);
+  EXPECT_EQ(racks[1].at("breaker"), "A");
 }
 
 TEST(MatchRace, TheWholeMatchsTurnsPlayItAgainAsAScript) {

@@ -191,6 +191,28 @@ TEST(Menu, TheSoundRowSaysOffWhenStartedWithMute) {
 
 // Snooker is played in frames: a Frames row sets the match's length, best of 1 to 11, kept in
 // the settings; a game without frames has no such row.
+TEST(Menu, ARaceChoosesWhoBreaksTheRacksAfterTheFirst) {
+  MenuModel m(Settings{}, std::nullopt);
+  const int breaks = rowNamed(m, "Break");
+  ASSERT_GE(breaks, 0);
+  EXPECT_FALSE(m.rows()[breaks].enabled) << "racks without end: each seat breaks in turn";
+  selectRow(m, "Match");
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.rows()[m.selected()].value, "Race to 3 racks");
+  ASSERT_TRUE(m.rows()[breaks].enabled);
+  EXPECT_EQ(m.rows()[breaks].value, "In turn (WPA standard)");
+  selectRow(m, "Break");
+  m.key(MenuKey::Right);
+  EXPECT_EQ(m.rows()[breaks].value, "Winner of the last rack");
+  EXPECT_EQ(m.choice().breaks, BreakOrder::Winner);
+  // Kept with the settings for the next start.
+  std::string warnings;
+  const Settings back =
+      settingsFromJson(nlohmann::json::parse(settingsToJson(m.settings()).dump()), warnings);
+  EXPECT_EQ(back.last.breaks, BreakOrder::Winner);
+  EXPECT_TRUE(warnings.empty());
+}
+
 TEST(Menu, SnookerChoosesTheMatchLengthInFrames) {
   MenuModel m(Settings{}, std::nullopt);
   EXPECT_EQ(rowNamed(m, "Frames"), -1);

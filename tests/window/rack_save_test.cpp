@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/computer_race.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
@@ -119,6 +120,44 @@ TEST_F(RackFiles, ALaterRackResumesWithItsSeedBreakerAndScore) {
   const auto a = played.match().balls();
   const auto b = resumed.match().balls();
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].pos, b[i].pos);
+}
+
+TEST_F(RackFiles, AMatchInProgressResumesByPlayingItsRacksAgain) {
+  // Ten-ball, race to 2, winner breaks (seed 1: A wins the first rack and breaks the second too):
+  // saved three turns before the end, in the second rack or later.
+  const test::ComputerRace race = test::computerRace("ten-ball", 2, "winner", 1);
+  MatchSetup setup;
+  setup.setGame(rules::Game::TenBall);
+  setup.seed = 1;
+  GameSession played(setup);
+  played.setBestOf(3);
+  played.setBreaks(BreakOrder::Winner);
+  for (std::size_t i = 0; i + 3 < race.turns.size(); ++i) played.playTurn(race.turns[i]);
+  ASSERT_GE(played.rackNumber(), 2);
+  ASSERT_NE(played.phase(), Phase::GameOver);
+  const SavedRack saved = saveOf(played, HumanSeat{});
+  EXPECT_EQ(saved.first_rack, 0);
+  EXPECT_EQ(saved.match_turns.size(), race.turns.size() - 3);
+  std::string why;
+  const auto back = rackFromJson(nlohmann::json::parse(rackToJson(saved).dump()), why);
+  ASSERT_TRUE(back) << why;
+  GameSession resumed(setup);
+  replayRack(resumed, *back);
+  EXPECT_EQ(resumed.rackNumber(), played.rackNumber());
+  EXPECT_EQ(resumed.racksWon(0), played.racksWon(0));
+  EXPECT_EQ(resumed.racksWon(1), played.racksWon(1));
+  EXPECT_EQ(resumed.seatToMove(), played.seatToMove());
+  EXPECT_EQ(resumed.breaks(), BreakOrder::Winner);
+  EXPECT_EQ(resumed.matchTurns().size(), played.matchTurns().size());
+  const auto a = played.match().balls();
+  const auto b = resumed.match().balls();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].pos, b[i].pos);
+  // A match file that does not come back to its rack is refused, not resumed elsewhere.
+  SavedRack edited = *back;
+  edited.rack_index += 1;
+  GameSession wrong(setup);
+  EXPECT_THROW(replayRack(wrong, edited), IllegalAction);
 }
 
 TEST_F(RackFiles, ABadFileIsNotOffered) {
