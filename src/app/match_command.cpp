@@ -13,7 +13,7 @@ namespace nineball::app {
 
 CLI::App* addMatchCommand(CLI::App& app, MatchOptions& options) {
   CLI::App* cmd =
-      app.add_subcommand("match", "Play a rack of " + gamesPlayedBy(rules::RuleSet::Wpa) +
+      app.add_subcommand("match", "Play a rack (or a race of racks) of " + gamesPlayedBy(rules::RuleSet::Wpa) +
                                       " from a JSON script and print the result as JSON");
   cmd->add_option("script", options.script_path, "Script file, or - to read standard input")
       ->required();

@@ -18,7 +18,7 @@ std::vector<std::string> controlHelpLines() {
       "Ball in hand: drag the cue ball, or move it with W A S D",
       "P: declare a push-out when offered; then S: play or P: pass",
       "Hold F: fast-forward a shot    V: replay the last shot (Shift+V: slowed)    R: rematch",
-      "Esc: menu    M: mute    F1: full screen    F2: settings    F5: save rack    F12: screenshot",
+      "Esc: menu    M: mute    F1: full screen    F2: settings    F5: save game    F12: screenshot",
   };
 }
 
