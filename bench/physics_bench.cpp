@@ -12,6 +12,7 @@
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "physics/engines/engine_internals.hpp"
 
 namespace {
 
@@ -88,7 +89,7 @@ void BM_MovingGridToRest(benchmark::State& state, StepParams step) {
     for (const BallState& b : balls) w.addBall(b);
     w.runUntilRest();
     benchmark::DoNotOptimize(w.time());
-    const SearchWork work = w.searchWork();
+    const physics::SearchWork work = physics::internals(w).searchWork();
     state.counters["events"] = static_cast<double>(work.events);
     state.counters["pairs"] = static_cast<double>(work.pair_predictions);
   }

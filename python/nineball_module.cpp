@@ -22,6 +22,7 @@
 #include <thread>
 #include <vector>
 
+#include "module_parts.hpp"
 #include "nineball/cancel.hpp"
 #include "nineball/json.hpp"
 #include "nineball/motion.hpp"
@@ -118,20 +119,6 @@ std::string sceneText(py::handle given, const std::string& where) {
   // Looked up on each call: a static Python object would outlive the interpreter.
   const py::object dumps = py::module_::import("json").attr("dumps");
   return dumps(scene, py::arg("default") = py::cpp_function(plain)).cast<std::string>();
-}
-
-Scene parse(py::handle scene, const std::string& where) {
-  const std::string text = sceneText(scene, where);
-  // The command line's bound on what it reads, so that both take the same scenes.
-  if (text.size() > maxSceneBytes()) {
-    throw py::value_error(where + "scene: larger than " + std::to_string(maxSceneBytes() >> 20) +
-                          " MiB as JSON, more than any scene needs");
-  }
-  auto parsed = readScene(text);
-  if (const auto* refused = std::get_if<SceneRefusal>(&parsed)) {
-    throw py::value_error(where + refused->message);
-  }
-  return std::get<Scene>(std::move(parsed));
 }
 
 py::object numpyOrNothing() {
@@ -482,62 +469,6 @@ py::list stateAt(py::handle result_given, double t, py::handle scene) {
   return out;
 }
 
-py::list point(Vec2 p) {
-  py::list xy;
-  xy.append(p.x);
-  xy.append(p.y);
-  return xy;
-}
-
-// The table of a scene (its "table" and "physics"; no balls needed) as the physics builds it.
-py::dict tableGeometry(py::handle scene) {
-  const Scene s = parse(scene, "");
-  const TableGeometry t = buildTable(s.table, s.physics.ball_radius);
-  py::dict out;
-  out["length"] = t.def.length;
-  out["width"] = t.def.width;
-  out["ball_radius"] = s.physics.ball_radius;
-  out["pockets_on"] = t.def.pockets;
-  out["corner_pocket"] = t.def.corner_pocket;
-  out["side_pocket"] = t.def.side_pocket;
-  py::list pockets;
-  for (const Pocket& p : t.pockets) {
-    py::dict one;
-    one["id"] = pocketName(p.id);
-    one["jaw_a"] = point(p.jaw_a);
-    one["jaw_b"] = point(p.jaw_b);
-    one["outward"] = point(p.outward);
-    one["drop_centre"] = point(p.drop_centre);
-    one["drop_radius"] = p.drop_radius;
-    pockets.append(one);
-  }
-  out["pockets"] = pockets;
-  py::list loop;
-  for (Vec2 v : t.cushion_loop) loop.append(point(v));
-  out["cushion_loop"] = loop;
-  out["head_string_x"] = t.headStringX();
-  out["foot_spot"] = point(t.footSpot());
-  out["head_spot"] = point({t.headStringX(), 0.0});
-  out["centre_spot"] = point({0.0, 0.0});
-  return out;
-}
-
-// The standard rack of `game` on the scene's table, seeded as the game seeds it.
-py::list rackOf(const std::string& game_name, std::uint64_t seed, py::handle scene) {
-  const std::optional<rules::Game> game = rules::gameFromName(game_name);
-  if (!game) throw py::value_error("game: unknown game \"" + game_name + "\"");
-  const Scene s = parse(scene, "");
-  py::list balls;
-  for (const BallState& b : rackFor(*game, s.table, s.physics.ball_radius, seed)) {
-    py::dict one;
-    one["id"] = b.id;
-    one["x"] = b.pos.x;
-    one["y"] = b.pos.y;
-    balls.append(one);
-  }
-  return balls;
-}
-
 // A JSON contract of a headless command run on `doc` (its text in, its JSON text out),
 // interruptible, its refusal a ValueError, its answer as Python objects.
 py::object runContract(py::handle doc,
@@ -668,6 +599,21 @@ std::string toJson(py::handle doc) {
 }
 
 }  // namespace
+
+Scene parse(py::handle scene, const std::string& where) {
+  const std::string text = sceneText(scene, where);
+  // The command line's bound on what it reads, so that both take the same scenes.
+  if (text.size() > maxSceneBytes()) {
+    throw py::value_error(where + "scene: larger than " + std::to_string(maxSceneBytes() >> 20) +
+                          " MiB as JSON, more than any scene needs");
+  }
+  auto parsed = readScene(text);
+  if (const auto* refused = std::get_if<SceneRefusal>(&parsed)) {
+    throw py::value_error(where + refused->message);
+  }
+  return std::get<Scene>(std::move(parsed));
+}
+
 }  // namespace nineball::python
 
 PYBIND11_MODULE(_core, m) {

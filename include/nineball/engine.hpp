@@ -15,19 +15,6 @@
 
 namespace nineball {
 
-namespace physics {
-class ArcLog;
-}
-
-/// What an engine's event search has done since it was made: each prediction is worked out
-/// once and kept until one of its balls changes, so these grow with the balls each event
-/// touches, not with the balls on the table.
-struct SearchWork {
-  long events = 0;            ///< events found (phase ends and sensor reports included)
-  long ball_predictions = 0;  ///< a ball's own next event (phase end, cushion, pocket) worked out
-  long pair_predictions = 0;  ///< a pair's next contact worked out past the bounding-box test
-};
-
 /// The physics of one table, run by one of the engines of the registry
 /// (src/physics/engines/registry.cpp), made by makeEngine from StepParams::engine. Both
 /// engines follow the same models (src/physics/resolve); they differ in how they find the next
@@ -62,11 +49,6 @@ class Engine {
   /// the run is over: every ball rests, the deadline is reached or the work budget is spent.
   virtual bool stepTowardRest(double deadline) = 0;
 
-  /// Keeps every arc each ball follows from here on, for a trace (call before addBall).
-  virtual void logArcs() = 0;
-  /// The arcs kept since logArcs(), or null.
-  virtual const physics::ArcLog* arcLog() const = 0;
-
   virtual bool atRest() const = 0;
   /// True once the run has spent its work budget: nothing moves any more, and what the engine
   /// holds is a partial result.
@@ -85,7 +67,6 @@ class Engine {
   virtual const TableGeometry& table() const = 0;
   virtual const PhysicsParams& physics() const = 0;
   virtual const StepParams& stepParams() const = 0;
-  virtual SearchWork searchWork() const = 0;
   /// Every ball, event and arc log removed and the clock back at zero: the engine is then what
   /// makeEngine made, to the bit, without building its table again (the planner's thousands of
   /// candidates reuse one engine per thread).

@@ -11,6 +11,7 @@
 #include "common/parallel_map.hpp"
 #include "nineball/cancel.hpp"
 #include "nineball/engine.hpp"
+#include "physics/engines/engine_internals.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 
@@ -176,7 +177,7 @@ std::size_t maxSceneBytes() {
 SimResult simulate(const Scene& scene) {
   const std::unique_ptr<Engine> engine = makeEngine(scene.table, scene.physics, scene.step);
   Engine& world = *engine;
-  if (scene.trace) world.logArcs();
+  if (scene.trace) physics::internals(world).logArcs();
   for (const BallState& b : scene.balls) world.addBall(b);
   if (scene.shot) world.strike(kCueBall, *scene.shot);
 
@@ -203,8 +204,8 @@ SimResult simulate(const Scene& scene) {
     result.events.push_back(rest);
   }
   if (scene.trace) {
-    result.trace = physics::sampleTrace(*world.arcLog(), result.events, result.time, *scene.trace,
-                                        scene.physics);
+    result.trace = physics::sampleTrace(*physics::internals(world).arcLog(), result.events,
+                                        result.time, *scene.trace, scene.physics);
   }
   return result;
 }

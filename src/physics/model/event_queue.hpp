@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "nineball/engine.hpp"
 #include "physics/model/next_event.hpp"
+#include "physics/model/search_work.hpp"
 
 namespace nineball::physics {
 

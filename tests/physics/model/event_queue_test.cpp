@@ -11,6 +11,7 @@
 #include "nineball/engine.hpp"
 #include "nineball/random.hpp"
 #include "nineball/scenes.hpp"
+#include "physics/engines/engine_internals.hpp"
 
 namespace nineball::physics {
 namespace {
@@ -22,7 +23,7 @@ SearchWork toRest(const Scene& scene, const char* engine) {
   for (const BallState& b : scene.balls) w->addBall(b);
   w->runUntilRest();
   EXPECT_TRUE(w->atRest());
-  return w->searchWork();
+  return physics::internals(*w).searchWork();
 }
 
 double perEvent(long count, const SearchWork& w) {

@@ -651,7 +651,7 @@ const PhysicsParams& World::physics() const {
 const StepParams& World::stepParams() const {
   return impl_->sp;
 }
-SearchWork World::searchWork() const {
+physics::SearchWork World::searchWork() const {
   return impl_->queue.work();
 }
 void World::reset() {

@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "nineball/engine.hpp"
+#include "physics/engines/engine_internals.hpp"
 
 namespace nineball {
 
 /// The Box2D engine ("box2d"): Box2D bodies for balls, cushions and pockets, advanced in fixed
 /// steps, each cut into pieces that end at the next event. Box2D stays behind this interface.
-class World final : public Engine {
+class World final : public Engine, public physics::EngineInternals {
  public:
   World(const TableDef& table, const PhysicsParams& physics, const StepParams& step);
   ~World() override;
@@ -64,7 +65,7 @@ class World final : public Engine {
   const TableGeometry& table() const override;
   const PhysicsParams& physics() const override;
   const StepParams& stepParams() const override;
-  SearchWork searchWork() const override;
+  physics::SearchWork searchWork() const override;
   void reset() override;
 
  private:

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/engines/engine_internals.hpp"
 #include "physics/engines/event_loop.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/model/event_queue.hpp"
@@ -28,6 +29,7 @@ using physics::NextEvent;
 /// Box2D engine is measured against. Its steps are only where a caller asks it to stop (a
 /// frame of the window); a run to rest takes none.
 class ReferenceEngine final : public Engine,
+                              public physics::EngineInternals,
                               private physics::EngineBalls,
                               private physics::LoopEngine {
  public:
@@ -128,7 +130,7 @@ class ReferenceEngine final : public Engine,
   const TableGeometry& table() const override { return table_; }
   const PhysicsParams& physics() const override { return p_; }
   const StepParams& stepParams() const override { return sp_; }
-  SearchWork searchWork() const override { return queue_.work(); }
+  physics::SearchWork searchWork() const override { return queue_.work(); }
 
   void reset() override {
     balls_.clear();
