@@ -14,6 +14,7 @@
 #include "nineball/sim.hpp"
 #include "render/ball_spin.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace nineball::testing {
 namespace {
@@ -31,17 +32,14 @@ const char* const kScene =
         "shot": {"heading_deg": 0, "speed": 1.5}})";
 
 TEST(SimPng, TheGamesRendererDrawsThePathsAndTheBallsWhereTheyStopped) {
-  ASSERT_EQ(std::system("command -v xvfb-run >/dev/null 2>&1"), 0) << "needs xvfb-run";
-  TempFile scene(kScene), err;
+  ASSERT_TRUE(testing::haveXvfbRun()) << "needs xvfb-run";
+  TempFile scene(kScene);
   const std::string png = scene.path() + ".png";
-  const std::string cmd =
-      "LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" xvfb-run -a -n " +
-      std::to_string(300 + getpid() % 600) + " -s '-screen 0 1280x800x24' " +
-      shellQuoted(NINEBALL_BINARY) + " sim " + shellQuoted(scene.path()) + " --png " +
-      shellQuoted(png) + " >/dev/null 2>" + shellQuoted(err.path());
-  const int raw = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(raw));
-  ASSERT_EQ(WEXITSTATUS(raw), 0) << err.read();
+  const testing::XvfbRun run =
+      testing::runUnderXvfb(shellQuoted(NINEBALL_BINARY) + " sim " + shellQuoted(scene.path()) +
+                                " --png " + shellQuoted(png) + " >/dev/null",
+                            1280, 800);
+  ASSERT_EQ(run.status, 0) << run.err;
   sf::Image image;
   ASSERT_TRUE(image.loadFromFile(png));
   std::remove(png.c_str());

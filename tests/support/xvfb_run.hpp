@@ -23,21 +23,29 @@ inline bool haveXvfbRun() {
   return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
 }
 
-/// Runs NINEBALL_BINARY muted at width x height with `args`, `env` (VAR=value ...) set. -a searches
-/// for a free display from a number of this run's own, so that suites started together do not race
-/// for one; under LeakSanitizer the software GL driver leaks a little from code it cannot name,
-/// which does not fail the run.
-inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigned height,
-                                const std::string& env = "") {
+/// `s` in single quotes for the shell.
+inline std::string shellWord(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+/// Runs `command` (a shell command line, its words quoted) on a virtual screen of
+/// screen_width x screen_height, with `env` (VAR=value ...) set, its stderr kept in the result.
+/// -a searches for a free display from a number of this run's own, so that suites started
+/// together do not race for one; under LeakSanitizer the software GL driver leaks a little from
+/// code it cannot name, which does not fail the run.
+inline XvfbRun runUnderXvfb(const std::string& command, unsigned screen_width,
+                            unsigned screen_height, const std::string& env = "") {
   // Runs at once from one test (two windows playing each other) keep their own files.
   static std::atomic<int> runs{0};
   const std::string err_path =
       "/tmp/nineball-xvfb-err-" + std::to_string(getpid()) + "-" + std::to_string(runs++);
-  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const std::string screen = std::to_string(screen_width) + "x" + std::to_string(screen_height);
   const std::string cmd =
       env + " LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" xvfb-run -a -n " +
-      std::to_string(200 + getpid() % 700) + " -s '-screen 0 " + size + "x24' '" + NINEBALL_BINARY +
-      "' --mute --size " + size + " " + args + " 2>'" + err_path + "'";
+      std::to_string(200 + getpid() % 700) + " -s '-screen 0 " + screen + "x24' " + command +
+      " 2>'" + err_path + "'";
   XvfbRun r;
   const int raw = std::system(cmd.c_str());
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -47,6 +55,14 @@ inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigne
   r.err = ss.str();
   std::remove(err_path.c_str());
   return r;
+}
+
+/// Runs NINEBALL_BINARY muted in a window of width x height filling the screen, with `args`.
+inline XvfbRun runGameUnderXvfb(const std::string& args, unsigned width, unsigned height,
+                                const std::string& env = "") {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  return runUnderXvfb(shellWord(NINEBALL_BINARY) + " --mute --size " + size + " " + args, width,
+                      height, env);
 }
 
 }  // namespace nineball::testing

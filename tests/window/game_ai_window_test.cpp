@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/xvfb_run.hpp"
+
 namespace {
 
 std::string quoted(const std::string& s) {
@@ -31,18 +33,13 @@ struct Run {
 // Under LeakSanitizer the software GL driver leaks a little from code it cannot name: such
 // leaks do not fail the run, a report naming nineball's code does (as the other Xvfb tests).
 Run playUnderXvfb(const std::string& game, const std::string& png) {
-  const std::string err_path = "/tmp/nineball-ai-window-err-" + std::to_string(getpid());
-  const std::string cmd =
-      std::string("LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" ") +
-      "xvfb-run -a -n " + std::to_string(200 + getpid() % 700) + " -s '-screen 0 1280x800x24' " +
-      quoted(NINEBALL_BINARY) +
-      " --mute --size 1280x800 --log-level info --opponent ai:easy --game " + game +
-      " --frames 1200 --screenshot " + quoted(png) + " 2>" + quoted(err_path);
+  const nineball::testing::XvfbRun run =
+      nineball::testing::runGameUnderXvfb("--log-level info --opponent ai:easy --game " + game +
+                                              " --frames 1200 --screenshot " + quoted(png),
+                                          1280, 800);
   Run r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.err = slurp(err_path);
-  std::remove(err_path.c_str());
+  r.status = run.status;
+  r.err = run.err;
   return r;
 }
 

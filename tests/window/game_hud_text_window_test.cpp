@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/cli_runner.hpp"
+#include "support/xvfb_run.hpp"
 
 namespace nineball::testing {
 namespace {
@@ -49,18 +50,16 @@ struct Drawn {
 };
 
 Drawn drawAt(const std::string& size, const std::string& script) {
-  TempFile script_file(script), texts, err;
+  TempFile script_file(script), texts;
   const std::string png = texts.path() + ".png";
-  const std::string cmd =
-      "LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" NINEBALL_HUD_TEXTS=" +
-      shellQuoted(texts.path()) + " xvfb-run -a -n " + std::to_string(300 + getpid() % 600) +
-      " -s '-screen 0 3840x2160x24' " + shellQuoted(NINEBALL_BINARY) + " --mute --size " + size +
-      " --script " + shellQuoted(script_file.path()) + " --screenshot " + shellQuoted(png) + " 2>" +
-      shellQuoted(err.path());
+  // A screen as large as the largest window tried; the window at `size` on it.
+  const testing::XvfbRun run = testing::runUnderXvfb(
+      shellQuoted(NINEBALL_BINARY) + " --mute --size " + size + " --script " +
+          shellQuoted(script_file.path()) + " --screenshot " + shellQuoted(png),
+      3840, 2160, "NINEBALL_HUD_TEXTS=" + shellQuoted(texts.path()));
   Drawn d;
-  const int raw = std::system(cmd.c_str());
-  d.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  d.err = err.read();
+  d.status = run.status;
+  d.err = run.err;
   std::remove(png.c_str());
   std::istringstream in(texts.read());
   for (std::string kind; in >> kind;) {

@@ -13,6 +13,7 @@
 #include "render/ball_spin.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
@@ -27,14 +28,7 @@ std::string quoted(const std::string& s) {
 }
 
 int shoot(const std::string& args) {
-  const std::string cmd =
-      std::string("LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" ") +
-      "xvfb-run -a -n " + std::to_string(200 + getpid() % 700) + " -s '-screen 0 " +
-      std::to_string(kWidth) + "x" + std::to_string(kHeight) + "x24' " + quoted(NINEBALL_BINARY) +
-      " --mute --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " " + args +
-      " 2>/dev/null";
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return testing::runGameUnderXvfb(args, kWidth, kHeight).status;
 }
 
 bool near(sf::Color c, render::Rgb want) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "render/menu_layout.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/menu.hpp"
 #include "window/rack_save.hpp"
 #include "window/settings.hpp"
@@ -25,22 +26,13 @@ bool haveXvfbRun() {
 
 // Runs `nineball --menu --screenshot` at a size with its settings and saved rack in `dir`.
 int shootMenu(const std::filesystem::path& dir, unsigned w, unsigned h, const std::string& png) {
-  const std::string size = std::to_string(w) + "x" + std::to_string(h);
-  // Under LeakSanitizer the software GL driver leaks a little from code it cannot name: such
-  // leaks do not fail the run, but a report that names nineball's own code does.
-  const std::string err = (dir / "stderr.txt").string();
-  const std::string cmd =
-      "LSAN_OPTIONS=\"${LSAN_OPTIONS:+$LSAN_OPTIONS:}exitcode=0\" "
-      "XDG_CONFIG_HOME='" +
-      (dir / "config").string() + "' XDG_STATE_HOME='" + (dir / "state").string() +
-      "' xvfb-run -a -n " + std::to_string(200 + getpid() % 700) + " -s '-screen 0 " + size +
-      "x24' '" + NINEBALL_BINARY + "' --mute --menu --size " + size + " --screenshot '" + png +
-      "' 2>'" + err + "'";
-  const int raw = std::system(cmd.c_str());
-  std::ifstream in(err);
-  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(report.find("nineball::"), std::string::npos) << report;
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  // A leak report that names nineball's own code fails the run (the GL driver's do not).
+  const testing::XvfbRun run = testing::runGameUnderXvfb(
+      "--menu --screenshot " + testing::shellWord(png), w, h,
+      "XDG_CONFIG_HOME=" + testing::shellWord((dir / "config").string()) +
+          " XDG_STATE_HOME=" + testing::shellWord((dir / "state").string()));
+  EXPECT_EQ(run.err.find("nineball::"), std::string::npos) << run.err;
+  return run.status;
 }
 
 // Text is drawn near white (236, 236, 230) or in the title's yellow; everything behind the
