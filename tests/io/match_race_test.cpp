@@ -8,6 +8,7 @@
 
 #include "io/match_json.hpp"
 #include "io/match_play.hpp"
+#include "support/computer_race.hpp"
 
 namespace nineball::io {
 namespace {
@@ -27,32 +28,6 @@ std::string refusal(const ordered_json& script) {
   const MatchScriptResult parsed = parseMatchScript(script.dump());
   const auto* e = std::get_if<ParseError>(&parsed);
   return e ? e->message : "accepted";
-}
-
-// The result's turns as a script's turns (the exact radians of the computer's shots).
-ordered_json scriptTurns(const ordered_json& doc) {
-  ordered_json turns = ordered_json::array();
-  for (const auto& t : doc.at("turns")) {
-    ordered_json turn;
-    if (t.contains("decision")) {
-      turns.push_back({{"decision", t.at("decision")}});
-      continue;
-    }
-    for (const char* key : {"heading_rad", "speed", "tip", "elevation_rad"})
-      turn[key] = t.at("shot").at(key);
-    if (t.contains("cue")) turn["cue"] = t.at("cue");
-    if (t.contains("call")) turn["call"] = t.at("call");
-    if (t.value("push_out", false)) turn["push_out"] = true;
-    turns.push_back(turn);
-  }
-  return turns;
-}
-
-ordered_json judged(ordered_json doc) {
-  for (auto& t : doc.at("turns")) {
-    for (const char* key : {"player", "shot", "cue"}) t.erase(key);
-  }
-  return doc;
 }
 
 ordered_json computerRace(const char* game, int race_to, const char* breaks, int seed) {
@@ -114,11 +89,11 @@ TEST(MatchRace, TheWholeMatchsTurnsPlayItAgainAsAScript) {
     const MatchPlayed computer = play(script);
     ASSERT_EQ(computer.outcome, MatchPlayed::Outcome::Done) << computer.why;
     script.erase("players");
-    script["turns"] = scriptTurns(computer.doc);
+    script["turns"] = test::scriptTurns(computer.doc);
     const MatchPlayed again = play(script);
     ASSERT_EQ(again.outcome, MatchPlayed::Outcome::Done) << again.why;
     EXPECT_EQ(again.turns, computer.turns);
-    EXPECT_EQ(judged(again.doc).dump(), judged(computer.doc).dump());
+    EXPECT_EQ(test::judged(again.doc).dump(), test::judged(computer.doc).dump());
     // A turn after the race is won is refused, as a shot after a rack's end is.
     script["turns"].push_back({{"heading_deg", 0}, {"speed", 2}});
     const MatchPlayed beyond = play(script);

@@ -9,6 +9,7 @@
 
 #include "io/match_json.hpp"
 #include "io/match_play.hpp"
+#include "support/computer_race.hpp"
 
 namespace nineball::io {
 namespace {
@@ -24,38 +25,6 @@ MatchPlayed play(const std::string& text) {
   return playMatchScript(std::get<MatchScript>(parsed));
 }
 
-// The result's turns as a script's: what a person copying them would write.
-ordered_json scriptTurns(const ordered_json& doc) {
-  ordered_json turns = ordered_json::array();
-  for (const auto& t : doc.at("turns")) {
-    ordered_json turn;
-    if (t.contains("decision")) {
-      turn["decision"] = t.at("decision");
-      turns.push_back(turn);
-      continue;
-    }
-    const ordered_json& shot = t.at("shot");
-    for (const char* key : {"heading_rad", "speed", "tip", "elevation_rad"})
-      turn[key] = shot.at(key);
-    if (t.contains("cue")) turn["cue"] = t.at("cue");
-    if (t.contains("call")) turn["call"] = t.at("call");
-    if (t.value("push_out", false)) turn["push_out"] = true;
-    turns.push_back(turn);
-  }
-  return turns;
-}
-
-// The result without what only the computer's turns carry (who played, the shot as planned).
-ordered_json judged(ordered_json doc) {
-  for (auto& t : doc.at("turns")) {
-    t.erase("player");
-    t.erase("shot");
-    t.erase("cue");
-    t.erase("plan");
-  }
-  return doc;
-}
-
 TEST(MatchTurnsReplay, ComputerRacksWithFoulsAndBallInHandReplayExactly) {
   int fouls = 0, in_hand = 0, racks = 0;
   for (const char* game : {"nine-ball", "eight-ball", "ten-ball"}) {
@@ -66,11 +35,11 @@ TEST(MatchTurnsReplay, ComputerRacksWithFoulsAndBallInHandReplayExactly) {
       const MatchPlayed computer = play(script.dump());
       ASSERT_EQ(computer.outcome, MatchPlayed::Outcome::Done) << computer.why;
       script.erase("players");
-      script["turns"] = scriptTurns(computer.doc);
+      script["turns"] = test::scriptTurns(computer.doc);
       const MatchPlayed again = play(script.dump());
       ASSERT_EQ(again.outcome, MatchPlayed::Outcome::Done) << again.why;
       EXPECT_EQ(again.turns, computer.turns);
-      EXPECT_EQ(judged(again.doc).dump(), judged(computer.doc).dump());
+      EXPECT_EQ(test::judged(again.doc).dump(), test::judged(computer.doc).dump());
       ++racks;
       for (const auto& t : computer.doc.at("turns")) {
         fouls += t.at("result") == "foul" ? 1 : 0;
