@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "nineball/named_choice.hpp"
+
 namespace nineball {
 
 /// How the cloth slows a ball.
@@ -19,58 +21,38 @@ enum class ClothModel {
 /// (src/physics/resolve/ball_ball/registry.cpp), chosen by the name it declares there
 /// ("frictionless", the paper's: the impulse along the line of centres only; "frictional",
 /// friction of the contact points: throw and spin transfer).
-class BallBallModel {
+class BallBallModel : public NamedChoice<BallBallModel> {
  public:
-  /// The model of that name; std::invalid_argument for a name the registry does not hold.
-  static BallBallModel named(const std::string& name);
-  /// The model of that name, or nothing.
-  static std::optional<BallBallModel> fromName(const std::string& name);
-  /// Every model's name, in the registry's order.
-  static std::vector<std::string> names();
-
-  /// The name it declares in the registry.
-  const char* name() const;
+  static constexpr const char* kWhat = "ball-ball model";
   /// True when it reads `parameter` (a field of "physics" that only some ball-ball models read).
   bool reads(const std::string& parameter) const;
-  /// Its place in the registry.
-  std::size_t index() const { return index_; }
-
-  bool operator==(BallBallModel o) const { return index_ == o.index_; }
-  bool operator!=(BallBallModel o) const { return index_ != o.index_; }
 
  private:
-  explicit BallBallModel(std::size_t index) : index_(index) {}
-  std::size_t index_;
+  friend class NamedChoice<BallBallModel>;
+  explicit BallBallModel(std::size_t index) : NamedChoice(index) {}
+  // Its registry (src/physics/resolve/ball_ball/registry.cpp).
+  static std::size_t registrySize();
+  static const char* registryName(std::size_t index);
 };
 
 /// How a cushion sends a ball back: one of the cushion models of the registry
 /// (src/physics/resolve/cushion/registry.cpp), chosen by the name it declares there ("simple",
 /// the paper's; "mathavan", Mathavan et al. 2010; ...).
-class CushionModel {
+class CushionModel : public NamedChoice<CushionModel> {
  public:
-  /// The model of that name; std::invalid_argument for a name the registry does not hold.
-  static CushionModel named(const std::string& name);
-  /// The model of that name, or nothing.
-  static std::optional<CushionModel> fromName(const std::string& name);
-  /// Every model's name, in the registry's order.
-  static std::vector<std::string> names();
-
-  /// The name it declares in the registry.
-  const char* name() const;
+  static constexpr const char* kWhat = "cushion model";
   /// True when it reads `parameter` (a field of "physics" that only some cushion models read).
   bool reads(const std::string& parameter) const;
   /// True when it does not read `parameter`, a field the other cushion models read
   /// ("cushion_restitution" for a model whose restitution is a function of speed).
   bool ignores(const std::string& parameter) const;
-  /// Its place in the registry.
-  std::size_t index() const { return index_; }
-
-  bool operator==(CushionModel o) const { return index_ == o.index_; }
-  bool operator!=(CushionModel o) const { return index_ != o.index_; }
 
  private:
-  explicit CushionModel(std::size_t index) : index_(index) {}
-  std::size_t index_;
+  friend class NamedChoice<CushionModel>;
+  explicit CushionModel(std::size_t index) : NamedChoice(index) {}
+  // Its registry (src/physics/resolve/cushion/registry.cpp).
+  static std::size_t registrySize();
+  static const char* registryName(std::size_t index);
 };
 
 /// Ball-ball friction against the sliding speed v (m/s) of the contact points:
@@ -106,31 +88,21 @@ enum class ContactModel {
 /// Which engine runs a scene: one of the engines of the registry
 /// (src/physics/engines/registry.cpp), chosen by the name it declares there ("box2d", Box2D's
 /// bodies and pieces; "reference", the exact event-based solver with no time step).
-class EngineKind {
+class EngineKind : public NamedChoice<EngineKind> {
  public:
-  /// The engine of that name; std::invalid_argument for a name the registry does not hold.
-  static EngineKind named(const std::string& name);
-  /// The engine of that name, or nothing.
-  static std::optional<EngineKind> fromName(const std::string& name);
-  /// Every engine's name, in the registry's order.
-  static std::vector<std::string> names();
-
-  /// The name it declares in the registry.
-  const char* name() const;
+  static constexpr const char* kWhat = "engine";
   /// True when it reads `field` of the scene's "step" (its solver settings).
   bool reads(const std::string& field) const;
   /// What it lacks that the fields it does not read are for ("has no time step"), to say why
   /// a scene that sets one is refused.
   const char* lacks() const;
-  /// Its place in the registry.
-  std::size_t index() const { return index_; }
-
-  bool operator==(EngineKind o) const { return index_ == o.index_; }
-  bool operator!=(EngineKind o) const { return index_ != o.index_; }
 
  private:
-  explicit EngineKind(std::size_t index) : index_(index) {}
-  std::size_t index_;
+  friend class NamedChoice<EngineKind>;
+  explicit EngineKind(std::size_t index) : NamedChoice(index) {}
+  // Its registry (src/physics/engines/registry.cpp).
+  static std::size_t registrySize();
+  static const char* registryName(std::size_t index);
 };
 
 /// Physical parameters, SI units. Every field can be overridden in a scene.

@@ -24,30 +24,20 @@ std::unique_ptr<Engine> makeEngine(const TableDef& table, const PhysicsParams& p
   return physics::engines()[step.engine.index()].make(table, physics, step);
 }
 
-std::optional<EngineKind> EngineKind::fromName(const std::string& name) {
-  if (const auto i = placeNamed(physics::engines(), name)) return EngineKind(*i);
-  return std::nullopt;
+std::size_t EngineKind::registrySize() {
+  return physics::engines().size();
 }
 
-EngineKind EngineKind::named(const std::string& name) {
-  if (auto e = fromName(name)) return *e;
-  throw std::invalid_argument("no engine named \"" + name + "\"");
-}
-
-std::vector<std::string> EngineKind::names() {
-  return namesOf(physics::engines());
-}
-
-const char* EngineKind::name() const {
-  return physics::engines()[index_].name;
+const char* EngineKind::registryName(std::size_t index) {
+  return physics::engines()[index].name;
 }
 
 const char* EngineKind::lacks() const {
-  return physics::engines()[index_].lacks;
+  return physics::engines()[index()].lacks;
 }
 
 bool EngineKind::reads(const std::string& field) const {
-  return holds(physics::engines()[index_].reads, field);
+  return holds(physics::engines()[index()].reads, field);
 }
 
 }  // namespace nineball

@@ -23,26 +23,16 @@ const BallBallModelDef& ballBallModel(BallBallModel m) {
 
 }  // namespace physics
 
-std::optional<BallBallModel> BallBallModel::fromName(const std::string& name) {
-  if (const auto i = placeNamed(physics::ballBallModels(), name)) return BallBallModel(*i);
-  return std::nullopt;
+std::size_t BallBallModel::registrySize() {
+  return physics::ballBallModels().size();
 }
 
-BallBallModel BallBallModel::named(const std::string& name) {
-  if (auto m = fromName(name)) return *m;
-  throw std::invalid_argument("no ball-ball model named \"" + name + "\"");
-}
-
-std::vector<std::string> BallBallModel::names() {
-  return namesOf(physics::ballBallModels());
+const char* BallBallModel::registryName(std::size_t index) {
+  return physics::ballBallModels()[index].name;
 }
 
 bool BallBallModel::reads(const std::string& parameter) const {
   return holds(physics::ballBallModel(*this).reads, parameter);
-}
-
-const char* BallBallModel::name() const {
-  return physics::ballBallModel(*this).name;
 }
 
 }  // namespace nineball

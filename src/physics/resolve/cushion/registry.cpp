@@ -27,18 +27,12 @@ const CushionModelDef& cushionModel(CushionModel m) {
 
 }  // namespace physics
 
-std::optional<CushionModel> CushionModel::fromName(const std::string& name) {
-  if (const auto i = placeNamed(physics::cushionModels(), name)) return CushionModel(*i);
-  return std::nullopt;
+std::size_t CushionModel::registrySize() {
+  return physics::cushionModels().size();
 }
 
-CushionModel CushionModel::named(const std::string& name) {
-  if (auto m = fromName(name)) return *m;
-  throw std::invalid_argument("no cushion model named \"" + name + "\"");
-}
-
-std::vector<std::string> CushionModel::names() {
-  return namesOf(physics::cushionModels());
+const char* CushionModel::registryName(std::size_t index) {
+  return physics::cushionModels()[index].name;
 }
 
 bool CushionModel::reads(const std::string& parameter) const {
@@ -47,10 +41,6 @@ bool CushionModel::reads(const std::string& parameter) const {
 
 bool CushionModel::ignores(const std::string& parameter) const {
   return holds(physics::cushionModel(*this).ignores, parameter);
-}
-
-const char* CushionModel::name() const {
-  return physics::cushionModel(*this).name;
 }
 
 }  // namespace nineball
