@@ -27,6 +27,8 @@ class BuildCoreWithCMake(build_py):
         build_type = os.environ.get("NINEBALL_BUILD_TYPE", "Release")
         subprocess.run(["cmake", "-S", SOURCE, "-B", build, "-DCMAKE_BUILD_TYPE=" + build_type,
                         "-DNINEBALL_TESTS=OFF", "-DNINEBALL_BENCH=OFF",
+                        # Built once: sources compiled several to a unit, half the build's time.
+                        "-DCMAKE_UNITY_BUILD=ON",
                         "-DPython3_EXECUTABLE=" + sys.executable], check=True)
         subprocess.run(["cmake", "--build", build, "--target", "nineball_python", "--parallel",
                         str(os.cpu_count() or 1)], check=True)

@@ -227,11 +227,11 @@ constexpr double kFinestCheckedSpeed = 0.03;
 
 // How a level cues (docs/ai.md, "The stroke model"): the heading's deviation on an easy stroke,
 // its growth with cut, reach and pace, the speed's relative deviation and the tip's, m.
-struct Stroke {
+struct StrokeNoise {
   double aim_deg, cut_growth, reach_growth, pace_growth, speed, tip_m;
 };
 
-void cue(LevelSettings& s, const Stroke& k) {
+void cue(LevelSettings& s, const StrokeNoise& k) {
   s.aim_noise_deg = k.aim_deg;
   s.cut_growth = k.cut_growth;
   s.reach_growth = k.reach_growth;

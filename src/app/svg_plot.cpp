@@ -13,7 +13,7 @@ constexpr double kLeft = 80.0, kRight = 250.0, kTop = 50.0, kBottom = 60.0;
 // Errors of exactly zero still need a place on a log axis.
 constexpr double kErrorFloor = 1e-7;
 
-std::string num(double v) {
+std::string axisNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.1f", v);
   return buf;
@@ -71,19 +71,20 @@ std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::strin
       << "<text x=\"" << kLeft << "\" y=\"28\" font-size=\"16\">" << escape(title) << "</text>\n";
   for (double d = x.lo; d <= x.hi; d += 1.0) {
     const double xp = px(std::pow(10.0, d));
-    svg << "<line x1=\"" << num(xp) << "\" y1=\"" << kTop << "\" x2=\"" << num(xp) << "\" y2=\""
-        << kTop + plot_h << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(xp) << "\" y=\""
-        << kTop + plot_h + 18 << "\" text-anchor=\"middle\">" << std::pow(10.0, d) << "</text>\n";
+    svg << "<line x1=\"" << axisNumber(xp) << "\" y1=\"" << kTop << "\" x2=\"" << axisNumber(xp)
+        << "\" y2=\"" << kTop + plot_h << "\" stroke=\"#ddd\"/>\n<text x=\"" << axisNumber(xp)
+        << "\" y=\"" << kTop + plot_h + 18 << "\" text-anchor=\"middle\">" << std::pow(10.0, d)
+        << "</text>\n";
   }
   for (double d = y.lo; d <= y.hi; d += 1.0) {
     const double yp = py(std::pow(10.0, d));
-    svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(yp) << "\" x2=\"" << kLeft + plot_w
-        << "\" y2=\"" << num(yp) << "\" stroke=\"#ddd\"/>\n<text x=\"" << kLeft - 8 << "\" y=\""
-        << num(yp + 4) << "\" text-anchor=\"end\">1e" << d << "</text>\n";
+    svg << "<line x1=\"" << kLeft << "\" y1=\"" << axisNumber(yp) << "\" x2=\"" << kLeft + plot_w
+        << "\" y2=\"" << axisNumber(yp) << "\" stroke=\"#ddd\"/>\n<text x=\"" << kLeft - 8
+        << "\" y=\"" << axisNumber(yp + 4) << "\" text-anchor=\"end\">1e" << d << "</text>\n";
   }
-  svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(py(1.0)) << "\" x2=\"" << kLeft + plot_w
-      << "\" y2=\"" << num(py(1.0)) << "\" stroke=\"#c00\" stroke-dasharray=\"6,4\"/>\n"
-      << "<text x=\"" << kLeft + plot_w - 4 << "\" y=\"" << num(py(1.0) - 6)
+  svg << "<line x1=\"" << kLeft << "\" y1=\"" << axisNumber(py(1.0)) << "\" x2=\"" << kLeft + plot_w
+      << "\" y2=\"" << axisNumber(py(1.0)) << "\" stroke=\"#c00\" stroke-dasharray=\"6,4\"/>\n"
+      << "<text x=\"" << kLeft + plot_w - 4 << "\" y=\"" << axisNumber(py(1.0) - 6)
       << "\" text-anchor=\"end\" fill=\"#c00\">every case at its target</text>\n"
       << "<text x=\"" << kLeft + plot_w / 2 << "\" y=\"" << kHeight - 15
       << "\" text-anchor=\"middle\">median wall time of a break to rest (ms, log)</text>\n"
@@ -98,26 +99,28 @@ std::string errorTimePlot(const std::vector<PlotPoint>& points, const std::strin
             [](const PlotPoint* a, const PlotPoint* b) { return a->time_ms < b->time_ms; });
   if (front.size() > 1) {
     svg << "<polyline fill=\"none\" stroke=\"#1a7f37\" stroke-width=\"2\" points=\"";
-    for (const PlotPoint* p : front) svg << num(px(p->time_ms)) << ',' << num(py(p->error)) << ' ';
+    for (const PlotPoint* p : front)
+      svg << axisNumber(px(p->time_ms)) << ',' << axisNumber(py(p->error)) << ' ';
     svg << "\"/>\n";
   }
   for (const PlotPoint& p : points) {
     const std::string colour = p.chosen ? "#d4a000" : p.on_front ? "#1a7f37" : "#888";
-    svg << "<circle cx=\"" << num(px(p.time_ms)) << "\" cy=\"" << num(py(p.error)) << "\" r=\""
-        << (p.chosen ? 7 : 4) << "\" fill=\"" << colour << "\"><title>" << escape(p.label)
-        << "</title></circle>\n";
+    svg << "<circle cx=\"" << axisNumber(px(p.time_ms)) << "\" cy=\"" << axisNumber(py(p.error))
+        << "\" r=\"" << (p.chosen ? 7 : 4) << "\" fill=\"" << colour << "\"><title>"
+        << escape(p.label) << "</title></circle>\n";
   }
   if (reference) {
     // Error 0 has no place on a log axis: a line at its run time, the marker at the bottom.
     const double xp = px(reference->time_ms), bottom = kTop + plot_h;
-    svg << "<line x1=\"" << num(xp) << "\" y1=\"" << kTop << "\" x2=\"" << num(xp) << "\" y2=\""
-        << bottom << "\" stroke=\"#2457a6\" stroke-width=\"1.5\" stroke-dasharray=\"2,3\"/>\n"
-        << "<path d=\"M" << num(xp) << ',' << num(bottom - 12)
+    svg << "<line x1=\"" << axisNumber(xp) << "\" y1=\"" << kTop << "\" x2=\"" << axisNumber(xp)
+        << "\" y2=\"" << bottom
+        << "\" stroke=\"#2457a6\" stroke-width=\"1.5\" stroke-dasharray=\"2,3\"/>\n"
+        << "<path d=\"M" << axisNumber(xp) << ',' << axisNumber(bottom - 12)
         << " l7,12 l-14,0 z\" fill=\"#2457a6\">"
         << "<title>" << escape(reference->label) << "</title></path>\n"
-        << "<text x=\"" << num(xp + 5) << "\" y=\"" << num(kTop + 14) << "\" fill=\"#2457a6\">"
-        << escape(reference->label) << "</text>\n"
-        << "<text x=\"" << num(xp + 5) << "\" y=\"" << num(kTop + 28)
+        << "<text x=\"" << axisNumber(xp + 5) << "\" y=\"" << axisNumber(kTop + 14)
+        << "\" fill=\"#2457a6\">" << escape(reference->label) << "</text>\n"
+        << "<text x=\"" << axisNumber(xp + 5) << "\" y=\"" << axisNumber(kTop + 28)
         << "\" fill=\"#2457a6\">(error 0 by definition)</text>\n";
   }
   // The front's settings, listed beside the plot.

@@ -10,7 +10,7 @@ namespace nineball::fit {
 namespace {
 
 // The early objective's window after the strike (s) and the cue ball's weight in it.
-constexpr double kEarlyWindow = 4.0;
+constexpr double kEarlyHorizon = 4.0;
 constexpr double kEarlyCueWeight = 1.5;
 constexpr double kMaxElevation = 35.0 * kPi / 180.0;
 // Inside the miscue limit by this share, so that a tip on the search's edge still strikes.
@@ -100,7 +100,7 @@ Scene sceneOf(const RecordedShot& s, const PhysicsParams& p, const Variables& x,
   shot.elevation_rad = x[kElevation];
   scene.shot = shot;
   const double last = std::min(w.until, s.end);
-  const double horizon = w.weighting == FitObjective::Early ? kEarlyWindow : last - x[kStrike];
+  const double horizon = w.weighting == FitObjective::Early ? kEarlyHorizon : last - x[kStrike];
   scene.until = std::max(std::min(horizon, last - x[kStrike]), kMinRun);
   scene.trace = TraceRequest{limits::kMinTraceHz, false};
   return scene;
@@ -120,7 +120,7 @@ double windowError(const RecordedShot& s, const Scene& scene, const SimResult& r
       double weight = 1.0;
       if (w.weighting == FitObjective::Early) {
         if (after < 0.0) continue;
-        if (after > kEarlyWindow) break;
+        if (after > kEarlyHorizon) break;
         weight = (i == 0 ? kEarlyCueWeight : 1.0) / (1.0 + after);
       }
       const Vec2 simulated =

@@ -77,7 +77,7 @@ Race parseRace(const json& doc, rules::Game game) {
   return race;
 }
 
-MatchScript parseDocument(const json& doc) {
+MatchScript parseMatchDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
   allowOnly(doc, "",
             {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns",
@@ -285,7 +285,7 @@ ordered_json turnToJson(const TurnInput& turn, rules::Game game) {
 
 MatchScriptResult parseMatchScript(std::string_view text) {
   try {
-    return parseDocument(readJson(text));
+    return parseMatchDocument(readJson(text));
   } catch (const ParseError& e) {
     return e;
   }

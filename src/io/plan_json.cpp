@@ -15,7 +15,7 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-PlanScene parseDocument(json doc) {
+PlanScene parsePlanDocument(json doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
   allowOnly(doc, "",
             {"table", "physics", "balls", "shot", "until", "step", "game", "rules", "ball_in_hand",
@@ -84,7 +84,7 @@ PlanSceneResult parsePlanScene(std::string_view text) {
   });
   if (blank) return ParseError{"invalid JSON: empty input"};
   try {
-    return parseDocument(readJson(text));
+    return parsePlanDocument(readJson(text));
   } catch (const ParseError& e) {
     return e;
   }

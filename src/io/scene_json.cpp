@@ -632,7 +632,7 @@ void refuseWhatNothingReads(const json& doc, const Scene& scene) {
   }
 }
 
-Scene parseDocument(const json& doc) {
+Scene parseSceneDocument(const json& doc) {
   if (!doc.is_object()) refuse("scene", "expected an object, found " + describe(doc));
   allowOnly(doc, "", {"table", "physics", "balls", "shot", "until", "step", "trace"});
   Scene scene;
@@ -652,7 +652,7 @@ Scene parseDocument(const json& doc) {
 
 SceneResult parseScene(std::string_view text) {
   try {
-    return parseDocument(readJson(text));
+    return parseSceneDocument(readJson(text));
   } catch (const ParseError& e) {
     return e;
   }
@@ -660,7 +660,7 @@ SceneResult parseScene(std::string_view text) {
 
 SceneResult sceneFromJson(const nlohmann::json& doc) {
   try {
-    return parseDocument(doc);
+    return parseSceneDocument(doc);
   } catch (const ParseError& e) {
     return e;
   }

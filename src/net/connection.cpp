@@ -229,7 +229,7 @@ std::unique_ptr<sf::TcpSocket> connectTo(const Address& address, double timeout_
   auto socket = std::make_unique<sf::TcpSocket>();
   if (socket->connect(ip, address.port, sf::seconds(static_cast<float>(timeout_s))) !=
       sf::Socket::Done) {
-    why = "nobody answers at " + address.host + ":" + std::to_string(address.port);
+    why = "nobody answers at " + addressText(address);
     return nullptr;
   }
   return socket;

@@ -92,6 +92,10 @@ std::optional<unsigned short> parsePort(const std::string& text, std::string& wh
   return static_cast<unsigned short>(port);
 }
 
+std::string addressText(const Address& a) {
+  return a.host + ":" + std::to_string(a.port);
+}
+
 std::optional<Address> parseAddress(const std::string& text, std::string& why) {
   Address a;
   const std::size_t colon = text.rfind(':');

@@ -50,6 +50,8 @@ struct Address {
 /// Reads "HOST", "HOST:PORT" or ":PORT"; nothing (with `why`) for a port outside 1-65535 or an
 /// empty host.
 std::optional<Address> parseAddress(const std::string& text, std::string& why);
+/// "HOST:PORT", as parseAddress reads it back.
+std::string addressText(const Address& a);
 /// Reads a port number 1-65535.
 std::optional<unsigned short> parsePort(const std::string& text, std::string& why);
 

@@ -8,15 +8,11 @@ namespace {
 
 constexpr int kNine = 9;
 
-int lowest(const RackState& s) {
-  return s.on_table.empty() ? 0 : s.on_table.front();
-}
-
 }  // namespace
 
 std::vector<int> NineBallRules::legalFirstBalls(const RackState& s) const {
   if (s.on_table.empty()) return {};
-  return {lowest(s)};
+  return {lowestOnTable(s)};
 }
 
 Verdict NineBallRules::judge(RackState& s, const ShotSummary& shot, bool push_out) const {
@@ -30,7 +26,7 @@ Verdict NineBallRules::judgeWpa(RackState& s, const ShotSummary& shot, bool push
   const int game_ball = rotationGameBall(s.on_table, kNine);
   const bool game_ball_down = contains(v.pocketed, game_ball);
   const bool was_break = s.break_next;
-  v.foul = rotationFoul(s, shot, v.pocketed, lowest(s), push_out);
+  v.foul = rotationFoul(s, shot, v.pocketed, lowestOnTable(s), push_out);
   countFoul(s, v);
 
   // The game ball goes back on the spot after a foul or a push-out; the rest stay down.
@@ -64,7 +60,7 @@ Verdict NineBallRules::judgePaper(RackState& s, const ShotSummary& shot) const {
   Verdict v;
   v.shooter = s.shooter;
   v.pocketed = newlyPocketed(s.on_table, shot.pocketed);
-  const int on = lowest(s);
+  const int on = lowestOnTable(s);
   const bool nine_down = contains(v.pocketed, rotationGameBall(s.on_table, kNine));
   if (shot.cue_pocketed) {
     v.foul = Foul::Scratch;

@@ -13,6 +13,10 @@ constexpr int kFoulsToLose = 3;
 
 }  // namespace
 
+int lowestOnTable(const RackState& s) {
+  return s.on_table.empty() ? 0 : s.on_table.front();
+}
+
 Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector<int>& pocketed,
                   int on, bool push_out) {
   if (shot.cue_pocketed) return Foul::Scratch;

@@ -7,6 +7,9 @@ namespace nineball::rules {
 // Nine-ball and ten-ball under WPA rules share their fouls: the lowest ball first, a pot or
 // a rail after contact, and on the break the lowest ball first and a pot or four to a rail.
 
+/// The ball on in a rotation game: the lowest numbered on the table (0 when none is left).
+int lowestOnTable(const RackState& s);
+
 /// The foul of a rotation shot (None when legal). `on` is the lowest ball on the table.
 Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector<int>& pocketed,
                   int on, bool push_out);

@@ -8,10 +8,6 @@ namespace {
 
 constexpr int kTen = 10;
 
-int lowest(const RackState& s) {
-  return s.on_table.empty() ? 0 : s.on_table.front();
-}
-
 // Why a legal called shot's pot does not count: the called ball in another pocket, or some
 // ball down that was not called. None when the called ball dropped where it was called (the
 // other balls then count too) or nothing dropped.
@@ -26,7 +22,7 @@ Foul callBreach(const ShotSummary& shot, const std::vector<int>& pocketed) {
 
 std::vector<int> TenBallRules::legalFirstBalls(const RackState& s) const {
   if (s.on_table.empty()) return {};
-  return {lowest(s)};
+  return {lowestOnTable(s)};
 }
 
 Verdict TenBallRules::judge(RackState& s, const ShotSummary& shot, bool push_out) const {
@@ -35,7 +31,7 @@ Verdict TenBallRules::judge(RackState& s, const ShotSummary& shot, bool push_out
   v.pocketed = newlyPocketed(s.on_table, shot.pocketed);
   const int game_ball = rotationGameBall(s.on_table, kTen);
   const bool was_break = s.break_next;
-  v.foul = rotationFoul(s, shot, v.pocketed, lowest(s), push_out);
+  v.foul = rotationFoul(s, shot, v.pocketed, lowestOnTable(s), push_out);
   countFoul(s, v);
   const bool called_shot = !was_break && !push_out && v.legal();
   if (called_shot) v.call_breach = callBreach(shot, v.pocketed);

@@ -32,10 +32,6 @@ AimPose poseOf(const net::Aim& a) {
   return {a.heading_rad, a.speed, a.tip, a.elevation_rad, a.cue};
 }
 
-std::string addressText(const net::Address& a) {
-  return a.host + ":" + std::to_string(a.port);
-}
-
 }  // namespace
 
 std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::string& why) {
@@ -49,7 +45,7 @@ std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::s
                            play->joinLine());
   }
   if (config.side == net::Side::Joiner && config.seat_token.empty() && !config.seat_file.empty()) {
-    play->config_.seat_token = loadSeatToken(config.seat_file, addressText(config.address));
+    play->config_.seat_token = loadSeatToken(config.seat_file, net::addressText(config.address));
   }
   return play;
 }
@@ -155,7 +151,7 @@ void OnlinePlay::connectionStep(GameSession& session) {
                t - waiting_since_ > config_.wait_s) {
       end(config_.side == net::Side::Host
               ? "Nobody joined within " + clockText(config_.wait_s) + "."
-              : "No host answered at " + addressText(config_.address) + " within " +
+              : "No host answered at " + net::addressText(config_.address) + " within " +
                     clockText(config_.wait_s) + (why_.empty() ? "" : " (" + why_ + ")") + ".",
           true);
     }
@@ -402,7 +398,7 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   peer_name_ = welcome.name.empty() ? std::string("Player 1") : net::cleanName(welcome.name);
   if (peer_name_ == config_.name) peer_name_ = net::cleanName(peer_name_ + " (A)");
   if (welcome.token != config_.seat_token && !config_.seat_file.empty()) {
-    keepSeatToken(config_.seat_file, addressText(config_.address), welcome.token);
+    keepSeatToken(config_.seat_file, net::addressText(config_.address), welcome.token);
   }
   config_.seat_token = welcome.token;
   std::optional<GameSession> made;

@@ -6,13 +6,6 @@
 
 // What the window shows of an online game: who controls the table, the banner, the status.
 namespace nineball::window {
-namespace {
-
-std::string addressText(const net::Address& a) {
-  return a.host + ":" + std::to_string(a.port);
-}
-
-}  // namespace
 
 std::string clockText(double seconds) {
   const int s = std::max(0, static_cast<int>(seconds + 0.999));
@@ -49,7 +42,7 @@ std::string OnlinePlay::banner(const GameSession& session) const {
       if (config_.side == net::Side::Host) {
         return "Waiting for a friend to join: " + joinLine() + "  (Esc cancels)";
       }
-      return "Connecting to " + addressText(config_.address) + "..." +
+      return "Connecting to " + net::addressText(config_.address) + "..." +
              (why_.empty() ? std::string() : " (" + why_ + ")");
     case Stage::Handshake:
       return "Connected: greeting the other side...";

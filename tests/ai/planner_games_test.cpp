@@ -7,6 +7,7 @@
 #include "ai/planner_lookahead.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "rules/ball_list.hpp"
 
 using nineball::BallState;
 using nineball::IllegalAction;
@@ -32,9 +33,7 @@ MatchSetup layout(rules::Game game, std::vector<BallState> balls) {
   return s;
 }
 
-bool contains(const std::vector<int>& v, int x) {
-  return std::find(v.begin(), v.end(), x) != v.end();
-}
+using nineball::rules::contains;
 
 // A legal break that pocketed `down` and left the breaker at the table.
 rules::Rack afterBreak(rules::Game game, std::vector<int> racked, std::vector<int> down) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "nineball/match.hpp"
+#include "rules/ball_list.hpp"
 
 using nineball::BallState;
 using nineball::Match;
@@ -41,9 +42,7 @@ MatchSetup layout(std::vector<BallState> balls) {
   return s;
 }
 
-bool contains(const std::vector<int>& v, int x) {
-  return std::find(v.begin(), v.end(), x) != v.end();
-}
+using nineball::rules::contains;
 
 // The planned shot played as planned (no execution noise).
 TurnRecord playPlan(Match& match, const Plan& plan) {

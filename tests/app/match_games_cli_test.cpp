@@ -11,14 +11,14 @@ namespace {
 using nineball::testing::CliOutcome;
 using nineball::testing::runOnDocument;
 
-CliOutcome runMatch(const std::string& script) {
+CliOutcome matchCli(const std::string& script) {
   return runOnDocument("match", script);
 }
 
 }  // namespace
 
 TEST(MatchCliGames, EightBallTurnsCarryTheGroups) {
-  const CliOutcome r = runMatch(R"({"game": "eight-ball", "seed": 3, "turns": [
+  const CliOutcome r = matchCli(R"({"game": "eight-ball", "seed": 3, "turns": [
       {"heading_deg": 0, "speed": 10}]})");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
@@ -32,7 +32,7 @@ TEST(MatchCliGames, EightBallTurnsCarryTheGroups) {
 
 TEST(MatchCliGames, EightBallCalledPotSetsTheGroup) {
   // The 2 in line with the bottom-right pocket; the stripe and the 8 out of the way.
-  const CliOutcome r = runMatch(R"({"game": "eight-ball",
+  const CliOutcome r = matchCli(R"({"game": "eight-ball",
       "balls": [{"id": 0, "x": 0.4, "y": 0.0}, {"id": 2, "x": 0.6496, "y": -0.1664},
                 {"id": 8, "x": -0.9, "y": 0.3}, {"id": 12, "x": -0.9, "y": -0.3}],
       "turns": [{"heading_deg": -33.69, "speed": 2,
@@ -48,7 +48,7 @@ TEST(MatchCliGames, EightBallCalledPotSetsTheGroup) {
 }
 
 TEST(MatchCliGames, TenBallRacksTenAndWantsACallAfterTheBreak) {
-  const CliOutcome ok = runMatch(R"({"game": "ten-ball", "turns": [
+  const CliOutcome ok = matchCli(R"({"game": "ten-ball", "turns": [
       {"heading_deg": 0, "speed": 10}]})");
   ASSERT_EQ(ok.status, 0) << ok.err;
   const auto doc = nlohmann::json::parse(ok.out);
@@ -56,7 +56,7 @@ TEST(MatchCliGames, TenBallRacksTenAndWantsACallAfterTheBreak) {
   EXPECT_TRUE(doc["turns"][0].contains("call_breach"));
   EXPECT_FALSE(doc["turns"][0].contains("groups"));
 
-  const CliOutcome refused = runMatch(R"({"game": "ten-ball", "turns": [
+  const CliOutcome refused = matchCli(R"({"game": "ten-ball", "turns": [
       {"heading_deg": 0, "speed": 10}, {"heading_deg": 0, "speed": 1}]})");
   EXPECT_EQ(refused.status, 2);
   EXPECT_TRUE(refused.out.empty());
@@ -79,7 +79,7 @@ TEST(MatchCliGames, BadGameFieldsAreRefused) {
       {R"({"turns": [{"decision": "rerack", "call": 1}]})", "turns[0]"},
   };
   for (const auto& [script, message] : cases) {
-    const CliOutcome r = runMatch(script);
+    const CliOutcome r = matchCli(script);
     EXPECT_EQ(r.status, 2) << script;
     EXPECT_TRUE(r.out.empty()) << script;
     EXPECT_NE(r.err.find(message), std::string::npos) << script << "\n" << r.err;
@@ -87,7 +87,7 @@ TEST(MatchCliGames, BadGameFieldsAreRefused) {
 }
 
 TEST(MatchCliGames, NineBallResultsGainNoNewKeys) {
-  const CliOutcome r = runMatch(R"({"seed": 7, "turns": [{"heading_deg": 0, "speed": 10}]})");
+  const CliOutcome r = matchCli(R"({"seed": 7, "turns": [{"heading_deg": 0, "speed": 10}]})");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto t = nlohmann::json::parse(r.out)["turns"][0];
   EXPECT_FALSE(t.contains("groups"));
@@ -96,7 +96,7 @@ TEST(MatchCliGames, NineBallResultsGainNoNewKeys) {
 }
 
 TEST(MatchCliGames, EightBallIllegalBreakThenRerack) {
-  const CliOutcome r = runMatch(R"({"game": "eight-ball", "turns": [
+  const CliOutcome r = matchCli(R"({"game": "eight-ball", "turns": [
       {"heading_deg": 0, "speed": 0.6}, {"decision": "rerack"},
       {"heading_deg": 0, "speed": 10}]})");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -135,7 +135,7 @@ TEST(MatchCliGames, BallsAndDecisionsOfAnotherGameAreRefusedByName) {
               R"({"game":"eight-ball","turns":[{"heading_deg":0,"speed":10},{"decision":"pass"}]})",
               ": turns[1].decision: expected \"play-on\" or \"rerack\""},
       }) {
-    const CliOutcome r = runMatch(c.script);
+    const CliOutcome r = matchCli(c.script);
     EXPECT_EQ(r.status, 2) << c.script;
     EXPECT_TRUE(r.out.empty()) << c.script;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;

@@ -11,7 +11,7 @@
 namespace nineball {
 namespace {
 
-constexpr int kEvals = 3000;
+constexpr int kRealEvals = 3000;
 
 // A noise-free 50 Hz recording of the carom shot, its clock started at the frame before the
 // strike (real recordings begin at the strike), the cue ball listed last.
@@ -52,7 +52,7 @@ ShotFit fitted(const Recording& r) {
   EXPECT_FALSE(recordingFault(r));
   FitOptions o;
   o.threads = 1;
-  o.evals = kEvals;
+  o.evals = kRealEvals;
   return fitShot(r, o);
 }
 

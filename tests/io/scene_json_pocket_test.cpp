@@ -12,7 +12,7 @@
 namespace nineball::io {
 namespace {
 
-std::string scene(const std::string& physics) {
+std::string pocketScene(const std::string& physics) {
   return R"({"balls": [{"id": 0, "x": -0.5, "y": 0.0}], "physics": {)" + physics + "}}";
 }
 
@@ -20,12 +20,12 @@ using testing::accepted;
 using testing::refusedAt;
 
 TEST(SceneJsonPocket, TheRealPresetFallsAndThePaperDrops) {
-  Scene s = accepted(scene(R"("preset": "real")"));
+  Scene s = accepted(pocketScene(R"("preset": "real")"));
   EXPECT_EQ(s.physics.pocket, PocketModel::Fall);
   auto out = physicsToJson(s.physics);
   EXPECT_EQ(out["pocket"], "fall");
   EXPECT_EQ(out["pocket_restitution"], s.physics.pocket_restitution);
-  s = accepted(scene(R"("preset": "paper")"));
+  s = accepted(pocketScene(R"("preset": "paper")"));
   EXPECT_EQ(s.physics.pocket, PocketModel::Drop);
   out = physicsToJson(s.physics);
   EXPECT_EQ(out["pocket"], "drop");
@@ -33,20 +33,23 @@ TEST(SceneJsonPocket, TheRealPresetFallsAndThePaperDrops) {
 }
 
 TEST(SceneJsonPocket, AcceptsTheModelAndTheBack) {
-  Scene s = accepted(scene(R"("pocket": "drop")"));
+  Scene s = accepted(pocketScene(R"("pocket": "drop")"));
   EXPECT_EQ(s.physics.pocket, PocketModel::Drop);
-  s = accepted(scene(R"("preset": "paper", "pocket": "fall", "pocket_restitution": 0.8)"));
+  s = accepted(pocketScene(R"("preset": "paper", "pocket": "fall", "pocket_restitution": 0.8)"));
   EXPECT_EQ(s.physics.pocket, PocketModel::Fall);
   EXPECT_EQ(s.physics.pocket_restitution, 0.8);
   EXPECT_EQ(physicsToJson(s.physics)["pocket_restitution"], 0.8);
 }
 
 TEST(SceneJsonPocket, RefusesWhatIsWrongOrUnused) {
-  EXPECT_TRUE(refusedAt(scene(R"("pocket": "net")"), "physics.pocket", "unknown pocket model"));
-  EXPECT_TRUE(refusedAt(scene(R"("pocket": 1)"), "physics.pocket", "expected"));
-  EXPECT_TRUE(refusedAt(scene(R"("pocket_restitution": 1.5)"), "physics.pocket_restitution", ""));
-  EXPECT_TRUE(refusedAt(scene(R"("pocket_restitution": -0.1)"), "physics.pocket_restitution", ""));
-  EXPECT_TRUE(refusedAt(scene(R"("pocket": "drop", "pocket_restitution": 0.5)"),
+  EXPECT_TRUE(
+      refusedAt(pocketScene(R"("pocket": "net")"), "physics.pocket", "unknown pocket model"));
+  EXPECT_TRUE(refusedAt(pocketScene(R"("pocket": 1)"), "physics.pocket", "expected"));
+  EXPECT_TRUE(
+      refusedAt(pocketScene(R"("pocket_restitution": 1.5)"), "physics.pocket_restitution", ""));
+  EXPECT_TRUE(
+      refusedAt(pocketScene(R"("pocket_restitution": -0.1)"), "physics.pocket_restitution", ""));
+  EXPECT_TRUE(refusedAt(pocketScene(R"("pocket": "drop", "pocket_restitution": 0.5)"),
                         "physics.pocket_restitution", "not used by the \"drop\" pocket"));
 }
 

@@ -11,24 +11,24 @@
 namespace nineball::io {
 namespace {
 
-std::string scene(const std::string& trace) {
+std::string traceScene(const std::string& trace) {
   return R"({"balls": [{"id": 0, "x": -0.635, "y": 0.0}, {"id": 1, "x": 0.635, "y": 0.1}],
              "shot": {"heading_deg": 0, "speed": 1}, "trace": )" +
          trace + "}";
 }
 
-std::string refusal(const std::string& trace) {
-  const SceneResult r = parseScene(scene(trace));
+std::string traceRefusal(const std::string& trace) {
+  const SceneResult r = parseScene(traceScene(trace));
   const auto* e = std::get_if<ParseError>(&r);
   return e ? e->message : "accepted";
 }
 
 TEST(TraceJson, AcceptsARateOrTheEventsAlone) {
-  const SceneResult a = parseScene(scene(R"({"hz": 200})"));
+  const SceneResult a = parseScene(traceScene(R"({"hz": 200})"));
   ASSERT_TRUE(std::holds_alternative<Scene>(a)) << std::get<ParseError>(a).message;
   EXPECT_EQ(std::get<Scene>(a).trace->hz, 200.0);
   EXPECT_FALSE(std::get<Scene>(a).trace->events_only);
-  const SceneResult b = parseScene(scene(R"({"events_only": true})"));
+  const SceneResult b = parseScene(traceScene(R"({"events_only": true})"));
   ASSERT_TRUE(std::holds_alternative<Scene>(b));
   EXPECT_TRUE(std::get<Scene>(b).trace->events_only);
   const SceneResult none = parseScene(R"({"balls": []})");
@@ -59,7 +59,7 @@ TEST(TraceJson, RefusesBadTraceFieldsNamingThem) {
                 "found false"},
            Case{R"({"events_only": 1})", "trace.events_only: expected true"},
        }) {
-    const std::string got = refusal(c.trace);
+    const std::string got = traceRefusal(c.trace);
     EXPECT_EQ(got.rfind(c.message, 0), 0u) << c.trace << " -> " << got;
   }
 }

@@ -21,7 +21,7 @@ using rules::Game;
 using rules::Group;
 using rules::Player;
 
-constexpr double kR = 0.028575;
+constexpr double kBallR = 0.028575;
 
 TurnInput called(TurnInput t, int ball, PocketId pocket) {
   t.call = rules::Call{ball, pocket};
@@ -42,7 +42,7 @@ struct InLine {
   TurnInput shot;
 };
 InLine inLine(Game game, int object, std::vector<int> others) {
-  const Vec2 pocket = buildTable(TableDef{}, kR).pockets[3].drop_centre;
+  const Vec2 pocket = buildTable(TableDef{}, kBallR).pockets[3].drop_centre;
   const Vec2 cue{0.4, 0.0};
   const Vec2 dir = normalized(pocket - cue);
   InLine line;

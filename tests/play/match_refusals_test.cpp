@@ -30,7 +30,7 @@ std::string refusal(const std::function<void()>& act) {
   return "";
 }
 
-MatchSetup setupOf(Game game, std::optional<std::vector<BallState>> balls = std::nullopt) {
+MatchSetup gameSetup(Game game, std::optional<std::vector<BallState>> balls = std::nullopt) {
   MatchSetup s;
   s.setGame(game);
   s.balls = std::move(balls);
@@ -43,7 +43,7 @@ TurnInput called(TurnInput t, int ball) {
 }
 
 TEST(MatchRefusals, ThreeCushionIsPlayedOnlyOnATableWithoutPockets) {
-  MatchSetup s = setupOf(Game::ThreeCushion);
+  MatchSetup s = gameSetup(Game::ThreeCushion);
   s.table = TableDef::nineFoot();
   const std::string why = refusal([&] { Match m(s); });
   EXPECT_NE(why.find("three-cushion is played on a table without pockets"), std::string::npos)
@@ -61,36 +61,36 @@ TEST(MatchRefusals, ThreeCushionIsPlayedOnlyOnATableWithoutPockets) {
 }
 
 TEST(MatchRefusals, ACallInAGameThatTakesNoneIsRefusedByName) {
-  Match nine(setupOf(Game::NineBall));
+  Match nine(gameSetup(Game::NineBall));
   std::string why = refusal([&] { nine.play(called(shot(0.0, 8.0, Vec2{-0.7, 0.0}), 1)); });
   EXPECT_NE(why.find("nine-ball takes no call"), std::string::npos) << why;
   EXPECT_NE(why.find("eight-ball, ten-ball and snooker"), std::string::npos) << why;
-  Match carom(setupOf(Game::ThreeCushion));
+  Match carom(gameSetup(Game::ThreeCushion));
   why = refusal([&] { carom.play(called(shot(0.0, 3.0), 2)); });
   EXPECT_NE(why.find("three-cushion takes no call"), std::string::npos) << why;
 }
 
 TEST(MatchRefusals, APushOutWhereTheGameHasNoneSaysSo) {
-  Match eight(setupOf(Game::EightBall));
+  Match eight(gameSetup(Game::EightBall));
   TurnInput push = shot(0.0, 8.0, Vec2{-0.7, 0.0});
   push.kind = TurnInput::Kind::PushOut;
   std::string why = refusal([&] { eight.play(push); });
   EXPECT_EQ(why, "eight-ball has no push-out");
-  Match snooker(setupOf(Game::Snooker));
+  Match snooker(gameSetup(Game::Snooker));
   why = refusal([&] { snooker.play(push); });
   EXPECT_EQ(why, "snooker has no push-out");
 }
 
 TEST(MatchRefusals, ADecisionNothingWaitsForIsRefusedInTheGamesOwnWords) {
-  Match carom(setupOf(Game::ThreeCushion));
+  Match carom(gameSetup(Game::ThreeCushion));
   std::string why = refusal([&] { carom.play(decision(true)); });
   EXPECT_NE(why.find("three-cushion has no choice between turns"), std::string::npos) << why;
   EXPECT_EQ(why.find("push-out"), std::string::npos) << why;
-  Match snooker(setupOf(Game::Snooker));
+  Match snooker(gameSetup(Game::Snooker));
   why = refusal([&] { snooker.play(decision(true)); });
   EXPECT_NE(why.find("after a foul"), std::string::npos) << why;
   EXPECT_EQ(why.find("push-out"), std::string::npos) << why;
-  Match nine(setupOf(Game::NineBall));
+  Match nine(gameSetup(Game::NineBall));
   why = refusal([&] { nine.play(decision(true)); });
   EXPECT_NE(why.find("push-out"), std::string::npos) << why;
 }
@@ -102,16 +102,16 @@ std::vector<BallState> redsOn() {
 }
 
 TEST(MatchRefusals, SnookerRefusesANominationItsRulesWouldNotRead) {
-  Match m(setupOf(Game::Snooker, redsOn()));
+  Match m(gameSetup(Game::Snooker, redsOn()));
   std::string why = refusal([&] { m.play(called(shot(20.0, 1.0), 19)); });
   EXPECT_NE(why.find("the blue cannot be nominated: a red is on"), std::string::npos) << why;
   EXPECT_NE(why.find("no free ball is due"), std::string::npos) << why;
   why = refusal([&] { m.play(called(shot(20.0, 1.0), 1)); });
   EXPECT_NE(why.find("a red is never nominated"), std::string::npos) << why;
   // Only the colours left, in order: the blue is on, the black may not be nominated.
-  Match colours(setupOf(Game::Snooker, std::vector<BallState>{BallState::at(kCueBall, {0.0, 0.0}),
-                                                              BallState::at(19, {0.8, 0.3}),
-                                                              BallState::at(21, {0.8, -0.3})}));
+  Match colours(gameSetup(Game::Snooker, std::vector<BallState>{BallState::at(kCueBall, {0.0, 0.0}),
+                                                                BallState::at(19, {0.8, 0.3}),
+                                                                BallState::at(21, {0.8, -0.3})}));
   why = refusal([&] { colours.play(called(shot(20.0, 1.0), 21)); });
   EXPECT_NE(why.find("the black cannot be nominated: the colours are taken in order and the "
                      "blue is on"),

@@ -17,10 +17,10 @@ using nineball::rules::ShotSummary;
 
 namespace {
 
-const std::vector<int> kFullRack{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+const std::vector<int> kTenBalls{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
 
 // Every ball in a shot drops in the top-left pocket unless told otherwise.
-ShotSummary hit(int first, std::vector<int> pocketed = {}, bool rail = true) {
+ShotSummary tenHit(int first, std::vector<int> pocketed = {}, bool rail = true) {
   ShotSummary s;
   s.first_contact = first;
   s.pockets.assign(pocketed.size(), PocketId::TopLeft);
@@ -29,22 +29,22 @@ ShotSummary hit(int first, std::vector<int> pocketed = {}, bool rail = true) {
   return s;
 }
 
-ShotSummary called(ShotSummary s, int ball, PocketId pocket = PocketId::TopLeft) {
+ShotSummary tenCalled(ShotSummary s, int ball, PocketId pocket = PocketId::TopLeft) {
   s.call = Call{ball, pocket};
   return s;
 }
 
-ShotSummary breakShot(int first, std::vector<int> pocketed, int to_rail) {
-  ShotSummary s = hit(first, std::move(pocketed));
+ShotSummary tenBreak(int first, std::vector<int> pocketed, int to_rail) {
+  ShotSummary s = tenHit(first, std::move(pocketed));
   s.object_balls_to_rail = to_rail;
   return s;
 }
 
-Rack racked() {
-  return Rack(Game::TenBall, RuleSet::Wpa, kFullRack);
+Rack tenRacked() {
+  return Rack(Game::TenBall, RuleSet::Wpa, kTenBalls);
 }
 
-Rack afterBreak(std::vector<int> balls) {
+Rack tenAfterBreak(std::vector<int> balls) {
   return Rack(Game::TenBall, RuleSet::Wpa, std::move(balls), false);
 }
 
@@ -54,30 +54,30 @@ TEST(TenBallRules, NameAndBook) {
   EXPECT_STREQ(gameName(Game::TenBall), "ten-ball");
   EXPECT_EQ(nineball::rules::gameFromName("ten-ball"), Game::TenBall);
   EXPECT_FALSE(nineball::rules::gameFromName("crokinole"));
-  EXPECT_THROW(Rack(Game::TenBall, RuleSet::Paper, kFullRack), std::invalid_argument);
+  EXPECT_THROW(Rack(Game::TenBall, RuleSet::Paper, kTenBalls), std::invalid_argument);
 }
 
 TEST(TenBallRules, BreakNeedsTheOneFirstAndAPotOrFourToRail) {
   {
-    Rack rack = racked();
+    Rack rack = tenRacked();
     EXPECT_FALSE(rack.callRequired());  // the break is not called
-    const auto v = rack.shoot(breakShot(1, {}, 4));
+    const auto v = rack.shoot(tenBreak(1, {}, 4));
     EXPECT_TRUE(v.legal());
     EXPECT_EQ(v.next, Player::B);
   }
   {
-    Rack rack = racked();
-    const auto v = rack.shoot(breakShot(1, {}, 3));
+    Rack rack = tenRacked();
+    const auto v = rack.shoot(tenBreak(1, {}, 3));
     EXPECT_EQ(v.foul, Foul::BadBreak);
     EXPECT_TRUE(v.ball_in_hand);
   }
   {
-    Rack rack = racked();
-    EXPECT_EQ(rack.shoot(breakShot(2, {5}, 6)).foul, Foul::BadBreak);
+    Rack rack = tenRacked();
+    EXPECT_EQ(rack.shoot(tenBreak(2, {5}, 6)).foul, Foul::BadBreak);
   }
   {
-    Rack rack = racked();
-    const auto v = rack.shoot(breakShot(1, {5}, 0));  // an uncalled pot counts on the break
+    Rack rack = tenRacked();
+    const auto v = rack.shoot(tenBreak(1, {5}, 0));  // an uncalled pot counts on the break
     EXPECT_TRUE(v.legal());
     EXPECT_EQ(v.next, Player::A);
     EXPECT_FALSE(v.awaiting_decision);
@@ -85,8 +85,8 @@ TEST(TenBallRules, BreakNeedsTheOneFirstAndAPotOrFourToRail) {
 }
 
 TEST(TenBallRules, TenOnTheBreakIsSpotted) {
-  Rack rack = racked();
-  const auto v = rack.shoot(breakShot(1, {10, 3}, 2));
+  Rack rack = tenRacked();
+  const auto v = rack.shoot(tenBreak(1, {10, 3}, 2));
   EXPECT_TRUE(v.legal());
   EXPECT_FALSE(v.winner);
   EXPECT_EQ(v.to_spot, std::vector<int>{10});
@@ -96,10 +96,10 @@ TEST(TenBallRules, TenOnTheBreakIsSpotted) {
 }
 
 TEST(TenBallRules, EveryShotAfterTheBreakIsCalled) {
-  Rack rack = racked();
-  rack.shoot(breakShot(1, {2}, 0));
+  Rack rack = tenRacked();
+  rack.shoot(tenBreak(1, {2}, 0));
   EXPECT_TRUE(rack.callRequired());
-  const auto v = rack.shoot(called(hit(1, {1}), 1));
+  const auto v = rack.shoot(tenCalled(tenHit(1, {1}), 1));
   EXPECT_TRUE(v.legal());
   EXPECT_EQ(v.call_breach, Foul::None);
   EXPECT_EQ(v.next, Player::A);
@@ -108,23 +108,23 @@ TEST(TenBallRules, EveryShotAfterTheBreakIsCalled) {
 
 TEST(TenBallRules, CalledBallInAnotherPocketEndsTheTurnOpponentChooses) {
   for (bool shoot : {true, false}) {
-    Rack rack = afterBreak(kFullRack);
-    const auto v = rack.shoot(called(hit(1, {1}), 1, PocketId::BottomRight));
+    Rack rack = tenAfterBreak(kTenBalls);
+    const auto v = rack.shoot(tenCalled(tenHit(1, {1}), 1, PocketId::BottomRight));
     EXPECT_TRUE(v.legal());
     EXPECT_EQ(v.call_breach, Foul::WrongPocket);
     EXPECT_FALSE(v.ball_in_hand);
     EXPECT_EQ(v.decision, Decision::PlayOrPass);
     EXPECT_EQ(v.next, Player::B);
     EXPECT_EQ(rack.ballOn(), 2);  // the 1 stays down
-    EXPECT_THROW(rack.shoot(called(hit(2), 2)), std::logic_error);
+    EXPECT_THROW(rack.shoot(tenCalled(tenHit(2), 2)), std::logic_error);
     rack.decide(shoot);
     EXPECT_EQ(rack.shooter(), shoot ? Player::B : Player::A);
   }
 }
 
 TEST(TenBallRules, UncalledPotEndsTheTurnOpponentChooses) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1, {4}), 1));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1, {4}), 1));
   EXPECT_TRUE(v.legal());
   EXPECT_EQ(v.call_breach, Foul::NoCall);
   EXPECT_EQ(v.decision, Decision::PlayOrPass);
@@ -132,16 +132,16 @@ TEST(TenBallRules, UncalledPotEndsTheTurnOpponentChooses) {
 }
 
 TEST(TenBallRules, CalledBallMadeOtherBallsCountToo) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1, {4, 1}), 1));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1, {4, 1}), 1));
   EXPECT_EQ(v.call_breach, Foul::None);
   EXPECT_EQ(v.next, Player::A);
   EXPECT_EQ(rack.ballOn(), 2);
 }
 
 TEST(TenBallRules, AMissWithNothingDownIsAnOrdinaryTurnEnd) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1), 1));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1), 1));
   EXPECT_TRUE(v.legal());
   EXPECT_EQ(v.call_breach, Foul::None);
   EXPECT_FALSE(v.awaiting_decision);
@@ -149,16 +149,16 @@ TEST(TenBallRules, AMissWithNothingDownIsAnOrdinaryTurnEnd) {
 }
 
 TEST(TenBallRules, TenEarlyOnACalledShotWins) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1, {10}), 10));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1, {10}), 10));
   EXPECT_TRUE(v.legal());
   ASSERT_TRUE(v.winner);
   EXPECT_EQ(*v.winner, Player::A);
 }
 
 TEST(TenBallRules, TenEarlyUncalledIsSpottedAndTheTurnEnds) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1, {10}), 3));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1, {10}), 3));
   EXPECT_FALSE(v.winner);
   EXPECT_EQ(v.call_breach, Foul::NoCall);
   EXPECT_EQ(v.to_spot, std::vector<int>{10});
@@ -166,24 +166,24 @@ TEST(TenBallRules, TenEarlyUncalledIsSpottedAndTheTurnEnds) {
 }
 
 TEST(TenBallRules, TenInTheWrongPocketIsSpotted) {
-  Rack rack = afterBreak({1, 10});
-  const auto v = rack.shoot(called(hit(1, {10}), 10, PocketId::TopSide));
+  Rack rack = tenAfterBreak({1, 10});
+  const auto v = rack.shoot(tenCalled(tenHit(1, {10}), 10, PocketId::TopSide));
   EXPECT_FALSE(v.winner);
   EXPECT_EQ(v.call_breach, Foul::WrongPocket);
   EXPECT_EQ(v.to_spot, std::vector<int>{10});
 }
 
 TEST(TenBallRules, TenWithTheCalledBallIsSpottedTheShooterContinues) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(1, {1, 10}), 1));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(1, {1, 10}), 1));
   EXPECT_FALSE(v.winner);
   EXPECT_EQ(v.to_spot, std::vector<int>{10});
   EXPECT_EQ(v.next, Player::A);
 }
 
 TEST(TenBallRules, TenOnAFoulIsSpotted) {
-  Rack rack = afterBreak(kFullRack);
-  const auto v = rack.shoot(called(hit(3, {10}), 10));
+  Rack rack = tenAfterBreak(kTenBalls);
+  const auto v = rack.shoot(tenCalled(tenHit(3, {10}), 10));
   EXPECT_EQ(v.foul, Foul::WrongBallFirst);
   EXPECT_EQ(v.call_breach, Foul::None);  // a foul, not a call question
   EXPECT_EQ(v.to_spot, std::vector<int>{10});
@@ -192,8 +192,8 @@ TEST(TenBallRules, TenOnAFoulIsSpotted) {
 
 TEST(TenBallRules, PushOutAfterTheBreakNeedsNoCall) {
   for (bool shoot : {true, false}) {
-    Rack rack = racked();
-    rack.shoot(breakShot(1, {}, 5));
+    Rack rack = tenRacked();
+    rack.shoot(tenBreak(1, {}, 5));
     EXPECT_TRUE(rack.pushOutAvailable());
     ShotSummary push;
     push.pocketed = {10};
@@ -206,17 +206,17 @@ TEST(TenBallRules, PushOutAfterTheBreakNeedsNoCall) {
     rack.decide(shoot);
     EXPECT_EQ(rack.shooter(), shoot ? Player::A : Player::B);
     EXPECT_FALSE(rack.pushOutAvailable());
-    EXPECT_THROW(rack.shoot(called(hit(1), 1), true), std::logic_error);
+    EXPECT_THROW(rack.shoot(tenCalled(tenHit(1), 1), true), std::logic_error);
   }
 }
 
 TEST(TenBallRules, ThreeFoulsInARowLose) {
-  Rack rack = afterBreak(kFullRack);
+  Rack rack = tenAfterBreak(kTenBalls);
   ShotSummary miss;
-  rack.shoot(miss);               // A foul 1
-  rack.shoot(called(hit(1), 1));  // B
-  rack.shoot(miss);               // A foul 2
-  rack.shoot(called(hit(1), 1));  // B
+  rack.shoot(miss);                     // A foul 1
+  rack.shoot(tenCalled(tenHit(1), 1));  // B
+  rack.shoot(miss);                     // A foul 2
+  rack.shoot(tenCalled(tenHit(1), 1));  // B
   EXPECT_EQ(rack.consecutiveFouls(Player::A), 2);
   const auto v = rack.shoot(miss);  // A foul 3
   EXPECT_EQ(v.foul, Foul::ThreeFouls);
@@ -224,10 +224,10 @@ TEST(TenBallRules, ThreeFoulsInARowLose) {
 }
 
 TEST(TenBallRules, ATurnEndedByTheCallIsNoFoulAndClearsTheCount) {
-  Rack rack = afterBreak(kFullRack);
+  Rack rack = tenAfterBreak(kTenBalls);
   ShotSummary miss;
   rack.shoot(miss);  // A foul 1
-  rack.shoot(called(hit(1), 1));
-  rack.shoot(called(hit(1, {5}), 1));  // A: legal, but not as called
+  rack.shoot(tenCalled(tenHit(1), 1));
+  rack.shoot(tenCalled(tenHit(1, {5}), 1));  // A: legal, but not as called
   EXPECT_EQ(rack.consecutiveFouls(Player::A), 0);
 }

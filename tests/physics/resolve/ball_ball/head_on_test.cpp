@@ -5,12 +5,13 @@
 #include <string>
 
 #include "physics/physics_fixtures.hpp"
+#include "support/paper_figures.hpp"
 
 namespace nineball::physics_test {
 namespace {
 
-// The paper's printed answers (section 4) have two significant decimals at most.
-constexpr double kPrintedRounding = 0.005;
+using testing::kPrintedRounding;
+
 // Kinetic energy goes as v^2: the 0.5 % velocity target allows 2 x 0.5 % of the initial
 // kinetic energy in the energy balance.
 constexpr double kEnergyTolerance = 2.0 * kCollisionSpeedTolerance;

@@ -4,12 +4,12 @@
 #include <string>
 
 #include "physics/physics_fixtures.hpp"
+#include "support/paper_figures.hpp"
 
 namespace nineball::physics_test {
 namespace {
 
-// The paper's printed answers (section 5) have two decimals.
-constexpr double kPrintedRounding = 0.005;
+using testing::kPrintedRounding;
 
 struct CutShot {
   Event hit;

@@ -10,12 +10,13 @@
 #include <cstdio>
 
 #include "nineball/params.hpp"
+#include "nineball/vec2.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 
 namespace nineball::physics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kToleranceDeg = 0.2;
 
 double deg(double rad) {
@@ -28,21 +29,17 @@ struct Hit {
   Vec3 object_spin;
 };
 
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
-}
-
 // A cue ball at `speed` along +x with spin `w` meets a resting object ball at cut angle phi.
 Hit hit(double phi_deg, double speed, Vec3 w, const PhysicsParams& p) {
   const double r = p.ball_radius, m = p.ball_mass, phi = phi_deg * kPi / 180.0;
   Kinematics cue{{0.0, 0.0}, {speed, 0.0}, w};
   Kinematics object{{2.0 * r * std::cos(phi), -2.0 * r * std::sin(phi)}, {}, {}};
-  const double before = energy(cue, m, r);
+  const double before = kineticEnergy(cue, m, r);
   collideBalls(cue, object, m, m, p);
   const Vec2 n = normalized(object.p - cue.p);
   const double along = dot(object.v, n), across = cross(n, object.v);
   return {deg(std::atan2(std::abs(across), along)),
-          (energy(cue, m, r) + energy(object, m, r)) / before, object.w};
+          (kineticEnergy(cue, m, r) + kineticEnergy(object, m, r)) / before, object.w};
 }
 
 // TP A.14's closed form, with the cap where the contact points stop sliding.

@@ -8,13 +8,12 @@
 #include <cstdio>
 #include <memory>
 
+#include "nineball/vec2.hpp"
 #include "physics/engines/box2d/world.hpp"
 #include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double angleDeg(Vec2 v) {
   return std::atan2(v.y, v.x) * 180.0 / kPi;

@@ -4,9 +4,12 @@
 
 #include "nineball/shot.hpp"
 #include "physics/physics_fixtures.hpp"
+#include "support/paper_figures.hpp"
 
 namespace nineball::physics_test {
 namespace {
+
+using testing::kPrintedRounding;
 
 // The paper's example (eq. 2.1-2.5): m 0.15 kg, F 10 N for 0.2 s.
 constexpr double kMass = 0.15;
@@ -14,7 +17,6 @@ constexpr double kForce = 10.0;
 constexpr double kContactTime = 0.2;
 constexpr double kPaperSpeed = 13.33;  // as printed, two decimals
 // The printed value is rounded to the hundredth.
-constexpr double kPrintedRounding = 0.005;
 // v = F dt / m is one division in double: only rounding may separate it from the closed form.
 constexpr double kArithmeticTolerance = 1e-12;
 

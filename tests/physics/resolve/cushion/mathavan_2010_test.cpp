@@ -11,12 +11,13 @@
 #include <cstdio>
 
 #include "nineball/params.hpp"
+#include "nineball/vec2.hpp"
 #include "physics/engines/box2d/world.hpp"
+#include "physics/model/motion.hpp"
 
 namespace nineball::physics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kToleranceDeg = 1.0;
 
 struct Rebound {
@@ -25,10 +26,6 @@ struct Rebound {
   double kept;         // speed once rolling / speed in
   double energy_ratio;
 };
-
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
-}
 
 // Into the top rail (inward normal -y) at `incidence` from its normal, with spin `topspin`
 // (R w / v: 1 rolling, 0 stun, < 0 draw) and side spin R wz / v.
@@ -45,7 +42,7 @@ Rebound rebound(double incidence_deg, double speed, double topspin, double side,
   const Vec2 rolling = out.v - slip(out.v, out.w, r) * (2.0 / 7.0);
   auto from_normal = [](Vec2 u) { return std::atan2(u.x, -u.y) * 180.0 / kPi; };
   return {from_normal(out.v), from_normal(rolling), length(rolling) / speed,
-          energy(out, m, r) / energy(in, m, r)};
+          kineticEnergy(out, m, r) / kineticEnergy(in, m, r)};
 }
 
 TEST(Mathavan, RollingBallMatchesThePublishedFigures) {

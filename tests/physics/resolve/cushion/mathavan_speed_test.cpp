@@ -13,20 +13,16 @@
 #include <cstdio>
 
 #include "nineball/params.hpp"
+#include "nineball/vec2.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/cushion/mathavan_2010/mathavan_2010.hpp"
 
 namespace nineball::physics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 PhysicsParams speedCushion(PhysicsParams p) {
   p.cushion = CushionModel::named("mathavan_speed");
   return p;
-}
-
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
 }
 
 // Straight into the bottom rail (inward normal +y) without spin: normal speed out / in.
@@ -79,7 +75,7 @@ TEST(MathavanSpeed, RollingBankAngleChangesWithSpeed) {
           cushionModel(p.cushion).bounce(in, {0.0, 1.0}, p.ball_mass, p, impulse);
       std::printf("[ measured ] %s, rolling in at 45 deg, %.1f m/s: leaves at %.2f deg\n", name,
                   speed, std::atan2(out.v.x, out.v.y) * 180.0 / kPi);
-      EXPECT_LE(energy(out, p.ball_mass, r), energy(in, p.ball_mass, r));
+      EXPECT_LE(kineticEnergy(out, p.ball_mass, r), kineticEnergy(in, p.ball_mass, r));
     }
   }
 }
@@ -103,7 +99,8 @@ TEST(MathavanSpeed, EnergyNeverRises) {
                         {(2 * next() - 1) * w, (2 * next() - 1) * w, (2 * next() - 1) * w}};
     double impulse = 0.0;
     const Kinematics out = mathavanSpeedBounce(in, {0.0, 1.0}, p.ball_mass, p, impulse);
-    ASSERT_LE(energy(out, p.ball_mass, r), energy(in, p.ball_mass, r) * (1.0 + 1e-12)) << n;
+    ASSERT_LE(kineticEnergy(out, p.ball_mass, r), kineticEnergy(in, p.ball_mass, r) * (1.0 + 1e-12))
+        << n;
     ASSERT_GE(out.v.y, -1e-12) << n;
   }
 }

@@ -20,12 +20,14 @@
 #include "nineball/params.hpp"
 #include "nineball/random.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/vec2.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 
 namespace nineball::physics {
 namespace {
 
-struct Rebound {
+struct StrongeRebound {
   double after_deg;    // right after the impact, from the rail's normal
   double rolling_deg;  // once the cloth has made it roll again
   double kept;         // speed once rolling / speed in
@@ -35,15 +37,11 @@ struct Rebound {
   double impulse;
 };
 
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
-}
-
 // Into the top rail (inward normal -y) at `incidence` from its normal, with spin `topspin`
 // (R w / v about the horizontal axis across the path: 1 rolling, 0 stun, < 0 draw) and side
 // spin R wz / v.
-Rebound rebound(double incidence_deg, double speed, double topspin, double side,
-                const PhysicsParams& p) {
+StrongeRebound strongeRebound(double incidence_deg, double speed, double topspin, double side,
+                              const PhysicsParams& p) {
   const double r = p.ball_radius, m = p.ball_mass, a = degToRad(incidence_deg);
   const Vec2 v{speed * std::sin(a), speed * std::cos(a)};
   const Vec2 d = normalized(v);
@@ -59,7 +57,7 @@ Rebound rebound(double incidence_deg, double speed, double topspin, double side,
           length(rolling) / speed,
           -out.v.y / v.y,
           out.v.x / speed,
-          energy(out, m, r) / energy(in, m, r),
+          kineticEnergy(out, m, r) / kineticEnergy(in, m, r),
           impulse};
 }
 
@@ -132,13 +130,14 @@ TEST(StrongeCushion, HeadOnReboundFollowsTheNoseHeight) {
     PhysicsParams p = PhysicsParams::real();
     p.cushion_restitution = e;
     p.cushion_height = p.ball_radius;
-    EXPECT_NEAR(rebound(0.0, 2.0, 0.0, 0.0, p).normal, e, 1e-12) << "nose at the centre";
+    EXPECT_NEAR(strongeRebound(0.0, 2.0, 0.0, 0.0, p).normal, e, 1e-12) << "nose at the centre";
     p = PhysicsParams::real();
     p.cushion_restitution = e;
     p.cushion_friction = 0.0;
     const double sin_t = (p.cushion_height - p.ball_radius) / p.ball_radius;
     const double cos2 = 1.0 - sin_t * sin_t;
-    EXPECT_NEAR(rebound(0.0, 2.0, 0.0, 0.0, p).normal, std::max(0.0, (1.0 + e) * cos2 - 1.0), 1e-12)
+    EXPECT_NEAR(strongeRebound(0.0, 2.0, 0.0, 0.0, p).normal, std::max(0.0, (1.0 + e) * cos2 - 1.0),
+                1e-12)
         << "frictionless nose";
   }
   const PhysicsParams p = PhysicsParams::real();
@@ -146,7 +145,7 @@ TEST(StrongeCushion, HeadOnReboundFollowsTheNoseHeight) {
   const double cos_t = std::sqrt(1.0 - sin_t * sin_t), e = p.cushion_restitution;
   const double s = springsSlipAfter(sin_t / cos_t, p.cushion_friction, e, 1.8, 200000);
   const double want = (1.0 + e) * cos_t * cos_t - 1.0 + (sin_t * sin_t - s * sin_t * cos_t) / 3.5;
-  const Rebound b = rebound(0.0, 2.0, 0.0, 0.0, p);
+  const StrongeRebound b = strongeRebound(0.0, 2.0, 0.0, 0.0, p);
   std::printf("[ measured ] head-on, no spin: normal speed out/in %.4f (springs %.4f, e %.2f)\n",
               b.normal, want, e);
   EXPECT_NEAR(b.normal, want, 1e-5);
@@ -168,7 +167,7 @@ TEST(StrongeCushion, RollingBallMatchesPooltoolsFigures) {
                              {75, 77.6783, 84.8414, 84.8}};
   for (const auto& [incidence, after, rolling, published] : table) {
     for (double speed : {1.0, 2.0, 3.0}) {
-      const Rebound b = rebound(incidence, speed, 1.0, 0.0, p);
+      const StrongeRebound b = strongeRebound(incidence, speed, 1.0, 0.0, p);
       std::printf(
           "[ measured ] rolling in at %2.0f deg, %.0f m/s: %.4f right after (pooltool %.4f), "
           "%.4f once rolling (%.4f, published %.1f)\n",
@@ -180,7 +179,7 @@ TEST(StrongeCushion, RollingBallMatchesPooltoolsFigures) {
   }
   // Head-on, the speed kept once rolling: 0.5483 by pooltool's statement; physics-models.md
   // gives 0.56 for Stronge and Han together, to two digits, so within 0.02 as for Mathavan.
-  const Rebound head_on = rebound(0.0, 1.0, 1.0, 0.0, p);
+  const StrongeRebound head_on = strongeRebound(0.0, 1.0, 1.0, 0.0, p);
   std::printf("[ measured ] rolling in head-on: keeps %.4f of its speed (pooltool 0.5483)\n",
               head_on.kept);
   EXPECT_NEAR(head_on.kept, 0.5483, 1e-4);
@@ -199,9 +198,9 @@ TEST(StrongeCushion, SideSpinTurnsTheRebound) {
   const PhysicsParams p = PhysicsParams::real();
   for (double top : {1.0, 0.0, -1.0}) {
     for (double incidence : {0.0, 15.0, 30.0, 45.0, 60.0, 75.0}) {
-      const Rebound check = rebound(incidence, 2.0, top, -0.5, p);
-      const Rebound plain = rebound(incidence, 2.0, top, 0.0, p);
-      const Rebound running = rebound(incidence, 2.0, top, 0.5, p);
+      const StrongeRebound check = strongeRebound(incidence, 2.0, top, -0.5, p);
+      const StrongeRebound plain = strongeRebound(incidence, 2.0, top, 0.0, p);
+      const StrongeRebound running = strongeRebound(incidence, 2.0, top, 0.5, p);
       EXPECT_GT(running.along, plain.along) << incidence << " " << top;
       EXPECT_LT(check.along, plain.along) << incidence << " " << top;
       if (incidence <= 30.0) {
@@ -240,7 +239,7 @@ TEST(StrongeCushion, EnergyNeverRises) {
     const Kinematics in = randomApproach(rng, 0.1, 12.0, spin, r);
     double impulse = 0.0;
     const Kinematics out = strongeBounce(in, {0.0, -1.0}, m, p, impulse);
-    const double ratio = energy(out, m, r) / energy(in, m, r);
+    const double ratio = kineticEnergy(out, m, r) / kineticEnergy(in, m, r);
     worst = std::max(worst, ratio);
     ASSERT_LE(ratio, 1.0 + 1e-12) << "case " << i;
     ASSERT_GT(impulse, 0.0);
@@ -266,7 +265,7 @@ TEST(StrongeCushion, EnergyNeverRisesForAnyAllowedCushion) {
     ASSERT_TRUE(std::isfinite(out.v.x) && std::isfinite(out.v.y) && std::isfinite(out.w.x) &&
                 std::isfinite(out.w.y) && std::isfinite(out.w.z) && std::isfinite(impulse))
         << "case " << i;
-    ASSERT_LE(energy(out, m, r), energy(in, m, r) * (1.0 + 1e-12))
+    ASSERT_LE(kineticEnergy(out, m, r), kineticEnergy(in, m, r) * (1.0 + 1e-12))
         << "case " << i << ": h/R " << p.cushion_height / p.ball_radius << " e "
         << p.cushion_restitution << " mu " << p.cushion_friction;
     ASSERT_LE(out.v.y, 0.0) << "case " << i << ": it leaves the cushion";
@@ -327,9 +326,9 @@ TEST(StrongeCushion, TheReboundDoesNotScaleWithSpeedInThisModel) {
   // The springs are linear: every velocity scales with the approach speed, and so the rebound
   // angle and the speed kept are the same at any speed.
   const PhysicsParams p = PhysicsParams::real();
-  const Rebound one = rebound(30.0, 1.0, 0.3, -0.4, p);
+  const StrongeRebound one = strongeRebound(30.0, 1.0, 0.3, -0.4, p);
   for (double speed : {0.1, 4.0, 12.0}) {
-    const Rebound b = rebound(30.0, speed, 0.3, -0.4, p);
+    const StrongeRebound b = strongeRebound(30.0, speed, 0.3, -0.4, p);
     EXPECT_NEAR(b.after_deg, one.after_deg, 1e-9);
     EXPECT_NEAR(b.kept, one.kept, 1e-12);
   }

@@ -15,16 +15,12 @@
 #include "nineball/params.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
+#include "nineball/vec2.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/simultaneous/simultaneous.hpp"
 
 namespace nineball::physics {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
-}
 
 TEST(Corner, WedgeMatchesTheClosedForm) {
   PhysicsParams p = PhysicsParams::paper();
@@ -162,7 +158,7 @@ TEST(Corner, EnergyNeverRises) {
     const Kinematics ball{
         {}, v, {(2 * next() - 1) * w, (2 * next() - 1) * w, (2 * next() - 1) * w}};
     const CornerBounce out = intoCorner(ball, first, second, m, p);
-    ASSERT_LE(energy(out.k, m, r), energy(ball, m, r) * (1.0 + 1e-12)) << k;
+    ASSERT_LE(kineticEnergy(out.k, m, r), kineticEnergy(ball, m, r) * (1.0 + 1e-12)) << k;
     ASSERT_GE(dot(out.k.v, first), -1e-9) << k;
     ASSERT_GE(dot(out.k.v, second), -1e-9) << k;
   }

@@ -17,19 +17,15 @@
 #include "nineball/params.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
+#include "nineball/vec2.hpp"
+#include "physics/model/motion.hpp"
 #include "physics/resolve/simultaneous/simultaneous.hpp"
 
 namespace nineball::physics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double deg(Vec2 v) {
   return std::atan2(v.y, v.x) * 180.0 / kPi;
-}
-
-double energy(const Kinematics& k, double m, double r) {
-  return 0.5 * m * dot(k.v, k.v) + 0.2 * m * r * r * dot(k.w, k.w);
 }
 
 // The paper's frictionless balls and cushion, on a cloth that does not slow them.
@@ -54,7 +50,7 @@ TEST(FrozenBall, LcpMatchesTheClosedForm) {
   const Vec2 cue = n * ((1.0 - 2.0 * (1.0 + e) / 3.0) * V);
   EXPECT_NEAR(hit.a.v.x, cue.x, 1e-12);
   EXPECT_NEAR(hit.a.v.y, cue.y, 1e-12);
-  EXPECT_LE(energy(hit.a, m, r) + energy(hit.b, m, r), energy(a, m, r));
+  EXPECT_LE(kineticEnergy(hit.a, m, r) + kineticEnergy(hit.b, m, r), kineticEnergy(a, m, r));
 }
 
 TEST(FrozenBall, TwoContactSolverPicksTheRightSet) {
@@ -201,8 +197,8 @@ TEST(FrozenBall, EnergyNeverRises) {
                         v,
                         {(2 * next() - 1) * w, (2 * next() - 1) * w, (2 * next() - 1) * w}};
     const FrozenStrike hit = strikeFrozen(ka, kb, ma, mb, {0.0, 1.0}, p);
-    const double in = energy(ka, ma, r) + energy(kb, mb, r);
-    ASSERT_LE(energy(hit.a, ma, r) + energy(hit.b, mb, r), in * (1.0 + 1e-12)) << k;
+    const double in = kineticEnergy(ka, ma, r) + kineticEnergy(kb, mb, r);
+    ASSERT_LE(kineticEnergy(hit.a, ma, r) + kineticEnergy(hit.b, mb, r), in * (1.0 + 1e-12)) << k;
     ASSERT_GE(hit.b.v.y, -1e-9) << k;  // not into the cushion
   }
 }

@@ -134,7 +134,7 @@ Kinematics mathavanBounceInSteps(Kinematics k, Vec2 inward, double mass, const P
 
 namespace {
 
-std::optional<std::string> checkHeight(const PhysicsParams& p) {
+std::optional<std::string> mathavanHeightFault(const PhysicsParams& p) {
   return noseHeightFault(p, "the Mathavan cushion");
 }
 
@@ -145,7 +145,7 @@ CushionModelDef mathavan2010Cushion() {
   m.name = "mathavan";
   m.bounce = mathavanBounce;
   m.reads = {"cushion_height"};
-  m.check = checkHeight;
+  m.check = mathavanHeightFault;
   return m;
 }
 

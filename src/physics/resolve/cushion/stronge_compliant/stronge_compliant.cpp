@@ -22,8 +22,8 @@ constexpr double kBeta = 3.5;
 constexpr double kOmegaRatio = 1.8;
 
 // The nose at most this high on the ball (sin theta): the model refuses noses outside
-// R <= h < 2 R (checkHeight); the cap only keeps the normal approach speed, cos(theta) vy, away
-// from zero for any other input.
+// R <= h < 2 R (strongeHeightFault); the cap only keeps the normal approach speed, cos(theta) vy,
+// away from zero for any other input.
 constexpr double kMaxSinTheta = 0.999;
 
 // Samples of the rest of a sticking phase, searched for the first instant the spring needs
@@ -236,7 +236,7 @@ Kinematics strongeBounce(Kinematics k, Vec2 inward, double mass, const PhysicsPa
 namespace {
 
 // From the centre's height (the contact of pooltool 0.6.0) to below the top.
-std::optional<std::string> checkHeight(const PhysicsParams& p) {
+std::optional<std::string> strongeHeightFault(const PhysicsParams& p) {
   return noseHeightFault(p, "the Stronge cushion");
 }
 
@@ -247,7 +247,7 @@ CushionModelDef strongeCompliantCushion() {
   m.name = "stronge";
   m.bounce = strongeBounce;
   m.reads = {"cushion_height"};
-  m.check = checkHeight;
+  m.check = strongeHeightFault;
   return m;
 }
 
