@@ -2,9 +2,7 @@
 
 #include <SFML/System/Sleep.hpp>
 #include <algorithm>
-#include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,10 +27,6 @@ namespace nineball::window {
 namespace {
 
 constexpr const char* kTitle = "nineball";
-// A screenshot run steps a fixed 1/60 s per frame, so that its picture is always the same.
-constexpr double kFixedFrame = 1.0 / 60.0;
-// A frame longer than this (a stall, a dragged window) counts as this long.
-constexpr double kMaxFrame = 0.25;
 // When nothing moves and no key is held, the window looks at its events this often (s) and
 // redraws only when one came, or at this interval (a window uncovered shows itself again).
 constexpr double kIdlePoll = 0.03;
@@ -85,18 +79,6 @@ void logFrameRate(const FrameTimer& moving, long frames) {
       1.0 / moving.quantile(0.95));
 }
 
-// For the tests that check that no text spills: each line drawn, its box and its room.
-void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>& texts,
-                   unsigned width, unsigned height) {
-  std::ofstream out(path);
-  out << "window 0 0 " << width << ' ' << height << '\n';
-  for (const render::DrawnText& t : texts) {
-    out << "text " << t.box.left << ' ' << t.box.top << ' ' << t.box.width << ' ' << t.box.height
-        << " room " << t.room.left << ' ' << t.room.top << ' ' << t.room.width << ' '
-        << t.room.height << " : " << t.text << '\n';
-  }
-}
-
 bool keyPressed(const sf::Event& event, sf::Keyboard::Key key) {
   return event.type == sf::Event::KeyPressed && event.key.code == key;
 }
@@ -111,16 +93,13 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
       }),
       computer_(start.setup.seed),
       options_(options),
-      capture_(!options.screenshot.empty()),
-      benchmark_(!capture_ && options.frames.has_value()),
-      interactive_(!capture_ && !benchmark_),
+      driver_(CaptureDriver::fromProcess(options)),
       // The start menu, the settings file and the saved rack belong to a game a person starts;
       // screenshots and scripts (the tests) see none of them unless --menu asks.
       show_menu_(!(options.host_port || !options.join.empty()) &&
-                 (options.menu || (interactive_ && options.script.empty()))),
-      keep_rack_(interactive_ && options.script.empty() &&
+                 (options.menu || (driver_.person() && options.script.empty()))),
+      keep_rack_(driver_.person() && options.script.empty() &&
                  !(options.host_port || !options.join.empty())),
-      frame_limit_(options.frames.value_or(capture_ ? 1 : -1)),
       input_(session_, ui_, computer_),
       online_start_(options.host_port || !options.join.empty()) {
   setup_status_ = setUp(start);
@@ -143,11 +122,7 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
   }
   if (const auto status = openDisplay()) return status;
   // Refused before a window opens and frames are drawn for nothing.
-  std::string why;
-  if (capture_ && !canWriteFile(options_.screenshot, why)) {
-    err_ << "nineball: --screenshot: " << why << '\n';
-    return app::kExitBadInput;
-  }
+  if (const auto status = driver_.refuseBeforeWindow(err_)) return status;
   readSettings(start);
   if (online_start_) {
     if (const auto status = startOnline(start)) return status;
@@ -194,16 +169,16 @@ std::optional<int> GameLoop::openDisplay() {
 
 void GameLoop::readSettings(const GameStart& start) {
   // An online game started from the command line still wants the player's remembered name.
-  const bool remembered = show_menu_ || (online_start_ && interactive_);
+  const bool remembered = show_menu_ || (online_start_ && driver_.person());
   settings_ = remembered ? loadSettings(settingsPath()) : Settings{};
   presetFromCommandLine(settings_, options_, start.setup);
 }
 
 void GameLoop::openGameWindow() {
-  if (!capture_) fitDesktop(options_);
-  fullscreen_ = options_.fullscreen && !capture_;
+  if (!driver_.picture()) fitDesktop(options_);
+  fullscreen_ = options_.fullscreen && !driver_.picture();
   window_.emplace();
-  openWindow(*window_, fullscreen_, options_.width, options_.height, interactive_);
+  openWindow(*window_, fullscreen_, options_.width, options_.height, driver_.person());
   painter_.emplace(session_.match().world().table(), *fonts_);
   painter_->resize(window_->getSize().x, window_->getSize().y);
   menu_painter_.emplace(*fonts_);
@@ -221,33 +196,20 @@ StartMenuContext GameLoop::menuContext() {
 }
 
 std::optional<int> GameLoop::startMenu() {
+  if (!show_menu_) return std::nullopt;
   StartMenuContext menu = menuContext();
-  // The tests pick from the menu by keys typed before it shows (NINEBALL_MENU_KEYS="down,
-  // right,enter"), and then take the picture of the game picked.
-  const char* typed = std::getenv("NINEBALL_MENU_KEYS");
-  if (show_menu_ && capture_ && typed) {
-    std::string why;
-    const std::optional<std::vector<MenuKey>> keys = parseMenuKeys(typed, why);
-    if (!keys) {
-      err_ << "nineball: NINEBALL_MENU_KEYS: " << why << '\n';
-      return app::kExitBadInput;
-    }
-    menu.typed = *keys;
-  } else if (show_menu_ && capture_) {
+  if (driver_.picturesMenu(show_menu_)) {
     drawStartMenu(menu, settings_);
-    std::string why;
-    if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
-      err_ << "nineball: --screenshot: " << why << '\n';
-      return app::kExitBadInput;
-    }
-    return 0;
+    return driver_.savePicture(*window_, err_) ? 0 : app::kExitBadInput;
   }
-  if (show_menu_) {
-    MenuModel::Outcome outcome = MenuModel::Outcome::None;
-    if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
-    startOnlineFromMenu(outcome);
-    followTable();
-  }
+  int status = 0;
+  const std::optional<std::vector<MenuKey>> typed = driver_.typedMenuKeys(err_, status);
+  if (!typed) return status;
+  menu.typed = *typed;
+  MenuModel::Outcome outcome = MenuModel::Outcome::None;
+  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
+  startOnlineFromMenu(outcome);
+  followTable();
   return std::nullopt;
 }
 
@@ -266,16 +228,7 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
   config.match = start.online_match;
   config.scripted = !options_.script.empty();
   config.script = start.turns;
-  if (capture_) {
-    // A picture run (the tests) must end: nobody joining or coming back ends it.
-    config.wait_s = 60.0;
-    config.rejoin_s = 20.0;
-    config.stall_s = 60.0;
-    // The tests' shorter wait, in seconds.
-    if (const char* wait = std::getenv("NINEBALL_ONLINE_WAIT")) {
-      config.wait_s = std::clamp(std::atof(wait), 1.0, 600.0);
-    }
-  }
+  driver_.boundOnlineWaits(config);
   if (!beginOnline(config, why)) {
     err_ << "nineball: --host " << config.address.port << ": " << why << '\n';
     return 1;
@@ -334,18 +287,22 @@ void GameLoop::updateOnline(double dt) {
   }
 }
 
-// --screenshot online: the picture once this side is done with the rack (or the game ended).
-bool GameLoop::onlineCaptureDue() const {
-  if (options_.frames) return frame_ >= frame_limit_;  // a picture of the game as it stands
-  return online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
+// How the online game stands, for a picture run's end: done once this side is done with the
+// rack (or the game ended).
+std::optional<CaptureDriver::OnlineEnd> GameLoop::onlineEnd() const {
+  if (!online_) return std::nullopt;
+  CaptureDriver::OnlineEnd end;
+  end.done = online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
+  if (online_->failed()) end.failure = online_->why();
+  return end;
 }
 
 void GameLoop::prepareFrames(const GameStart& start) {
   sounds_ = options_.mute ? nullptr : audio::ImpactSounds::open();
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
-  computer_.setWaitForPlans(capture_);
-  if (options_.frames && start.turns.empty() && !online_) session_.shoot();  // a demo break
+  computer_.setWaitForPlans(driver_.picture());
+  if (driver_.breaksForDemo() && start.turns.empty() && !online_) session_.shoot();
   if (options_.replay) session_.startReplay(false);
   logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
                        sounds_ ? "sound on" : "no sound");
@@ -375,21 +332,14 @@ int GameLoop::run() {
     if (waitWhileIdle(changed)) continue;
     const bool rolling = advance();
     draw();
-    if (capture_ && online_ && onlineCaptureDue()) {
-      if (online_->failed() && !options_.frames) {
-        err_ << "nineball: online: " << online_->why() << '\n';
-        return 1;
-      }
-      if (!saveCapture()) return app::kExitBadInput;
-      break;
-    }
-    if (capture_ && !online_ && frame_ >= frame_limit_) {
-      if (!saveCapture()) return app::kExitBadInput;
-      break;
-    }
+    int status = 0;
+    const CaptureDriver::Next next =
+        driver_.afterDraw(frame_, onlineEnd(), *window_, *painter_, err_, status);
+    if (next == CaptureDriver::Next::Fail) return status;
+    if (next == CaptureDriver::Next::Finish) break;
     takeRequestedScreenshot();
     present(rolling);
-    if (benchmark_ && frame_ >= frame_limit_) break;
+    if (driver_.benchmarkDone(frame_)) break;
     answerRequests();
     capFrameRate();
   }
@@ -466,7 +416,8 @@ bool GameLoop::waitWhileIdle(bool changed) {
   const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
                      !session_.replaying() && !computer_.controls(session_) && !input_.keysHeld() &&
                      ui_.drag == Drag::None;
-  if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
+  if (driver_.person() && still && !changed &&
+      since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
     frame_clock_.restart();
     return true;
@@ -477,8 +428,7 @@ bool GameLoop::waitWhileIdle(bool changed) {
 // One frame of play: the held keys, the computer, the balls. True when the balls were rolling
 // as the frame began (its time counts in the frame rate while balls move).
 bool GameLoop::advance() {
-  const double dt =
-      capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
+  const double dt = driver_.frameSeconds(frame_clock_.restart().asSeconds());
   input_.update(dt);
   updateOnline(dt);
   playWatchedTurn(dt);
@@ -527,20 +477,6 @@ void GameLoop::draw() {
   }
   since_draw_.restart();
   ++frame_;
-}
-
-// --screenshot: the picture after the frames asked for. False when it could not be saved.
-bool GameLoop::saveCapture() {
-  std::string why;
-  if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
-    err_ << "nineball: --screenshot: " << why << '\n';
-    return false;
-  }
-  logger("game")->info("saved {} after {} frames", options_.screenshot, frame_);
-  if (const char* boxes = std::getenv("NINEBALL_HUD_TEXTS")) {
-    writeHudTexts(boxes, painter_->hudTexts(), window_->getSize().x, window_->getSize().y);
-  }
-  return true;
 }
 
 // F12: the picture as drawn, before it is shown.
@@ -593,7 +529,7 @@ void GameLoop::answerRequests() {
 }
 
 void GameLoop::capFrameRate() {
-  if (interactive_ && settings_.frame_cap > 0) {
+  if (driver_.person() && settings_.frame_cap > 0) {
     const double spare = 1.0 / settings_.frame_cap - frame_clock_.getElapsedTime().asSeconds();
     if (spare > 0.0) sf::sleep(sf::seconds(static_cast<float>(spare)));
   }

@@ -13,6 +13,7 @@
 #include "render/menu_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "render/sfml_errors.hpp"
+#include "window/capture_driver.hpp"
 #include "window/computer_player.hpp"
 #include "window/display_probe.hpp"
 #include "window/frame_timer.hpp"
@@ -61,7 +62,7 @@ class GameLoop {
   void updateOnline(double dt);
   void playWatchedTurn(double dt);
   void followTable();
-  bool onlineCaptureDue() const;
+  std::optional<CaptureDriver::OnlineEnd> onlineEnd() const;
 
   // The steps of one frame, in their order.
   bool handleEvents();
@@ -71,7 +72,6 @@ class GameLoop {
   bool advance();
   void draw();
   void zoomView(const render::Frame& picture);
-  bool saveCapture();
   void takeRequestedScreenshot();
   void present(bool rolling);
   void answerRequests();
@@ -94,12 +94,9 @@ class GameLoop {
   std::optional<render::Fonts> fonts_;
   std::optional<render::SfmlErrorsToLog> sfml_log_;
   app::GameOptions options_;
-  const bool capture_;      // --screenshot: draw, save the picture, exit
-  const bool benchmark_;    // --frames without --screenshot
-  const bool interactive_;  // a person plays
+  const CaptureDriver driver_;  // a person, a picture run or a benchmark runs the frames
   const bool show_menu_;
   const bool keep_rack_;
-  const long frame_limit_;
   Settings settings_;
   bool fullscreen_ = false;
   std::optional<sf::RenderWindow> window_;
