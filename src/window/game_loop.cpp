@@ -91,7 +91,7 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
       count_([this](int seat, const TurnRecord& record, bool was_break) {
         stats_.record(seat, record, was_break);
       }),
-      computer_(start.setup.seed),
+      seats_(start.setup.seed),
       options_(options),
       driver_(CaptureDriver::fromProcess(options)),
       // The start menu, the settings file and the saved rack belong to a game a person starts;
@@ -100,7 +100,7 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
                  (options.menu || (driver_.person() && options.script.empty()))),
       keep_rack_(driver_.person() && options.script.empty() &&
                  !(options.host_port || !options.join.empty())),
-      input_(session_, ui_, computer_),
+      input_(session_, ui_, seats_),
       online_start_(options.host_port || !options.join.empty()) {
   setup_status_ = setUp(start);
 }
@@ -115,7 +115,7 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
   ui_.leave_to_menu = show_menu_;
   ui_.rack_kept = keep_rack_;
   if (!options_.practice) {
-    computer_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
+    seats_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
   }
   if (!online_start_) {
     if (const auto status = playScript(start)) return status;
@@ -189,7 +189,7 @@ StartMenuContext GameLoop::menuContext() {
   return {*window_,
           *painter_,
           *menu_painter_,
-          [this] { return buildFrame(session_, ui_, computer_); },
+          [this] { return buildFrame(session_, ui_, seats_); },
           options_.mute,
           drawsFreshSeeds(options_),
           {}};
@@ -207,7 +207,7 @@ std::optional<int> GameLoop::startMenu() {
   if (!typed) return status;
   menu.typed = *typed;
   MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
+  if (!runStartMenu(menu, session_, seats_, settings_, count_, &outcome)) return 0;
   startOnlineFromMenu(outcome);
   followTable();
   return std::nullopt;
@@ -246,9 +246,9 @@ bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
   if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
   online_ = OnlinePlay::start(config, why);
   if (!online_) return false;
-  computer_.setOpponent(session_, HumanSeat{});
-  computer_.setRemote(online_.get());
+  seats_.setOpponent(session_, HumanSeat{});
   const int own = config.side == net::Side::Host ? 0 : 1;
+  seats_.setRemote(1 - own, *online_);
   session_.setSeatName(own, config.name);
   session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
   return true;
@@ -301,7 +301,7 @@ void GameLoop::prepareFrames(const GameStart& start) {
   sounds_ = options_.mute ? nullptr : audio::ImpactSounds::open();
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
-  computer_.setWaitForPlans(driver_.picture());
+  seats_.computer().setWaitForPlans(driver_.picture());
   if (driver_.breaksForDemo() && start.turns.empty() && !online_) session_.shoot();
   if (options_.replay) session_.startReplay(false);
   logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
@@ -385,8 +385,8 @@ void GameLoop::handleEvent(const sf::Event& event) {
     input_.handle(event, painter_->view());
     // The menu offers the opponent last played, O's change included.
     if (keyPressed(event, sf::Keyboard::O) && !session_.practice() &&
-        !(settings_.last.opponent == computer_.opponent())) {
-      settings_.last.opponent = computer_.opponent();
+        !(settings_.last.opponent == seats_.opponent())) {
+      settings_.last.opponent = seats_.opponent();
       saveSettingsNow();
     }
   }
@@ -414,7 +414,7 @@ bool GameLoop::waitWhileIdle(bool changed) {
   // instead of drawing the same picture again (the idle window costs next to nothing).
   const bool watching = next_watched_ < watched_.size();
   const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
-                     !session_.replaying() && !computer_.controls(session_) && !input_.keysHeld() &&
+                     !session_.replaying() && !seats_.controls(session_) && !input_.keysHeld() &&
                      ui_.drag == Drag::None;
   if (driver_.person() && still && !changed &&
       since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
@@ -434,7 +434,7 @@ bool GameLoop::advance() {
   playWatchedTurn(dt);
   // The computer waits while the help or the quit question is open, as a player would.
   if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
-    computer_.update(session_, dt);
+    seats_.update(session_, dt);
   }
   const bool rolling = session_.phase() == Phase::Rolling;
   const auto impacts = session_.advance(dt);
@@ -448,7 +448,7 @@ bool GameLoop::advance() {
 }
 
 void GameLoop::draw() {
-  render::Frame picture = buildFrame(session_, ui_, computer_);
+  render::Frame picture = buildFrame(session_, ui_, seats_);
   picture.guide_scale = guideLengthFactor(settings_.guide);
   if (settings_.guide == GuideLength::Off) {
     picture.guide.reset();
@@ -542,7 +542,7 @@ void GameLoop::saveRackInPlay() {
   if (session_.phase() == Phase::GameOver || session_.rackTurns().empty()) return;
   const std::string path = rackSavePath();
   std::string why;
-  if (saveRack(saveOf(session_, computer_.opponent()), path, why)) {
+  if (saveRack(saveOf(session_, seats_.opponent()), path, why)) {
     logger("game")->info("rack saved to {}", path);
   } else {
     logger("game")->warn("rack not saved: {}", why);
@@ -553,7 +553,7 @@ void GameLoop::saveRackInPlay() {
 void GameLoop::backToMenu() {
   if (online_) {
     online_->leave("the player left to the menu");
-    computer_.setRemote(nullptr);
+    seats_.clearRemote();
     online_.reset();
   } else {
     saveRackInPlay();
@@ -566,7 +566,7 @@ void GameLoop::backToMenu() {
   forgotten_rack_ = 0;
   StartMenuContext menu = menuContext();
   MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) {
+  if (!runStartMenu(menu, session_, seats_, settings_, count_, &outcome)) {
     window_->close();
     return;
   }
@@ -583,7 +583,7 @@ int GameLoop::finish() {
   if (online_) {
     // An online rack is not a saved rack to resume alone.
     online_->leave("the player quit");
-    computer_.setRemote(nullptr);
+    seats_.clearRemote();
     online_.reset();
   } else {
     saveRackInPlay();

@@ -14,7 +14,6 @@
 #include "render/scene_painter.hpp"
 #include "render/sfml_errors.hpp"
 #include "window/capture_driver.hpp"
-#include "window/computer_player.hpp"
 #include "window/display_probe.hpp"
 #include "window/frame_timer.hpp"
 #include "window/game_input.hpp"
@@ -22,6 +21,7 @@
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
 #include "window/online_play.hpp"
+#include "window/seats/seats.hpp"
 #include "window/session_stats.hpp"
 #include "window/settings.hpp"
 #include "window/start_menu.hpp"
@@ -88,7 +88,7 @@ class GameLoop {
   GameSession session_;
   SessionStats stats_;
   const GameSession::TurnObserver count_;
-  ComputerPlayer computer_;
+  Seats seats_;  // who plays each seat: a person here, the computer, a player online
   // Made in the setup's order, once the steps before them went through.
   std::optional<DisplayConnection> display_;
   std::optional<render::Fonts> fonts_;

@@ -58,9 +58,8 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
                         menuPicture(model));
 }
 
-bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings, const GameSession::TurnObserver& observer,
-                  MenuModel::Outcome* outcome_out) {
+bool runStartMenu(StartMenuContext& ctx, GameSession& session, Seats& seats, Settings& settings,
+                  const GameSession::TurnObserver& observer, MenuModel::Outcome* outcome_out) {
   const std::string rack_path = rackSavePath();
   const std::optional<SavedRack> saved = loadRack(rack_path);
   MenuModel model = startModel(ctx, settings, saved);
@@ -91,7 +90,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
       resumed.setTurnObserver(observer);
       replayRack(resumed, *saved);
       session = std::move(resumed);
-      computer.setOpponent(session, saved->opponent);
+      seats.setOpponent(session, saved->opponent);
       session.setSeatName(0, saved->names[0]);
       if (!isComputer(saved->opponent)) session.setSeatName(1, saved->names[1]);
       session.say("Rack resumed: " + describeSavedRack(*saved) + ".");
@@ -111,14 +110,14 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   if (choice.points > 0) setup.points = choice.points;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);
-    computer.setOpponent(session, HumanSeat{});
+    seats.setOpponent(session, HumanSeat{});
     return true;
   }
   session = GameSession(setup);
   session.setBestOf(choice.best_of);
   session.setBreaks(choice.breaks);
   session.setTurnObserver(observer);
-  computer.setOpponent(session, choice.opponent);
+  seats.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);
   if (!isComputer(choice.opponent)) session.setSeatName(1, choice.names[1]);
   return true;

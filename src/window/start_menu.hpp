@@ -7,10 +7,10 @@
 #include "app/game_options.hpp"
 #include "render/menu_painter.hpp"
 #include "render/scene_painter.hpp"
-#include "window/computer_player.hpp"
 #include "window/game_session.hpp"
 #include "window/menu.hpp"
 #include "window/rack_save.hpp"
+#include "window/seats/seats.hpp"
 #include "window/settings.hpp"
 
 namespace nineball::window {
@@ -51,8 +51,7 @@ void drawStartMenu(StartMenuContext& ctx, const Settings& settings);
 ///
 /// "Play online: host / join" start the game chosen as Play does (a joiner's is replaced by the
 /// host's once welcomed); `outcome`, when given, says which of them was chosen.
-bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings, const GameSession::TurnObserver& observer,
-                  MenuModel::Outcome* outcome = nullptr);
+bool runStartMenu(StartMenuContext& ctx, GameSession& session, Seats& seats, Settings& settings,
+                  const GameSession::TurnObserver& observer, MenuModel::Outcome* outcome = nullptr);
 
 }  // namespace nineball::window
