@@ -18,6 +18,8 @@
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/rack_seed.hpp"
+#include "window/screens/settings_screen.hpp"
+#include "window/screens/start_menu_screen.hpp"
 #include "window/seat_token_file.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
@@ -128,6 +130,7 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
     if (const auto status = startOnline(start)) return status;
   }
   openGameWindow();
+  screens_.push(std::make_unique<TableScreen>(static_cast<Table&>(*this)));
   if (const auto status = startMenu()) return status;
   prepareFrames(start);
   return std::nullopt;
@@ -205,12 +208,55 @@ std::optional<int> GameLoop::startMenu() {
   int status = 0;
   const std::optional<std::vector<MenuKey>> typed = driver_.typedMenuKeys(err_, status);
   if (!typed) return status;
+  if (typed->empty()) {
+    showStartMenu();  // the player chooses as the frames go
+    return std::nullopt;
+  }
+  // A picture run's choice, made before the first frame.
   menu.typed = *typed;
   MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!runStartMenu(menu, session_, seats_, settings_, count_, &outcome)) return 0;
+  if (!chooseByTypedKeys(menu, session_, seats_, settings_, count_, &outcome)) return 0;
   startOnlineFromMenu(outcome);
   followTable();
   return std::nullopt;
+}
+
+// The start menu over the table, on the one event loop; menuClosed() once the player chose.
+void GameLoop::showStartMenu() {
+  screens_.push(std::make_unique<StartMenuScreen>(
+      menuContext(), session_, seats_, settings_, count_,
+      [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); }));
+}
+
+void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {
+  if (!started) {
+    window_->close();
+    return;
+  }
+  startOnlineFromMenu(outcome);
+  followTable();
+  applySound();
+  if (demo_due_) {
+    demo_due_ = false;
+    beginFrames();
+  }
+  frame_clock_.restart();
+  display_clock_.restart();
+  since_draw_.restart();
+}
+
+// F2: the settings over the table, applied as they change and saved as they close.
+void GameLoop::openSettings() {
+  SettingsScreen::Hooks hooks;
+  hooks.changed = [this](const Settings& settings) {
+    settings_ = settings;
+    applySound();
+  };
+  hooks.let_go = [this](const sf::Event& event) { input_.handle(event, painter_->view()); };
+  hooks.screenshot = [this] { input_.requests().screenshot = true; };
+  hooks.closed = [this] { saveSettingsNow(); };
+  screens_.push(std::make_unique<SettingsScreen>(settings_, options_.mute, *window_, *menu_painter_,
+                                                 std::move(hooks)));
 }
 
 // --host / --join: the link, and this side's seat named. Nothing when the game goes on.
@@ -302,14 +348,25 @@ void GameLoop::prepareFrames(const GameStart& start) {
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
   seats_.computer().setWaitForPlans(driver_.picture());
-  if (driver_.breaksForDemo() && start.turns.empty() && !online_) session_.shoot();
-  if (options_.replay) session_.startReplay(false);
+  demo_break_ = driver_.breaksForDemo() && start.turns.empty() && !online_;
+  // Under a start menu, the game the frames show is the one chosen there.
+  if (screens_.size() > 1) {
+    demo_due_ = true;
+  } else {
+    beginFrames();
+  }
   logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
                        sounds_ ? "sound on" : "no sound");
   // The frames' clocks start with the first frame, not with the setup and its menu.
   frame_clock_.restart();
   display_clock_.restart();
   since_draw_.restart();
+}
+
+// --frames' demo break, --replay's shot again: the first frames' play.
+void GameLoop::beginFrames() {
+  if (demo_break_) session_.shoot();
+  if (options_.replay) session_.startReplay(false);
 }
 
 void GameLoop::applySound() {
@@ -330,7 +387,8 @@ int GameLoop::run() {
     const bool changed = handleEvents();
     if (!window_->isOpen()) break;
     if (waitWhileIdle(changed)) continue;
-    const bool rolling = advance();
+    rolling_ = false;
+    screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
     draw();
     int status = 0;
     const CaptureDriver::Next next =
@@ -338,7 +396,7 @@ int GameLoop::run() {
     if (next == CaptureDriver::Next::Fail) return status;
     if (next == CaptureDriver::Next::Finish) break;
     takeRequestedScreenshot();
-    present(rolling);
+    present(rolling_);
     if (driver_.benchmarkDone(frame_)) break;
     answerRequests();
     capFrameRate();
@@ -354,24 +412,25 @@ bool GameLoop::handleEvents() {
   bool changed = frame_ == 0;
   while (window_->pollEvent(event)) {
     changed = true;
-    handleEvent(event);
+    if (event.type == sf::Event::Closed) {
+      window_->close();
+    } else if (event.type == sf::Event::Resized) {
+      const float w = static_cast<float>(event.size.width);
+      const float h = static_cast<float>(event.size.height);
+      window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
+      painter_->resize(w, h);
+    } else {
+      screens_.event(event);
+    }
+    // A screen done (a game chosen, the settings closed) leaves before the next event.
+    if (screens_.removeFinished()) followTable();
   }
   return changed;
 }
 
-void GameLoop::handleEvent(const sf::Event& event) {
-  if (event.type == sf::Event::Closed) {
-    window_->close();
-  } else if (event.type == sf::Event::Resized) {
-    const float w = static_cast<float>(event.size.width);
-    const float h = static_cast<float>(event.size.height);
-    window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
-    painter_->resize(w, h);
-  } else if (settings_menu_) {
-    handleSettingsMenuEvent(event);
-  } else if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
-    settings_menu_ = MenuModel::settingsOnly(settings_);
-    settings_menu_->setMutedByOption(options_.mute);
+void GameLoop::tableEvent(const sf::Event& event) {
+  if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
+    openSettings();
   } else if (keyPressed(event, sf::Keyboard::O) && online_) {
     session_.say("Online, the other seat is " + online_->peerName() + "'s.");
   } else if (keyPressed(event, sf::Keyboard::M) && options_.mute) {
@@ -392,31 +451,11 @@ void GameLoop::handleEvent(const sf::Event& event) {
   }
 }
 
-void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
-  if (keyPressed(event, sf::Keyboard::F2)) settings_menu_->key(MenuKey::Escape);
-  if (keyPressed(event, sf::Keyboard::F12)) input_.requests().screenshot = true;
-  // A key held when the settings opened is still let go in the game.
-  if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
-    input_.handle(event, painter_->view());
-  }
-  handleMenuEvent(*settings_menu_, event, window_->getSize().x, window_->getSize().y);
-  settings_ = settings_menu_->settings();
-  applySound();
-  if (settings_menu_->outcome() != MenuModel::Outcome::None) {
-    settings_menu_.reset();
-    saveSettingsNow();
-  }
-}
-
 // True when the frame is skipped.
 bool GameLoop::waitWhileIdle(bool changed) {
   // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
   // instead of drawing the same picture again (the idle window costs next to nothing).
-  const bool watching = next_watched_ < watched_.size();
-  const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
-                     !session_.replaying() && !seats_.controls(session_) && !input_.keysHeld() &&
-                     ui_.drag == Drag::None;
-  if (driver_.person() && still && !changed &&
+  if (driver_.person() && !screens_.busy() && !changed &&
       since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
     frame_clock_.restart();
@@ -425,18 +464,24 @@ bool GameLoop::waitWhileIdle(bool changed) {
   return false;
 }
 
-// One frame of play: the held keys, the computer, the balls. True when the balls were rolling
-// as the frame began (its time counts in the frame rate while balls move).
-bool GameLoop::advance() {
-  const double dt = driver_.frameSeconds(frame_clock_.restart().asSeconds());
+bool GameLoop::tableBusy() const {
+  const bool watching = next_watched_ < watched_.size();
+  return online_ || watching || session_.phase() == Phase::Rolling || session_.replaying() ||
+         seats_.controls(session_) || input_.keysHeld() || ui_.drag != Drag::None;
+}
+
+// One frame of play: the held keys, the computer, the balls. Notes whether the balls were
+// rolling as the frame began (its time counts in the frame rate while balls move).
+void GameLoop::advanceTable(double dt, bool on_top) {
   input_.update(dt);
   updateOnline(dt);
   playWatchedTurn(dt);
-  // The computer waits while the help or the quit question is open, as a player would.
-  if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
+  // The computer waits while the help, the quit question or the settings are open, as a player
+  // would.
+  if (!ui_.help && !ui_.confirm_quit && on_top && !session_.replaying()) {
     seats_.update(session_, dt);
   }
-  const bool rolling = session_.phase() == Phase::Rolling;
+  rolling_ = session_.phase() == Phase::Rolling;
   const auto impacts = session_.advance(dt);
   if (keep_rack_ && !online_ && session_.phase() == Phase::GameOver &&
       forgotten_rack_ != session_.rackNumber()) {
@@ -444,10 +489,15 @@ bool GameLoop::advance() {
     forgotten_rack_ = session_.rackNumber();
   }
   if (sounds_ && !impacts.empty()) sounds_->play(impacts);
-  return rolling;
 }
 
 void GameLoop::draw() {
+  screens_.draw(*window_);
+  since_draw_.restart();
+  ++frame_;
+}
+
+void GameLoop::drawTable(sf::RenderTarget& target) {
   render::Frame picture = buildFrame(session_, ui_, seats_);
   picture.guide_scale = guideLengthFactor(settings_.guide);
   if (settings_.guide == GuideLength::Off) {
@@ -470,13 +520,7 @@ void GameLoop::draw() {
       picture.hud.status = online_->banner(session_);
     }
   }
-  painter_->draw(*window_, picture);
-  if (settings_menu_) {
-    menu_painter_->draw(*window_, window_->getSize().x, window_->getSize().y,
-                        menuPicture(*settings_menu_));
-  }
-  since_draw_.restart();
-  ++frame_;
+  painter_->draw(target, picture);
 }
 
 // F12: the picture as drawn, before it is shown.
@@ -564,21 +608,12 @@ void GameLoop::backToMenu() {
   ui_.rack_kept = rack_kept;
   stats_ = SessionStats{};
   forgotten_rack_ = 0;
-  StartMenuContext menu = menuContext();
-  MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!runStartMenu(menu, session_, seats_, settings_, count_, &outcome)) {
-    window_->close();
-    return;
-  }
-  startOnlineFromMenu(outcome);
-  followTable();
-  applySound();
-  frame_clock_.restart();
-  display_clock_.restart();
-  since_draw_.restart();
+  showStartMenu();
 }
 
 int GameLoop::finish() {
+  // A screen still open over the table closes as its own way out would (the settings kept).
+  screens_.closeDownTo(1);
   logFrameRate(moving_, frame_);
   if (online_) {
     // An online rack is not a saved rack to resume alone.

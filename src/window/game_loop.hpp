@@ -21,6 +21,8 @@
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
 #include "window/online_play.hpp"
+#include "window/screens/screen_stack.hpp"
+#include "window/screens/table_screen.hpp"
 #include "window/seats/seats.hpp"
 #include "window/session_stats.hpp"
 #include "window/settings.hpp"
@@ -30,10 +32,12 @@
 namespace nineball::window {
 
 /// The game window from start to end. Construction sets the game up: the script's turns, the
-/// display and the fonts, the window, the start menu. run() then goes round the frame: the
-/// events, the shot and the computer, the picture, the screenshots, the wait when nothing
-/// moves; and at the end keeps the rack in play for the next start.
-class GameLoop {
+/// display and the fonts, the window, the start menu. run() is the window's one event loop: it
+/// goes round the frame for the screens on its stack (the table, the start menu and the
+/// settings over it): the events, the shot and the computer, the picture, the screenshots, the
+/// wait when nothing moves; and at the end keeps the rack in play for the next start. It plays
+/// the table screen's part itself (Table).
+class GameLoop : private Table {
  public:
   GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err);
   GameLoop(const GameLoop&) = delete;
@@ -55,6 +59,10 @@ class GameLoop {
   void openGameWindow();
   StartMenuContext menuContext();
   std::optional<int> startMenu();
+  void showStartMenu();
+  void menuClosed(MenuModel::Outcome outcome, bool started);
+  void openSettings();
+  void beginFrames();
   void prepareFrames(const GameStart& start);
   std::optional<int> startOnline(const GameStart& start);
   bool beginOnline(OnlineConfig config, std::string& why);
@@ -66,11 +74,13 @@ class GameLoop {
 
   // The steps of one frame, in their order.
   bool handleEvents();
-  void handleEvent(const sf::Event& event);
-  void handleSettingsMenuEvent(const sf::Event& event);
   bool waitWhileIdle(bool changed);
-  bool advance();
   void draw();
+  // Table: the table screen's part.
+  void tableEvent(const sf::Event& event) override;
+  void advanceTable(double seconds, bool on_top) override;
+  void drawTable(sf::RenderTarget& target) override;
+  bool tableBusy() const override;
   void zoomView(const render::Frame& picture);
   void takeRequestedScreenshot();
   void present(bool rolling);
@@ -104,7 +114,10 @@ class GameLoop {
   UiState ui_;
   std::optional<render::MenuPainter> menu_painter_;
   std::unique_ptr<audio::ImpactSounds> sounds_;
-  std::optional<MenuModel> settings_menu_;  // F2: the settings over the game
+  ScreenStack screens_;      // the table at the bottom; the start menu or the settings over it
+  bool rolling_ = false;     // the balls rolled as the frame's play began (its time is counted)
+  bool demo_break_ = false;  // --frames on a table with no script: a break to watch
+  bool demo_due_ = false;    // --frames' demo break and --replay wait for the start menu's game
   GameInput input_;
   FrameTimer moving_;
   sf::Clock frame_clock_;
