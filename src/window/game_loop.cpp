@@ -386,7 +386,8 @@ int GameLoop::run() {
   while (window_->isOpen()) {
     const bool changed = handleEvents();
     if (!window_->isOpen()) break;
-    if (waitWhileIdle(changed)) continue;
+    // A screen that came or went (the menu opened by Esc) is drawn at once.
+    if (waitWhileIdle(screens_.takeChanged() || changed)) continue;
     rolling_ = false;
     screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
     draw();

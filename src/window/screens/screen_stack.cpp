@@ -44,6 +44,7 @@ bool ScreenStack::removeFinished() {
     done->closed();
     removed = true;
   }
+  changed_ = changed_ || removed;
   return removed;
 }
 
@@ -52,6 +53,7 @@ void ScreenStack::closeDownTo(std::size_t keep) {
     std::unique_ptr<Screen> done = std::move(screens_.back());
     screens_.pop_back();
     done->closed();
+    changed_ = true;
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "window/screens/screen.hpp"
@@ -12,7 +13,10 @@ namespace nineball::window {
 /// draws it.
 class ScreenStack {
  public:
-  void push(std::unique_ptr<Screen> screen) { screens_.push_back(std::move(screen)); }
+  void push(std::unique_ptr<Screen> screen) {
+    screens_.push_back(std::move(screen));
+    changed_ = true;
+  }
   bool empty() const { return screens_.empty(); }
   std::size_t size() const { return screens_.size(); }
   /// The screen on top (the stack must not be empty).
@@ -31,12 +35,15 @@ class ScreenStack {
   /// Takes the screens above the lowest `keep` off, top first, telling each it closed (the
   /// window closing under them).
   void closeDownTo(std::size_t keep);
+  /// True once after a screen came or went: the picture must be drawn again at once.
+  bool takeChanged() { return std::exchange(changed_, false); }
 
  private:
   /// The lowest screen in sight: the topmost that covers the rest, else the bottom one.
   std::size_t lowestInSight() const;
 
   std::vector<std::unique_ptr<Screen>> screens_;
+  bool changed_ = false;
 };
 
 }  // namespace nineball::window

@@ -112,6 +112,20 @@ TEST(ScreenStack, AFinishedScreenLeavesAndIsToldAndMayOpenAnother) {
                                       "table update beneath", "table draw", "settings draw"}));
 }
 
+TEST(ScreenStack, AScreenThatCameOrWentAsksForThePictureAtOnce) {
+  Stack s;
+  s.push("table", true);
+  EXPECT_TRUE(s.screens.takeChanged());
+  EXPECT_FALSE(s.screens.takeChanged());
+  NamedScreen& menu = s.push("menu", true);  // Esc's menu, with no event to draw it
+  EXPECT_TRUE(s.screens.takeChanged());
+  s.screens.removeFinished();
+  EXPECT_FALSE(s.screens.takeChanged());
+  menu.finished_ = true;
+  s.screens.removeFinished();
+  EXPECT_TRUE(s.screens.takeChanged());
+}
+
 TEST(ScreenStack, ClosingTheWindowClosesWhatLiesOverTheTable) {
   Stack s;
   s.push("table", true);
