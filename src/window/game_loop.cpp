@@ -225,7 +225,8 @@ std::optional<int> GameLoop::startMenu() {
 void GameLoop::showStartMenu() {
   screens_.push(std::make_unique<StartMenuScreen>(
       menuContext(), session_, seats_, settings_, count_,
-      [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); }));
+      [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); },
+      [this](const sf::Event& event) { input_.handle(event, painter_->view()); }));
 }
 
 void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {

@@ -6,17 +6,23 @@ namespace nineball::window {
 
 StartMenuScreen::StartMenuScreen(StartMenuContext ctx, GameSession& session, Seats& seats,
                                  Settings& settings, const GameSession::TurnObserver& observer,
-                                 Done done)
+                                 Done done, LetGo let_go)
     : ctx_(std::move(ctx)),
       session_(session),
       seats_(seats),
       settings_(settings),
       observer_(observer),
       done_(std::move(done)),
+      let_go_(std::move(let_go)),
       saved_(loadRack(rackSavePath())),
       model_(openStartMenu(ctx_, settings_, saved_)) {}
 
 void StartMenuScreen::event(const sf::Event& event) {
+  // Else the table would take the key that opened the menu for still held, and ignore its next
+  // press.
+  if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
+    let_go_(event);
+  }
   handleMenuEvent(model_, event, ctx_.window.getSize().x, ctx_.window.getSize().y);
 }
 

@@ -16,9 +16,11 @@ namespace nineball::window {
 class StartMenuScreen : public Screen {
  public:
   using Done = std::function<void(MenuModel::Outcome outcome, bool started)>;
+  /// A key held at the table when the menu opened (Esc) is let go there.
+  using LetGo = std::function<void(const sf::Event&)>;
 
   StartMenuScreen(StartMenuContext ctx, GameSession& session, Seats& seats, Settings& settings,
-                  const GameSession::TurnObserver& observer, Done done);
+                  const GameSession::TurnObserver& observer, Done done, LetGo let_go);
 
   void event(const sf::Event& event) override;
   void update(double, bool) override {}
@@ -34,6 +36,7 @@ class StartMenuScreen : public Screen {
   Settings& settings_;
   const GameSession::TurnObserver& observer_;
   Done done_;
+  LetGo let_go_;
   std::optional<SavedRack> saved_;  // the rack "Resume rack" picks up, as the menu opened
   MenuModel model_;
 };
