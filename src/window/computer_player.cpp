@@ -145,16 +145,11 @@ bool ComputerPlayer::computerTurn(const GameSession& session) const {
          (phase == Phase::Aiming || phase == Phase::PushOutChoice);
 }
 
-bool ComputerPlayer::remoteTurn(const GameSession& session) const {
-  return remote_ && remote_->controls(session);
-}
-
 bool ComputerPlayer::controls(const GameSession& session) const {
-  return (computerTurn(session) && !stuck_) || remoteTurn(session);
+  return computerTurn(session) && !stuck_;
 }
 
 bool ComputerPlayer::showsCue() const {
-  if (remote_ && remote_->showsCue()) return true;
   return stage_ == Stage::Aiming || stage_ == Stage::Cueing || stage_ == Stage::Striking;
 }
 
@@ -164,7 +159,6 @@ std::optional<Vec2> ComputerPlayer::carriedCue() const {
 }
 
 std::string ComputerPlayer::status(const GameSession& session) const {
-  if (remoteTurn(session)) return remote_->status(session);
   const std::string name = session.seatName(kSeat);
   switch (stage_) {
     case Stage::Idle:

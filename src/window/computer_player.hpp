@@ -32,21 +32,6 @@ using Thinker =
 /// with the level's error.
 ComputerMove planMove(ai::Planner& planner, const ai::PlanInput& in, bool deciding);
 
-/// A player at another computer (online play): while it holds the turn the keyboard and the
-/// mouse must not play it, and the frame shows its cue as it aims over there.
-class RemoteControl {
- public:
-  virtual ~RemoteControl() = default;
-  /// True while this window must not play: the other side's move, or no settled link.
-  virtual bool controls(const GameSession& session) const = 0;
-  /// True when the other side's cue is shown (it is aiming).
-  virtual bool showsCue() const = 0;
-  /// How far its cue is drawn back (m).
-  virtual double pull() const = 0;
-  /// The status line meanwhile.
-  virtual std::string status(const GameSession& session) const = 0;
-};
-
 /// Plays Player 2's seat for the computer. The planner runs on a worker thread from a copy of
 /// the position, so the window keeps drawing; then the shot is shown as a player makes it (the
 /// cue ball carried to its spot, the cue turned to the aim, drawn back in proportion to the
@@ -74,8 +59,6 @@ class ComputerPlayer {
   /// Waits for the planner instead of polling it, so that each frame shows the same picture
   /// however long planning takes (screenshots, tests). The window stalls while it waits.
   void setWaitForPlans(bool wait) { wait_ = wait; }
-  /// Online play: the other side's player, whose turns block the input as the computer's do.
-  void setRemote(const RemoteControl* remote) { remote_ = remote; }
   /// Replaces how the move is found (planMove by default): tests give a slow or failing one.
   void setThinker(Thinker thinker) { thinker_ = std::move(thinker); }
 
@@ -90,7 +73,7 @@ class ComputerPlayer {
   /// True once the computer holds the cue at its aim: the cue and the aim guide show.
   bool showsCue() const;
   /// How far the cue is drawn back now (m).
-  double pull() const { return remote_ && remote_->showsCue() ? remote_->pull() : pull_; }
+  double pull() const { return pull_; }
   /// Where the cue ball is while the computer carries it to its spot.
   std::optional<Vec2> carriedCue() const;
   /// What the status line says during the computer's turn.
@@ -107,10 +90,7 @@ class ComputerPlayer {
   void abandon();
   void reapAbandoned(bool wait);
 
-  bool remoteTurn(const GameSession& session) const;
-
   std::uint64_t seed_;
-  const RemoteControl* remote_ = nullptr;
   long planners_made_ = 0;
   Seat opponent_;
   std::shared_ptr<ai::Planner> planner_;  // shared with the worker planning with it

@@ -36,9 +36,9 @@ std::string guideFoul(const GameSession& session, const AimGuide& guide) {
 }
 
 void fillDialog(render::HudState& hud, const GameSession& session, const UiState& ui,
-                const ComputerPlayer& computer) {
+                const Seats& seats) {
   const Overlay overlay = activeOverlay(session, ui);
-  const bool computer_decides = computer.controls(session);
+  const bool computer_decides = seats.controls(session);
   hud.overlay = overlay;
   switch (overlay) {
     case Overlay::Help: {
@@ -49,7 +49,7 @@ void fillDialog(render::HudState& hud, const GameSession& session, const UiState
             "Practice: Shift+drag moves a ball; 1-9 add / remove; U undo (shots and moves), Y "
             "retry");
       }
-      const std::optional<ai::Level> level = computerLevel(computer.opponent());
+      const std::optional<ai::Level> level = computerLevel(seats.opponent());
       hud.overlay_lines.insert(hud.overlay_lines.end(),
                                "O: 2 players, or the computer at a level, " +
                                    std::string(ai::levelName(ai::allLevels().front())) + " to " +
@@ -268,8 +268,7 @@ void fillSnookerHud(render::HudState& hud, const GameSession& session) {
 
 }  // namespace
 
-render::Frame buildFrame(const GameSession& session, const UiState& ui,
-                         const ComputerPlayer& computer) {
+render::Frame buildFrame(const GameSession& session, const UiState& ui, const Seats& seats) {
   render::Frame f;
   f.table = &session.match().world().table();
   f.balls = session.ballsToDraw();
@@ -277,13 +276,13 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   f.ball_radius = session.match().world().physics().ball_radius;
   f.looks = gameDef(session.match().rack().game()).looks;
   const bool aiming = session.phase() == Phase::Aiming && !session.replaying();
-  const bool computer_turn = computer.controls(session);
+  const bool computer_turn = seats.controls(session);
   if (computer_turn) {
-    if (aiming && computer.showsCue()) {
+    if (aiming && seats.showsCue(session)) {
       f.guide = session.aimGuide();
-      f.cue = cuePose(session.heading(), computer.pull(), session.tip().x);
+      f.cue = cuePose(session.heading(), seats.pull(session), session.tip().x);
     }
-    if (const auto carried = computer.carriedCue()) {
+    if (const auto carried = seats.carriedCue()) {
       for (BallState& b : f.balls) {
         if (b.id == kCueBall) b.pos = *carried;
       }
@@ -355,7 +354,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   }
   if (game.family == GameFamily::Carom) fillCaromHud(hud, session);
   if (game.snookers) fillSnookerHud(hud, session);
-  hud.mode = opponentModeLabel(computer.opponent());
+  hud.mode = opponentModeLabel(seats.opponent());
   if (session.practice()) {
     const std::size_t steps = session.practiceSteps();
     hud.players[0].detail = std::to_string(steps) + (steps == 1 ? " step" : " steps") + " to undo";
@@ -363,7 +362,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
     hud.rules = "Practice: no rules";
     hud.mode = "U undo   Y retry   1-9 add/remove";
   }
-  hud.status = computer_turn && !session.replaying() ? computer.status(session) : session.status();
+  hud.status = computer_turn && !session.replaying() ? seats.status(session) : session.status();
   hud.message = session.message();
   hud.tone = session.tone();
   hud.power = session.power();
@@ -374,7 +373,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui,
   hud.max_tip = session.maxTip();
   hud.push_out_declared = session.pushOutDeclared();
   hud.keys = ui.leave_to_menu ? "H help   Esc menu" : "H help   Esc quit";
-  fillDialog(hud, session, ui, computer);
+  fillDialog(hud, session, ui, seats);
   hud.keep_clear = dialogKeepClear(session);
   return f;
 }

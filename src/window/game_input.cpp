@@ -188,7 +188,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     session_.startReplay(key.shift);
     return;
   }
-  if (computer_.controls(session_)) return;
+  if (seats_.controls(session_)) return;
   if (overlay == Overlay::PushOutChoice) {
     if (key.code == Key::S) session_.decide(true);
     if (key.code == Key::P) session_.decide(false);
@@ -281,8 +281,8 @@ void GameInput::switchOpponent() {
     session_.say("Practice is played alone: pick an opponent in a game from the menu.");
     return;
   }
-  const Seat next = app::nextOpponent(computer_.opponent());
-  computer_.setOpponent(session_, next);
+  const Seat next = app::nextOpponent(seats_.opponent());
+  seats_.setOpponent(session_, next);
   if (session_.phase() == Phase::GameOver) return;  // the dialog shows the rack's last word
   const std::optional<ai::Level> level = computerLevel(next);
   session_.say(level ? "Player 2 is now the computer, " + std::string(ai::levelName(*level)) +
@@ -292,12 +292,12 @@ void GameInput::switchOpponent() {
 
 bool GameInput::mayAim() const {
   return session_.phase() == Phase::Aiming && !session_.replaying() && !dialogOpen() &&
-         !computer_.controls(session_) && ui_.drag == Drag::None;
+         !seats_.controls(session_) && ui_.drag == Drag::None;
 }
 
 void GameInput::followSettledAim(double seconds) {
   // A locked line is the turn's: the next turn aims afresh.
-  if (session_.phase() != Phase::Aiming || computer_.controls(session_)) ui_.aim_locked = false;
+  if (session_.phase() != Phase::Aiming || seats_.controls(session_)) ui_.aim_locked = false;
   // Only the player's own aim is kept: the computer's, a shot's or a dialog's are not, and a
   // turn begins with the aim it was handed.
   if (!mayAim()) {
@@ -320,7 +320,7 @@ void GameInput::update(double seconds) {
   for (auto& [key, held] : held_) held += seconds;
   followSettledAim(seconds);
   session_.setPlayRate(held_.count(Key::F) != 0 ? kFastForward : 1.0);
-  if (session_.replaying() || dialogOpen() || computer_.controls(session_)) return;
+  if (session_.replaying() || dialogOpen() || seats_.controls(session_)) return;
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   auto heldFor = [&](Key k) {
     const auto it = held_.find(k);
@@ -411,7 +411,7 @@ void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
     return;
   }
   const Overlay overlay = activeOverlay(session_, ui_);
-  const bool computer_turn = computer_.controls(session_);
+  const bool computer_turn = seats_.controls(session_);
   if (computer_turn && overlay == Overlay::PushOutChoice) return;
   if (overlay != Overlay::None) {
     const bool replace = replaceOffered(session_, ui_);
@@ -532,7 +532,7 @@ void GameInput::zoomBy(int steps, std::optional<Vec2> at) {
 void GameInput::mouseReleased() {
   const Drag drag = ui_.drag;
   ui_.drag = Drag::None;
-  if (computer_.controls(session_)) {
+  if (seats_.controls(session_)) {
     ui_.pull = 0.0;
     ui_.ghost.reset();
     return;

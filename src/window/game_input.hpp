@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "render/view_transform.hpp"
-#include "window/computer_player.hpp"
 #include "window/game_session.hpp"
+#include "window/seats/seats.hpp"
 #include "window/ui_state.hpp"
 
 namespace nineball::window {
@@ -26,8 +26,8 @@ struct WindowRequests {
 /// the computer has the turn only the window's keys work (Esc, H, F1, F12, O).
 class GameInput {
  public:
-  GameInput(GameSession& session, UiState& ui, ComputerPlayer& computer)
-      : session_(session), ui_(ui), computer_(computer) {}
+  GameInput(GameSession& session, UiState& ui, Seats& seats)
+      : session_(session), ui_(ui), seats_(seats) {}
 
   /// Handles one window event; `view` maps the pointer to the table.
   void handle(const sf::Event& event, const render::ViewTransform& view);
@@ -65,7 +65,7 @@ class GameInput {
 
   GameSession& session_;
   UiState& ui_;
-  ComputerPlayer& computer_;
+  Seats& seats_;
   WindowRequests requests_;
   std::map<sf::Keyboard::Key, double> held_;  // key -> seconds held
   bool shift_ = false;

@@ -2,9 +2,7 @@
 
 #include <SFML/System/Sleep.hpp>
 #include <algorithm>
-#include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,6 +18,8 @@
 #include "window/menu_screen.hpp"
 #include "window/rack_save.hpp"
 #include "window/rack_seed.hpp"
+#include "window/screens/settings_screen.hpp"
+#include "window/screens/start_menu_screen.hpp"
 #include "window/seat_token_file.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
@@ -29,10 +29,6 @@ namespace nineball::window {
 namespace {
 
 constexpr const char* kTitle = "nineball";
-// A screenshot run steps a fixed 1/60 s per frame, so that its picture is always the same.
-constexpr double kFixedFrame = 1.0 / 60.0;
-// A frame longer than this (a stall, a dragged window) counts as this long.
-constexpr double kMaxFrame = 0.25;
 // When nothing moves and no key is held, the window looks at its events this often (s) and
 // redraws only when one came, or at this interval (a window uncovered shows itself again).
 constexpr double kIdlePoll = 0.03;
@@ -85,18 +81,6 @@ void logFrameRate(const FrameTimer& moving, long frames) {
       1.0 / moving.quantile(0.95));
 }
 
-// For the tests that check that no text spills: each line drawn, its box and its room.
-void writeHudTexts(const std::string& path, const std::vector<render::DrawnText>& texts,
-                   unsigned width, unsigned height) {
-  std::ofstream out(path);
-  out << "window 0 0 " << width << ' ' << height << '\n';
-  for (const render::DrawnText& t : texts) {
-    out << "text " << t.box.left << ' ' << t.box.top << ' ' << t.box.width << ' ' << t.box.height
-        << " room " << t.room.left << ' ' << t.room.top << ' ' << t.room.width << ' '
-        << t.room.height << " : " << t.text << '\n';
-  }
-}
-
 bool keyPressed(const sf::Event& event, sf::Keyboard::Key key) {
   return event.type == sf::Event::KeyPressed && event.key.code == key;
 }
@@ -109,19 +93,16 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
       count_([this](int seat, const TurnRecord& record, bool was_break) {
         stats_.record(seat, record, was_break);
       }),
-      computer_(start.setup.seed),
+      seats_(start.setup.seed),
       options_(options),
-      capture_(!options.screenshot.empty()),
-      benchmark_(!capture_ && options.frames.has_value()),
-      interactive_(!capture_ && !benchmark_),
+      driver_(CaptureDriver::fromProcess(options)),
       // The start menu, the settings file and the saved rack belong to a game a person starts;
       // screenshots and scripts (the tests) see none of them unless --menu asks.
       show_menu_(!(options.host_port || !options.join.empty()) &&
-                 (options.menu || (interactive_ && options.script.empty()))),
-      keep_rack_(interactive_ && options.script.empty() &&
+                 (options.menu || (driver_.person() && options.script.empty()))),
+      keep_rack_(driver_.person() && options.script.empty() &&
                  !(options.host_port || !options.join.empty())),
-      frame_limit_(options.frames.value_or(capture_ ? 1 : -1)),
-      input_(session_, ui_, computer_),
+      input_(session_, ui_, seats_),
       online_start_(options.host_port || !options.join.empty()) {
   setup_status_ = setUp(start);
 }
@@ -136,23 +117,20 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
   ui_.leave_to_menu = show_menu_;
   ui_.rack_kept = keep_rack_;
   if (!options_.practice) {
-    computer_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
+    seats_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
   }
   if (!online_start_) {
     if (const auto status = playScript(start)) return status;
   }
   if (const auto status = openDisplay()) return status;
   // Refused before a window opens and frames are drawn for nothing.
-  std::string why;
-  if (capture_ && !canWriteFile(options_.screenshot, why)) {
-    err_ << "nineball: --screenshot: " << why << '\n';
-    return app::kExitBadInput;
-  }
+  if (const auto status = driver_.refuseBeforeWindow(err_)) return status;
   readSettings(start);
   if (online_start_) {
     if (const auto status = startOnline(start)) return status;
   }
   openGameWindow();
+  screens_.push(std::make_unique<TableScreen>(static_cast<Table&>(*this)));
   if (const auto status = startMenu()) return status;
   prepareFrames(start);
   return std::nullopt;
@@ -194,16 +172,16 @@ std::optional<int> GameLoop::openDisplay() {
 
 void GameLoop::readSettings(const GameStart& start) {
   // An online game started from the command line still wants the player's remembered name.
-  const bool remembered = show_menu_ || (online_start_ && interactive_);
+  const bool remembered = show_menu_ || (online_start_ && driver_.person());
   settings_ = remembered ? loadSettings(settingsPath()) : Settings{};
   presetFromCommandLine(settings_, options_, start.setup);
 }
 
 void GameLoop::openGameWindow() {
-  if (!capture_) fitDesktop(options_);
-  fullscreen_ = options_.fullscreen && !capture_;
+  if (!driver_.picture()) fitDesktop(options_);
+  fullscreen_ = options_.fullscreen && !driver_.picture();
   window_.emplace();
-  openWindow(*window_, fullscreen_, options_.width, options_.height, interactive_);
+  openWindow(*window_, fullscreen_, options_.width, options_.height, driver_.person());
   painter_.emplace(session_.match().world().table(), *fonts_);
   painter_->resize(window_->getSize().x, window_->getSize().y);
   menu_painter_.emplace(*fonts_);
@@ -214,41 +192,72 @@ StartMenuContext GameLoop::menuContext() {
   return {*window_,
           *painter_,
           *menu_painter_,
-          [this] { return buildFrame(session_, ui_, computer_); },
+          [this] { return buildFrame(session_, ui_, seats_); },
           options_.mute,
           drawsFreshSeeds(options_),
           {}};
 }
 
 std::optional<int> GameLoop::startMenu() {
+  if (!show_menu_) return std::nullopt;
   StartMenuContext menu = menuContext();
-  // The tests pick from the menu by keys typed before it shows (NINEBALL_MENU_KEYS="down,
-  // right,enter"), and then take the picture of the game picked.
-  const char* typed = std::getenv("NINEBALL_MENU_KEYS");
-  if (show_menu_ && capture_ && typed) {
-    std::string why;
-    const std::optional<std::vector<MenuKey>> keys = parseMenuKeys(typed, why);
-    if (!keys) {
-      err_ << "nineball: NINEBALL_MENU_KEYS: " << why << '\n';
-      return app::kExitBadInput;
-    }
-    menu.typed = *keys;
-  } else if (show_menu_ && capture_) {
+  if (driver_.picturesMenu(show_menu_)) {
     drawStartMenu(menu, settings_);
-    std::string why;
-    if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
-      err_ << "nineball: --screenshot: " << why << '\n';
-      return app::kExitBadInput;
-    }
-    return 0;
+    return driver_.savePicture(*window_, err_) ? 0 : app::kExitBadInput;
   }
-  if (show_menu_) {
-    MenuModel::Outcome outcome = MenuModel::Outcome::None;
-    if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) return 0;
-    startOnlineFromMenu(outcome);
-    followTable();
+  int status = 0;
+  const std::optional<std::vector<MenuKey>> typed = driver_.typedMenuKeys(err_, status);
+  if (!typed) return status;
+  if (typed->empty()) {
+    showStartMenu();  // the player chooses as the frames go
+    return std::nullopt;
   }
+  // A picture run's choice, made before the first frame.
+  menu.typed = *typed;
+  MenuModel::Outcome outcome = MenuModel::Outcome::None;
+  if (!chooseByTypedKeys(menu, session_, seats_, settings_, count_, &outcome)) return 0;
+  startOnlineFromMenu(outcome);
+  followTable();
   return std::nullopt;
+}
+
+// The start menu over the table, on the one event loop; menuClosed() once the player chose.
+void GameLoop::showStartMenu() {
+  screens_.push(std::make_unique<StartMenuScreen>(
+      menuContext(), session_, seats_, settings_, count_,
+      [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); },
+      [this](const sf::Event& event) { input_.handle(event, painter_->view()); }));
+}
+
+void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {
+  if (!started) {
+    window_->close();
+    return;
+  }
+  startOnlineFromMenu(outcome);
+  followTable();
+  applySound();
+  if (demo_due_) {
+    demo_due_ = false;
+    beginFrames();
+  }
+  frame_clock_.restart();
+  display_clock_.restart();
+  since_draw_.restart();
+}
+
+// F2: the settings over the table, applied as they change and saved as they close.
+void GameLoop::openSettings() {
+  SettingsScreen::Hooks hooks;
+  hooks.changed = [this](const Settings& settings) {
+    settings_ = settings;
+    applySound();
+  };
+  hooks.let_go = [this](const sf::Event& event) { input_.handle(event, painter_->view()); };
+  hooks.screenshot = [this] { input_.requests().screenshot = true; };
+  hooks.closed = [this] { saveSettingsNow(); };
+  screens_.push(std::make_unique<SettingsScreen>(settings_, options_.mute, *window_, *menu_painter_,
+                                                 std::move(hooks)));
 }
 
 // --host / --join: the link, and this side's seat named. Nothing when the game goes on.
@@ -266,16 +275,7 @@ std::optional<int> GameLoop::startOnline(const GameStart& start) {
   config.match = start.online_match;
   config.scripted = !options_.script.empty();
   config.script = start.turns;
-  if (capture_) {
-    // A picture run (the tests) must end: nobody joining or coming back ends it.
-    config.wait_s = 60.0;
-    config.rejoin_s = 20.0;
-    config.stall_s = 60.0;
-    // The tests' shorter wait, in seconds.
-    if (const char* wait = std::getenv("NINEBALL_ONLINE_WAIT")) {
-      config.wait_s = std::clamp(std::atof(wait), 1.0, 600.0);
-    }
-  }
+  driver_.boundOnlineWaits(config);
   if (!beginOnline(config, why)) {
     err_ << "nineball: --host " << config.address.port << ": " << why << '\n';
     return 1;
@@ -293,9 +293,9 @@ bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
   if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
   online_ = OnlinePlay::start(config, why);
   if (!online_) return false;
-  computer_.setOpponent(session_, HumanSeat{});
-  computer_.setRemote(online_.get());
+  seats_.setOpponent(session_, HumanSeat{});
   const int own = config.side == net::Side::Host ? 0 : 1;
+  seats_.setRemote(1 - own, *online_);
   session_.setSeatName(own, config.name);
   session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
   return true;
@@ -334,25 +334,40 @@ void GameLoop::updateOnline(double dt) {
   }
 }
 
-// --screenshot online: the picture once this side is done with the rack (or the game ended).
-bool GameLoop::onlineCaptureDue() const {
-  if (options_.frames) return frame_ >= frame_limit_;  // a picture of the game as it stands
-  return online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
+// How the online game stands, for a picture run's end: done once this side is done with the
+// rack (or the game ended).
+std::optional<CaptureDriver::OnlineEnd> GameLoop::onlineEnd() const {
+  if (!online_) return std::nullopt;
+  CaptureDriver::OnlineEnd end;
+  end.done = online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
+  if (online_->failed()) end.failure = online_->why();
+  return end;
 }
 
 void GameLoop::prepareFrames(const GameStart& start) {
   sounds_ = options_.mute ? nullptr : audio::ImpactSounds::open();
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
-  computer_.setWaitForPlans(capture_);
-  if (options_.frames && start.turns.empty() && !online_) session_.shoot();  // a demo break
-  if (options_.replay) session_.startReplay(false);
+  seats_.computer().setWaitForPlans(driver_.picture());
+  demo_break_ = driver_.breaksForDemo() && start.turns.empty() && !online_;
+  // Under a start menu, the game the frames show is the one chosen there.
+  if (screens_.size() > 1) {
+    demo_due_ = true;
+  } else {
+    beginFrames();
+  }
   logger("game")->info("window {}x{}, {}", window_->getSize().x, window_->getSize().y,
                        sounds_ ? "sound on" : "no sound");
   // The frames' clocks start with the first frame, not with the setup and its menu.
   frame_clock_.restart();
   display_clock_.restart();
   since_draw_.restart();
+}
+
+// --frames' demo break, --replay's shot again: the first frames' play.
+void GameLoop::beginFrames() {
+  if (demo_break_) session_.shoot();
+  if (options_.replay) session_.startReplay(false);
 }
 
 void GameLoop::applySound() {
@@ -372,24 +387,19 @@ int GameLoop::run() {
   while (window_->isOpen()) {
     const bool changed = handleEvents();
     if (!window_->isOpen()) break;
-    if (waitWhileIdle(changed)) continue;
-    const bool rolling = advance();
+    // A screen that came or went (the menu opened by Esc) is drawn at once.
+    if (waitWhileIdle(screens_.takeChanged() || changed)) continue;
+    rolling_ = false;
+    screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
     draw();
-    if (capture_ && online_ && onlineCaptureDue()) {
-      if (online_->failed() && !options_.frames) {
-        err_ << "nineball: online: " << online_->why() << '\n';
-        return 1;
-      }
-      if (!saveCapture()) return app::kExitBadInput;
-      break;
-    }
-    if (capture_ && !online_ && frame_ >= frame_limit_) {
-      if (!saveCapture()) return app::kExitBadInput;
-      break;
-    }
+    int status = 0;
+    const CaptureDriver::Next next =
+        driver_.afterDraw(frame_, onlineEnd(), *window_, *painter_, err_, status);
+    if (next == CaptureDriver::Next::Fail) return status;
+    if (next == CaptureDriver::Next::Finish) break;
     takeRequestedScreenshot();
-    present(rolling);
-    if (benchmark_ && frame_ >= frame_limit_) break;
+    present(rolling_);
+    if (driver_.benchmarkDone(frame_)) break;
     answerRequests();
     capFrameRate();
   }
@@ -404,24 +414,25 @@ bool GameLoop::handleEvents() {
   bool changed = frame_ == 0;
   while (window_->pollEvent(event)) {
     changed = true;
-    handleEvent(event);
+    if (event.type == sf::Event::Closed) {
+      window_->close();
+    } else if (event.type == sf::Event::Resized) {
+      const float w = static_cast<float>(event.size.width);
+      const float h = static_cast<float>(event.size.height);
+      window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
+      painter_->resize(w, h);
+    } else {
+      screens_.event(event);
+    }
+    // A screen done (a game chosen, the settings closed) leaves before the next event.
+    if (screens_.removeFinished()) followTable();
   }
   return changed;
 }
 
-void GameLoop::handleEvent(const sf::Event& event) {
-  if (event.type == sf::Event::Closed) {
-    window_->close();
-  } else if (event.type == sf::Event::Resized) {
-    const float w = static_cast<float>(event.size.width);
-    const float h = static_cast<float>(event.size.height);
-    window_->setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
-    painter_->resize(w, h);
-  } else if (settings_menu_) {
-    handleSettingsMenuEvent(event);
-  } else if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
-    settings_menu_ = MenuModel::settingsOnly(settings_);
-    settings_menu_->setMutedByOption(options_.mute);
+void GameLoop::tableEvent(const sf::Event& event) {
+  if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
+    openSettings();
   } else if (keyPressed(event, sf::Keyboard::O) && online_) {
     session_.say("Online, the other seat is " + online_->peerName() + "'s.");
   } else if (keyPressed(event, sf::Keyboard::M) && options_.mute) {
@@ -435,26 +446,10 @@ void GameLoop::handleEvent(const sf::Event& event) {
     input_.handle(event, painter_->view());
     // The menu offers the opponent last played, O's change included.
     if (keyPressed(event, sf::Keyboard::O) && !session_.practice() &&
-        !(settings_.last.opponent == computer_.opponent())) {
-      settings_.last.opponent = computer_.opponent();
+        !(settings_.last.opponent == seats_.opponent())) {
+      settings_.last.opponent = seats_.opponent();
       saveSettingsNow();
     }
-  }
-}
-
-void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
-  if (keyPressed(event, sf::Keyboard::F2)) settings_menu_->key(MenuKey::Escape);
-  if (keyPressed(event, sf::Keyboard::F12)) input_.requests().screenshot = true;
-  // A key held when the settings opened is still let go in the game.
-  if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
-    input_.handle(event, painter_->view());
-  }
-  handleMenuEvent(*settings_menu_, event, window_->getSize().x, window_->getSize().y);
-  settings_ = settings_menu_->settings();
-  applySound();
-  if (settings_menu_->outcome() != MenuModel::Outcome::None) {
-    settings_menu_.reset();
-    saveSettingsNow();
   }
 }
 
@@ -462,11 +457,8 @@ void GameLoop::handleSettingsMenuEvent(const sf::Event& event) {
 bool GameLoop::waitWhileIdle(bool changed) {
   // Nothing moving, nobody thinking, no key held, nothing new: look again a little later
   // instead of drawing the same picture again (the idle window costs next to nothing).
-  const bool watching = next_watched_ < watched_.size();
-  const bool still = !online_ && !watching && session_.phase() != Phase::Rolling &&
-                     !session_.replaying() && !computer_.controls(session_) && !input_.keysHeld() &&
-                     ui_.drag == Drag::None;
-  if (interactive_ && still && !changed && since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
+  if (driver_.person() && !screens_.busy() && !changed &&
+      since_draw_.getElapsedTime().asSeconds() < kIdleRedraw) {
     sf::sleep(sf::seconds(static_cast<float>(kIdlePoll)));
     frame_clock_.restart();
     return true;
@@ -474,19 +466,24 @@ bool GameLoop::waitWhileIdle(bool changed) {
   return false;
 }
 
-// One frame of play: the held keys, the computer, the balls. True when the balls were rolling
-// as the frame began (its time counts in the frame rate while balls move).
-bool GameLoop::advance() {
-  const double dt =
-      capture_ ? kFixedFrame : std::min<double>(frame_clock_.restart().asSeconds(), kMaxFrame);
+bool GameLoop::tableBusy() const {
+  const bool watching = next_watched_ < watched_.size();
+  return online_ || watching || session_.phase() == Phase::Rolling || session_.replaying() ||
+         seats_.controls(session_) || input_.keysHeld() || ui_.drag != Drag::None;
+}
+
+// One frame of play: the held keys, the computer, the balls. Notes whether the balls were
+// rolling as the frame began (its time counts in the frame rate while balls move).
+void GameLoop::advanceTable(double dt, bool on_top) {
   input_.update(dt);
   updateOnline(dt);
   playWatchedTurn(dt);
-  // The computer waits while the help or the quit question is open, as a player would.
-  if (!ui_.help && !ui_.confirm_quit && !settings_menu_ && !session_.replaying()) {
-    computer_.update(session_, dt);
+  // The computer waits while the help, the quit question or the settings are open, as a player
+  // would.
+  if (!ui_.help && !ui_.confirm_quit && on_top && !session_.replaying()) {
+    seats_.update(session_, dt);
   }
-  const bool rolling = session_.phase() == Phase::Rolling;
+  rolling_ = session_.phase() == Phase::Rolling;
   const auto impacts = session_.advance(dt);
   if (keep_rack_ && !online_ && session_.phase() == Phase::GameOver &&
       forgotten_rack_ != session_.rackNumber()) {
@@ -494,11 +491,16 @@ bool GameLoop::advance() {
     forgotten_rack_ = session_.rackNumber();
   }
   if (sounds_ && !impacts.empty()) sounds_->play(impacts);
-  return rolling;
 }
 
 void GameLoop::draw() {
-  render::Frame picture = buildFrame(session_, ui_, computer_);
+  screens_.draw(*window_);
+  since_draw_.restart();
+  ++frame_;
+}
+
+void GameLoop::drawTable(sf::RenderTarget& target) {
+  render::Frame picture = buildFrame(session_, ui_, seats_);
   picture.guide_scale = guideLengthFactor(settings_.guide);
   if (settings_.guide == GuideLength::Off) {
     picture.guide.reset();
@@ -520,27 +522,7 @@ void GameLoop::draw() {
       picture.hud.status = online_->banner(session_);
     }
   }
-  painter_->draw(*window_, picture);
-  if (settings_menu_) {
-    menu_painter_->draw(*window_, window_->getSize().x, window_->getSize().y,
-                        menuPicture(*settings_menu_));
-  }
-  since_draw_.restart();
-  ++frame_;
-}
-
-// --screenshot: the picture after the frames asked for. False when it could not be saved.
-bool GameLoop::saveCapture() {
-  std::string why;
-  if (!render::saveWindowPng(*window_, options_.screenshot, why)) {
-    err_ << "nineball: --screenshot: " << why << '\n';
-    return false;
-  }
-  logger("game")->info("saved {} after {} frames", options_.screenshot, frame_);
-  if (const char* boxes = std::getenv("NINEBALL_HUD_TEXTS")) {
-    writeHudTexts(boxes, painter_->hudTexts(), window_->getSize().x, window_->getSize().y);
-  }
-  return true;
+  painter_->draw(target, picture);
 }
 
 // F12: the picture as drawn, before it is shown.
@@ -593,7 +575,7 @@ void GameLoop::answerRequests() {
 }
 
 void GameLoop::capFrameRate() {
-  if (interactive_ && settings_.frame_cap > 0) {
+  if (driver_.person() && settings_.frame_cap > 0) {
     const double spare = 1.0 / settings_.frame_cap - frame_clock_.getElapsedTime().asSeconds();
     if (spare > 0.0) sf::sleep(sf::seconds(static_cast<float>(spare)));
   }
@@ -606,7 +588,7 @@ void GameLoop::saveRackInPlay() {
   if (session_.phase() == Phase::GameOver || session_.rackTurns().empty()) return;
   const std::string path = rackSavePath();
   std::string why;
-  if (saveRack(saveOf(session_, computer_.opponent()), path, why)) {
+  if (saveRack(saveOf(session_, seats_.opponent()), path, why)) {
     logger("game")->info("rack saved to {}", path);
   } else {
     logger("game")->warn("rack not saved: {}", why);
@@ -617,7 +599,7 @@ void GameLoop::saveRackInPlay() {
 void GameLoop::backToMenu() {
   if (online_) {
     online_->leave("the player left to the menu");
-    computer_.setRemote(nullptr);
+    seats_.clearRemote();
     online_.reset();
   } else {
     saveRackInPlay();
@@ -628,26 +610,17 @@ void GameLoop::backToMenu() {
   ui_.rack_kept = rack_kept;
   stats_ = SessionStats{};
   forgotten_rack_ = 0;
-  StartMenuContext menu = menuContext();
-  MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!runStartMenu(menu, session_, computer_, settings_, count_, &outcome)) {
-    window_->close();
-    return;
-  }
-  startOnlineFromMenu(outcome);
-  followTable();
-  applySound();
-  frame_clock_.restart();
-  display_clock_.restart();
-  since_draw_.restart();
+  showStartMenu();
 }
 
 int GameLoop::finish() {
+  // A screen still open over the table closes as its own way out would (the settings kept).
+  screens_.closeDownTo(1);
   logFrameRate(moving_, frame_);
   if (online_) {
     // An online rack is not a saved rack to resume alone.
     online_->leave("the player quit");
-    computer_.setRemote(nullptr);
+    seats_.clearRemote();
     online_.reset();
   } else {
     saveRackInPlay();

@@ -13,7 +13,7 @@
 #include "render/menu_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "render/sfml_errors.hpp"
-#include "window/computer_player.hpp"
+#include "window/capture_driver.hpp"
 #include "window/display_probe.hpp"
 #include "window/frame_timer.hpp"
 #include "window/game_input.hpp"
@@ -21,6 +21,9 @@
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
 #include "window/online_play.hpp"
+#include "window/screens/screen_stack.hpp"
+#include "window/screens/table_screen.hpp"
+#include "window/seats/seats.hpp"
 #include "window/session_stats.hpp"
 #include "window/settings.hpp"
 #include "window/start_menu.hpp"
@@ -29,10 +32,12 @@
 namespace nineball::window {
 
 /// The game window from start to end. Construction sets the game up: the script's turns, the
-/// display and the fonts, the window, the start menu. run() then goes round the frame: the
-/// events, the shot and the computer, the picture, the screenshots, the wait when nothing
-/// moves; and at the end keeps the rack in play for the next start.
-class GameLoop {
+/// display and the fonts, the window, the start menu. run() is the window's one event loop: it
+/// goes round the frame for the screens on its stack (the table, the start menu and the
+/// settings over it): the events, the shot and the computer, the picture, the screenshots, the
+/// wait when nothing moves; and at the end keeps the rack in play for the next start. It plays
+/// the table screen's part itself (Table).
+class GameLoop : private Table {
  public:
   GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err);
   GameLoop(const GameLoop&) = delete;
@@ -54,6 +59,10 @@ class GameLoop {
   void openGameWindow();
   StartMenuContext menuContext();
   std::optional<int> startMenu();
+  void showStartMenu();
+  void menuClosed(MenuModel::Outcome outcome, bool started);
+  void openSettings();
+  void beginFrames();
   void prepareFrames(const GameStart& start);
   std::optional<int> startOnline(const GameStart& start);
   bool beginOnline(OnlineConfig config, std::string& why);
@@ -61,17 +70,18 @@ class GameLoop {
   void updateOnline(double dt);
   void playWatchedTurn(double dt);
   void followTable();
-  bool onlineCaptureDue() const;
+  std::optional<CaptureDriver::OnlineEnd> onlineEnd() const;
 
   // The steps of one frame, in their order.
   bool handleEvents();
-  void handleEvent(const sf::Event& event);
-  void handleSettingsMenuEvent(const sf::Event& event);
   bool waitWhileIdle(bool changed);
-  bool advance();
   void draw();
+  // Table: the table screen's part.
+  void tableEvent(const sf::Event& event) override;
+  void advanceTable(double seconds, bool on_top) override;
+  void drawTable(sf::RenderTarget& target) override;
+  bool tableBusy() const override;
   void zoomView(const render::Frame& picture);
-  bool saveCapture();
   void takeRequestedScreenshot();
   void present(bool rolling);
   void answerRequests();
@@ -88,18 +98,15 @@ class GameLoop {
   GameSession session_;
   SessionStats stats_;
   const GameSession::TurnObserver count_;
-  ComputerPlayer computer_;
+  Seats seats_;  // who plays each seat: a person here, the computer, a player online
   // Made in the setup's order, once the steps before them went through.
   std::optional<DisplayConnection> display_;
   std::optional<render::Fonts> fonts_;
   std::optional<render::SfmlErrorsToLog> sfml_log_;
   app::GameOptions options_;
-  const bool capture_;      // --screenshot: draw, save the picture, exit
-  const bool benchmark_;    // --frames without --screenshot
-  const bool interactive_;  // a person plays
+  const CaptureDriver driver_;  // a person, a picture run or a benchmark runs the frames
   const bool show_menu_;
   const bool keep_rack_;
-  const long frame_limit_;
   Settings settings_;
   bool fullscreen_ = false;
   std::optional<sf::RenderWindow> window_;
@@ -107,7 +114,10 @@ class GameLoop {
   UiState ui_;
   std::optional<render::MenuPainter> menu_painter_;
   std::unique_ptr<audio::ImpactSounds> sounds_;
-  std::optional<MenuModel> settings_menu_;  // F2: the settings over the game
+  ScreenStack screens_;      // the table at the bottom; the start menu or the settings over it
+  bool rolling_ = false;     // the balls rolled as the frame's play began (its time is counted)
+  bool demo_break_ = false;  // --frames on a table with no script: a break to watch
+  bool demo_due_ = false;    // --frames' demo break and --replay wait for the start menu's game
   GameInput input_;
   FrameTimer moving_;
   sf::Clock frame_clock_;

@@ -1,7 +1,5 @@
 #include "window/menu_screen.hpp"
 
-#include <SFML/System/Clock.hpp>
-#include <SFML/System/Sleep.hpp>
 #include <algorithm>
 #include <iterator>
 #include <optional>
@@ -9,11 +7,6 @@
 
 namespace nineball::window {
 namespace {
-
-// How long the menu sleeps between looks at the events (s), and how often it redraws
-// anyway (a window uncovered by another shows its picture again).
-constexpr float kPoll = 0.03f;
-constexpr float kRedraw = 2.0f;
 
 std::optional<MenuKey> menuKey(sf::Keyboard::Key k) {
   switch (k) {
@@ -123,45 +116,6 @@ bool handleMenuEvent(MenuModel& model, const sf::Event& event, double width, dou
     default:
       return false;
   }
-}
-
-MenuModel::Outcome runMenuScreen(sf::RenderWindow& window, MenuModel& model,
-                                 render::MenuPainter& painter,
-                                 const std::function<void(sf::RenderTarget&)>& background,
-                                 const std::function<void(double, double)>& resized) {
-  bool dirty = true;
-  sf::Clock since_draw;
-  while (window.isOpen() && model.outcome() == MenuModel::Outcome::None) {
-    sf::Event event;
-    while (window.pollEvent(event)) {
-      if (event.type == sf::Event::Closed) {
-        window.close();
-        return MenuModel::Outcome::Quit;
-      }
-      if (event.type == sf::Event::Resized) {
-        const float w = static_cast<float>(event.size.width);
-        const float h = static_cast<float>(event.size.height);
-        window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
-        resized(w, h);
-        dirty = true;
-      } else if (event.type == sf::Event::GainedFocus || event.type == sf::Event::MouseEntered) {
-        dirty = true;
-      } else {
-        dirty = handleMenuEvent(model, event, window.getSize().x, window.getSize().y) || dirty;
-      }
-    }
-    if (model.outcome() != MenuModel::Outcome::None) break;
-    if (dirty || since_draw.getElapsedTime().asSeconds() > kRedraw) {
-      background(window);
-      painter.draw(window, window.getSize().x, window.getSize().y, menuPicture(model));
-      window.display();
-      since_draw.restart();
-      dirty = false;
-    } else {
-      sf::sleep(sf::seconds(kPoll));
-    }
-  }
-  return window.isOpen() ? model.outcome() : MenuModel::Outcome::Quit;
 }
 
 }  // namespace nineball::window

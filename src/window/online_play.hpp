@@ -16,6 +16,7 @@
 #include "window/computer_player.hpp"
 #include "window/game_session.hpp"
 #include "window/remote_aim.hpp"
+#include "window/seats/remote_control.hpp"
 
 // A rack in the window against a player at another computer (issue 35): the host listens,
 // the joiner connects (and reconnects after a lost link), and every turn goes through the

@@ -16,17 +16,6 @@ std::optional<std::string> resumeLabel(const std::optional<SavedRack>& saved) {
   return describeSavedRack(*saved);
 }
 
-void drawBehind(StartMenuContext& ctx, sf::RenderTarget& target, const MenuModel& model) {
-  ctx.painter.draw(target, menuBackdrop(ctx.frame(), model));
-}
-
-MenuModel startModel(const StartMenuContext& ctx, const Settings& settings,
-                     const std::optional<SavedRack>& saved) {
-  MenuModel model(settings, resumeLabel(saved));
-  model.setMutedByOption(ctx.muted_by_option);
-  return model;
-}
-
 }  // namespace
 
 void presetFromCommandLine(Settings& settings, const app::GameOptions& options,
@@ -51,31 +40,45 @@ std::string describeSavedRack(const SavedRack& rack) {
          ", racks " + std::to_string(rack.racks_won[0]) + "-" + std::to_string(rack.racks_won[1]);
 }
 
-void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
-  const MenuModel model = startModel(ctx, settings, loadRack(rackSavePath()));
-  drawBehind(ctx, ctx.window, model);
-  ctx.menu_painter.draw(ctx.window, ctx.window.getSize().x, ctx.window.getSize().y,
-                        menuPicture(model));
+MenuModel openStartMenu(const StartMenuContext& ctx, const Settings& settings,
+                        const std::optional<SavedRack>& saved) {
+  MenuModel model(settings, resumeLabel(saved));
+  model.setMutedByOption(ctx.muted_by_option);
+  return model;
 }
 
-bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& computer,
-                  Settings& settings, const GameSession::TurnObserver& observer,
-                  MenuModel::Outcome* outcome_out) {
-  const std::string rack_path = rackSavePath();
-  const std::optional<SavedRack> saved = loadRack(rack_path);
-  MenuModel model = startModel(ctx, settings, saved);
+void drawStartMenuOver(const StartMenuContext& ctx, sf::RenderTarget& target,
+                       const MenuModel& model) {
+  ctx.painter.draw(target, menuBackdrop(ctx.frame(), model));
+  ctx.menu_painter.draw(target, ctx.window.getSize().x, ctx.window.getSize().y, menuPicture(model));
+}
+
+void drawStartMenu(StartMenuContext& ctx, const Settings& settings) {
+  drawStartMenuOver(ctx, ctx.window, openStartMenu(ctx, settings, loadRack(rackSavePath())));
+}
+
+bool chooseByTypedKeys(StartMenuContext& ctx, GameSession& session, Seats& seats,
+                       Settings& settings, const GameSession::TurnObserver& observer,
+                       MenuModel::Outcome* outcome_out) {
+  const std::optional<SavedRack> saved = loadRack(rackSavePath());
+  MenuModel model = openStartMenu(ctx, settings, saved);
   for (const MenuKey k : ctx.typed) model.key(k);
   // Keys typed that settle nothing end the menu: nobody is there to finish the choice.
-  if (!ctx.typed.empty() && model.outcome() == MenuModel::Outcome::None) return false;
-  const MenuModel::Outcome outcome = runMenuScreen(
-      ctx.window, model, ctx.menu_painter, [&](sf::RenderTarget& t) { drawBehind(ctx, t, model); },
-      [&](double w, double h) { ctx.painter.resize(w, h); });
+  if (model.outcome() == MenuModel::Outcome::None) return false;
+  if (outcome_out) *outcome_out = model.outcome();
+  return startChosenGame(ctx, model, saved, session, seats, settings, observer);
+}
+
+bool startChosenGame(const StartMenuContext& ctx, const MenuModel& model,
+                     const std::optional<SavedRack>& saved, GameSession& session, Seats& seats,
+                     Settings& settings, const GameSession::TurnObserver& observer) {
+  const std::string rack_path = rackSavePath();
+  const MenuModel::Outcome outcome = model.outcome();
   settings = model.settings();
   std::string why;
   if (!saveSettings(settings, settingsPath(), why)) {
     logger("game")->warn("settings not saved: {}", why);
   }
-  if (outcome_out) *outcome_out = outcome;
   const bool online = outcome == MenuModel::Outcome::Host || outcome == MenuModel::Outcome::Join;
   if (outcome != MenuModel::Outcome::Play && outcome != MenuModel::Outcome::Resume && !online) {
     return false;
@@ -91,7 +94,7 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
       resumed.setTurnObserver(observer);
       replayRack(resumed, *saved);
       session = std::move(resumed);
-      computer.setOpponent(session, saved->opponent);
+      seats.setOpponent(session, saved->opponent);
       session.setSeatName(0, saved->names[0]);
       if (!isComputer(saved->opponent)) session.setSeatName(1, saved->names[1]);
       session.say("Rack resumed: " + describeSavedRack(*saved) + ".");
@@ -111,14 +114,14 @@ bool runStartMenu(StartMenuContext& ctx, GameSession& session, ComputerPlayer& c
   if (choice.points > 0) setup.points = choice.points;
   if (choice.mode == GameMode::Practice) {
     session = GameSession(setup, true);
-    computer.setOpponent(session, HumanSeat{});
+    seats.setOpponent(session, HumanSeat{});
     return true;
   }
   session = GameSession(setup);
   session.setBestOf(choice.best_of);
   session.setBreaks(choice.breaks);
   session.setTurnObserver(observer);
-  computer.setOpponent(session, choice.opponent);
+  seats.setOpponent(session, choice.opponent);
   session.setSeatName(0, choice.names[0]);
   if (!isComputer(choice.opponent)) session.setSeatName(1, choice.names[1]);
   return true;

@@ -119,7 +119,7 @@ TEST(DialogButtons, SnookersReplaceAfterAMissHasAButtonOfItsOwn) {
     return miss;
   }());
   ASSERT_EQ(t.s.match().rack().pendingDecision(), rules::Decision::PlayPutBackOrReplace);
-  const render::Frame f = buildFrame(t.s, t.ui, t.computer);
+  const render::Frame f = buildFrame(t.s, t.ui, t.seats);
   EXPECT_EQ(f.hud.button_middle, "Replace (R)");
   const render::HudLayout layout =
       render::HudLayout::of(t.view, f.hud.overlay, dialogKeepClear(t.s), true);

@@ -12,7 +12,7 @@ namespace {
 std::string leaveLine(const GameSession& s, const UiState& ui) {
   UiState open = ui;
   open.confirm_quit = true;
-  const render::Frame f = buildFrame(s, open, ComputerPlayer(1));
+  const render::Frame f = buildFrame(s, open, Seats(1));
   EXPECT_EQ(f.hud.overlay, render::Overlay::ConfirmQuit);
   return f.hud.overlay_lines.empty() ? "" : f.hud.overlay_lines.front();
 }
@@ -41,12 +41,12 @@ TEST(FrameBuilder, TheGuideWarnsWhenItsFirstBallWouldBeAFoul) {
   GameSession s(setup);
   UiState ui;
   s.setHeading(0.0);  // straight at the 3
-  const render::Frame foul = buildFrame(s, ui, ComputerPlayer(1));
+  const render::Frame foul = buildFrame(s, ui, Seats(1));
   ASSERT_TRUE(foul.guide);
   EXPECT_EQ(foul.guide->ball, 3);
   EXPECT_EQ(foul.guide_foul, "foul: the 3 is not the ball on");
   s.setHeading(std::atan2(0.4, 1.1));  // at the 1
-  const render::Frame fine = buildFrame(s, ui, ComputerPlayer(1));
+  const render::Frame fine = buildFrame(s, ui, Seats(1));
   ASSERT_TRUE(fine.guide);
   EXPECT_EQ(fine.guide->ball, 1);
   EXPECT_EQ(fine.guide_foul, "");
@@ -69,8 +69,8 @@ namespace {
 TEST(FrameBuilder, TheRacksEndSaysHowItEndedOnceAndTheHelpNamesTheLevels) {
   // The 9 on the lip of the top-right pocket, the cue ball drawn back from it.
   MatchSetup setup;
-  setup.balls = std::vector<BallState>{BallState::at(kCueBall, {0.95, 0.32}),
-                                       BallState::at(9, {1.18, 0.55})};
+  setup.balls =
+      std::vector<BallState>{BallState::at(kCueBall, {0.95, 0.32}), BallState::at(9, {1.18, 0.55})};
   GameSession s(setup);
   s.setHeading(degToRad(45.0));
   s.setSpeed(0.9);
@@ -79,13 +79,13 @@ TEST(FrameBuilder, TheRacksEndSaysHowItEndedOnceAndTheHelpNamesTheLevels) {
   ASSERT_TRUE(roll(s));
   ASSERT_EQ(s.phase(), Phase::GameOver);
   UiState ui;
-  const render::Frame over = buildFrame(s, ui, ComputerPlayer(1));
+  const render::Frame over = buildFrame(s, ui, Seats(1));
   ASSERT_EQ(over.hud.overlay, render::Overlay::GameOver);
   EXPECT_EQ(over.hud.message, s.message());
   for (const std::string& line : over.hud.overlay_lines) EXPECT_NE(line, s.message());
   // The help names the computer's seven levels, not the old three.
   ui.help = true;
-  const render::Frame help = buildFrame(s, ui, ComputerPlayer(1));
+  const render::Frame help = buildFrame(s, ui, Seats(1));
   bool levels = false;
   for (const std::string& line : help.hud.overlay_lines) {
     EXPECT_EQ(line.find("easy"), std::string::npos) << line;

@@ -91,7 +91,8 @@ TEST(ComputerGames, DescribePlanSaysThePushOutTheFirstBallAndTheCall) {
 
 TEST(ComputerGames, TheComputersCallIsMadeInTheSessionShownAndPlayed) {
   GameSession s = tenBallForTheComputer();
-  ComputerPlayer c(1);
+  Seats seats(1);
+  ComputerPlayer& c = seats.computer();
   c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   ASSERT_TRUE(s.callRequired());
   s.setHeading(0.0);
@@ -109,7 +110,7 @@ TEST(ComputerGames, TheComputersCallIsMadeInTheSessionShownAndPlayed) {
   thinkAlways(c, move);
   ASSERT_TRUE(runUntil(c, s, Stage::Cueing));
   EXPECT_EQ(s.call(), move.turn.call);
-  const render::Frame f = buildFrame(s, {}, c);
+  const render::Frame f = buildFrame(s, {}, seats);
   ASSERT_TRUE(f.call) << "the computer's call is drawn on the table";
   EXPECT_TRUE(f.call->pocket);
 
@@ -191,7 +192,8 @@ GameSession illegalEightBallBreak(ComputerPlayer& c) {
 }
 
 TEST(ComputerGames, TheComputerReracksAfterAnIllegalBreakAndBreaks) {
-  ComputerPlayer c(1);
+  Seats seats(1);
+  ComputerPlayer& c = seats.computer();
   GameSession s = illegalEightBallBreak(c);
   ASSERT_EQ(s.phase(), Phase::PushOutChoice) << s.message();
   ASSERT_EQ(s.match().rack().pendingDecision(), rules::Decision::RerackOrPlayOn);
@@ -203,7 +205,7 @@ TEST(ComputerGames, TheComputerReracksAfterAnIllegalBreakAndBreaks) {
   c.update(s, kFrame);
   ASSERT_EQ(c.stage(), Stage::Thinking);
   EXPECT_EQ(c.status(s), "Computer thinking: play on or re-rack?");
-  const render::Frame f = buildFrame(s, {}, c);
+  const render::Frame f = buildFrame(s, {}, seats);
   EXPECT_TRUE(f.hud.button_left.empty());  // no buttons for the human to press
   for (int frame = 0; frame < 30 * 30 && s.phase() == Phase::PushOutChoice; ++frame) {
     c.update(s, kFrame);

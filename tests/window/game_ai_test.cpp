@@ -28,6 +28,7 @@ using nineball::window::ComputerMove;
 using nineball::window::ComputerPlayer;
 using nineball::window::GameSession;
 using nineball::window::Phase;
+using nineball::window::Seats;
 using Stage = nineball::window::ComputerPlayer::Stage;
 
 namespace {
@@ -117,7 +118,8 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   // Player 1 misses: ball in hand for the computer, which carries the cue ball to its spot.
   GameSession s(layout({BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}),
                         BallState::at(3, {0.0, 0.0}), BallState::at(9, {0.8, -0.3})}));
-  ComputerPlayer c(7);
+  Seats seats(7);
+  ComputerPlayer& c = seats.computer();
   c.setOpponent(s, ComputerSeat{Level::Casual});
   std::atomic<bool> release{false};
   holdThinkingUntil(c, release);
@@ -136,7 +138,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   EXPECT_EQ(c.status(s), "Computer thinking...");
   EXPECT_EQ(s.phase(), Phase::Aiming);
   EXPECT_EQ(s.cuePosition(), cue_before);
-  const auto thinking = nineball::window::buildFrame(s, {}, c);
+  const auto thinking = nineball::window::buildFrame(s, {}, seats);
   EXPECT_FALSE(thinking.cue);
   EXPECT_EQ(thinking.hud.status, "Computer thinking...");
   EXPECT_NE(thinking.hud.mode.find("vs computer (casual)"), std::string::npos);
@@ -152,7 +154,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
     max_pull = std::max(max_pull, c.pull());
     if (c.stage() == Stage::Thinking) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     if (c.stage() == Stage::Aiming) {
-      const auto f = nineball::window::buildFrame(s, {}, c);
+      const auto f = nineball::window::buildFrame(s, {}, seats);
       guide_while_aiming = f.guide && f.cue;
       EXPECT_NE(f.hud.status.find("Computer: "), std::string::npos) << f.hud.status;
     }
@@ -169,7 +171,8 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
 TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   GameSession s(layout(
       {BallState::at(0, {-0.6, 0.0}), BallState::at(1, {0.3, 0.4}), BallState::at(3, {0.0, 0.0})}));
-  ComputerPlayer c(1);
+  Seats seats(1);
+  ComputerPlayer& c = seats.computer();
   c.setOpponent(s, ComputerSeat{Level::Casual});
   s.setHeading(0.0);
   s.setSpeed(1.5);
@@ -177,7 +180,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   ASSERT_TRUE(roll(s));
   ASSERT_TRUE(c.controls(s));
   nineball::window::UiState ui;
-  nineball::window::GameInput input(s, ui, c);
+  nineball::window::GameInput input(s, ui, seats);
   const nineball::render::ViewTransform view(s.match().world().table().def, 1280, 800);
   const double heading = s.heading();
   auto tap = [&](sf::Keyboard::Key code) {
@@ -261,7 +264,8 @@ TEST(ComputerPlayer, AnswersAPushOut) {
   // The break drops a ball (every seeded rack does at 10 m/s from the head spot), so Player 1
   // may push out; the computer then chooses.
   GameSession s{MatchSetup{}};
-  ComputerPlayer c(3);
+  Seats seats(3);
+  ComputerPlayer& c = seats.computer();
   c.setOpponent(s, ComputerSeat{Level::Casual});
   c.setWaitForPlans(true);
   ASSERT_TRUE(s.shoot());
@@ -274,7 +278,7 @@ TEST(ComputerPlayer, AnswersAPushOut) {
   ASSERT_TRUE(roll(s));
   ASSERT_EQ(s.phase(), Phase::PushOutChoice);
   ASSERT_TRUE(c.controls(s));
-  const auto f = nineball::window::buildFrame(s, {}, c);
+  const auto f = nineball::window::buildFrame(s, {}, seats);
   EXPECT_TRUE(f.hud.button_left.empty());  // no buttons for the human to press
   // Up to the decision only: a computer that plays on goes on to shoot, and its message with it.
   for (int frame = 0; frame < 30 * 30 && s.phase() == Phase::PushOutChoice; ++frame) {

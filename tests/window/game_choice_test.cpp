@@ -160,10 +160,10 @@ TEST(GameChoice, TheHudShowsEightBallGroupsAndTheHelpTheGame) {
   MatchSetup setup;
   setup.game = rules::Game::EightBall;
   const GameSession s(setup);
-  const ComputerPlayer computer(1);
+  const Seats seats(1);
   UiState ui;
   ui.help = true;
-  const render::Frame f = buildFrame(s, ui, computer);
+  const render::Frame f = buildFrame(s, ui, seats);
   EXPECT_TRUE(f.hud.split_groups);
   EXPECT_EQ(f.hud.ball_on, 0) << "any ball may be hit first on the eight-ball break";
   EXPECT_NE(f.hud.players[0].detail.find("open table"), std::string::npos);
@@ -177,7 +177,7 @@ TEST(GameChoice, TheHudShowsEightBallGroupsAndTheHelpTheGame) {
   EXPECT_TRUE(explained);
   // Nine-ball's help ends as before.
   const GameSession nine{MatchSetup{}};
-  const render::Frame n = buildFrame(nine, ui, computer);
+  const render::Frame n = buildFrame(nine, ui, seats);
   EXPECT_FALSE(n.hud.split_groups);
   EXPECT_EQ(n.hud.overlay_lines.back(), "Rules: hit the lowest ball first; the 9 wins the rack");
 }

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "render/hud_layout.hpp"
-#include "window/computer_player.hpp"
 #include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
 #include "window/input_events.hpp"
+#include "window/seats/seats.hpp"
 
 namespace nineball::window {
 namespace {
@@ -17,8 +17,8 @@ namespace {
 TEST(TiltRing, AClickAndADragOnTheRingTiltTheCue) {
   GameSession s{MatchSetup{}};
   UiState ui;
-  ComputerPlayer computer(1);
-  GameInput input(s, ui, computer);
+  Seats seats(1);
+  GameInput input(s, ui, seats);
   const render::ViewTransform view(s.match().world().table().def, 1280, 800);
   const render::HudLayout layout = render::HudLayout::of(view);
   const double mid = 0.5 * (layout.tilt_inner + layout.tilt_outer);
@@ -64,8 +64,8 @@ using Table = InputTable;
 TEST(SpinKeys, LAndRGiveSideSpinTAndBTopAndBackCCentres) {
   GameSession s{MatchSetup{}};
   UiState ui;
-  ComputerPlayer computer(1);
-  GameInput input(s, ui, computer);
+  Seats seats(1);
+  GameInput input(s, ui, seats);
   const render::ViewTransform view(s.match().world().table().def, 1280, 800);
   auto press = [&](sf::Keyboard::Key k) {
     input.handle(key(k), view);
@@ -91,8 +91,8 @@ TEST(SpinKeys, LAndRGiveSideSpinTAndBTopAndBackCCentres) {
 TEST(ReplayKey, VReplaysTheLastShotAndAnyKeyReturns) {
   GameSession s{MatchSetup{}};
   UiState ui;
-  ComputerPlayer computer(1);
-  GameInput input(s, ui, computer);
+  Seats seats(1);
+  GameInput input(s, ui, seats);
   const render::ViewTransform view(s.match().world().table().def, 1280, 800);
   input.handle(key(sf::Keyboard::V), view);
   input.handle(release(sf::Keyboard::V), view);

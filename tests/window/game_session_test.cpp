@@ -291,8 +291,8 @@ TEST(GameSession, APocketedBallSinksOutOfSightAfterTheBallsStop) {
 TEST(GameSession, PracticeSaysItsKeysOnceNotInTheStatusLineToo) {
   GameSession s{MatchSetup{}, true};
   nineball::window::UiState ui;
-  nineball::window::ComputerPlayer computer(1);
-  const nineball::render::Frame f = nineball::window::buildFrame(s, ui, computer);
+  const nineball::window::Seats seats(1);
+  const nineball::render::Frame f = nineball::window::buildFrame(s, ui, seats);
   EXPECT_NE(f.hud.mode.find("U undo"), std::string::npos);
   EXPECT_EQ(f.hud.status.find("U undo"), std::string::npos) << f.hud.status;
   EXPECT_EQ(f.hud.status.find("1-9"), std::string::npos) << f.hud.status;

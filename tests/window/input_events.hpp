@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "render/view_transform.hpp"
-#include "window/computer_player.hpp"
 #include "window/game_input.hpp"
 #include "window/game_session.hpp"
+#include "window/seats/seats.hpp"
 #include "window/ui_state.hpp"
 
 namespace nineball::window {
@@ -54,8 +54,8 @@ struct InputTable {
   explicit InputTable(const MatchSetup& setup = {}, bool practice = false) : s(setup, practice) {}
   GameSession s;
   UiState ui;
-  ComputerPlayer computer{1};
-  GameInput input{s, ui, computer};
+  Seats seats{1};
+  GameInput input{s, ui, seats};
   render::ViewTransform view{s.match().world().table().def, 1280, 800};
   void tap(sf::Keyboard::Key k, bool shift = false) {
     input.handle(key(k, shift), view);

@@ -40,8 +40,8 @@ TEST(PoolRace, TheScoreboardAndTheRacksEndSayTheRace) {
   GameSession s(setup);
   s.setBestOf(5);
   UiState ui;
-  ComputerPlayer computer(1);
-  EXPECT_NE(buildFrame(s, ui, computer).hud.rules.find("race to 3"), std::string::npos);
+  const Seats seats(1);
+  EXPECT_NE(buildFrame(s, ui, seats).hud.rules.find("race to 3"), std::string::npos);
   s.setHeading(degToRad(45.0));
   s.setSpeed(0.9);
   s.setTip({0.0, -0.4});  // drawn back: the cue ball stays out of the pocket
@@ -50,7 +50,7 @@ TEST(PoolRace, TheScoreboardAndTheRacksEndSayTheRace) {
   ASSERT_EQ(s.phase(), Phase::GameOver);
   EXPECT_EQ(s.racksWon(0), 1);
   EXPECT_NE(s.status().find("race to 3"), std::string::npos) << s.status();
-  const render::Frame f = buildFrame(s, ui, computer);
+  const render::Frame f = buildFrame(s, ui, seats);
   EXPECT_EQ(f.hud.button_left, "Next rack (R)");
   EXPECT_NE(f.hud.overlay_lines.back().find("(race to 3)"), std::string::npos);
   EXPECT_FALSE(s.matchWinner());

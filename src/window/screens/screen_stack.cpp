@@ -1,0 +1,60 @@
+#include "window/screens/screen_stack.hpp"
+
+namespace nineball::window {
+
+std::size_t ScreenStack::lowestInSight() const {
+  for (std::size_t i = screens_.size(); i-- > 0;) {
+    if (screens_[i]->covers()) return i;
+  }
+  return 0;
+}
+
+void ScreenStack::event(const sf::Event& event) {
+  if (!screens_.empty()) screens_.back()->event(event);
+}
+
+void ScreenStack::update(double seconds) {
+  if (screens_.empty()) return;
+  const std::size_t lowest = lowestInSight();
+  for (std::size_t i = screens_.size(); i-- > lowest;) {
+    screens_[i]->update(seconds, i + 1 == screens_.size());
+  }
+}
+
+void ScreenStack::draw(sf::RenderTarget& target) {
+  if (screens_.empty()) return;
+  for (std::size_t i = lowestInSight(); i < screens_.size(); ++i) screens_[i]->draw(target);
+}
+
+bool ScreenStack::busy() const {
+  if (screens_.empty()) return false;
+  for (std::size_t i = lowestInSight(); i < screens_.size(); ++i) {
+    if (screens_[i]->busy()) return true;
+  }
+  return false;
+}
+
+bool ScreenStack::removeFinished() {
+  bool removed = false;
+  // A screen's closed() may push another (the menu's game starting over the table): each is
+  // taken off before it is told.
+  while (!screens_.empty() && screens_.back()->finished()) {
+    std::unique_ptr<Screen> done = std::move(screens_.back());
+    screens_.pop_back();
+    done->closed();
+    removed = true;
+  }
+  changed_ = changed_ || removed;
+  return removed;
+}
+
+void ScreenStack::closeDownTo(std::size_t keep) {
+  while (screens_.size() > keep) {
+    std::unique_ptr<Screen> done = std::move(screens_.back());
+    screens_.pop_back();
+    done->closed();
+    changed_ = true;
+  }
+}
+
+}  // namespace nineball::window
