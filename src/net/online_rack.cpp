@@ -25,11 +25,6 @@ constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
 constexpr double kRetrySeconds = 0.25;
 
-double seconds() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
 void nap() {
   std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
@@ -72,6 +67,8 @@ class OnlineRack {
   }
 
  private:
+  double seconds() const { return o_.clock->now(); }
+
   // --- the link ---
 
   void awaitClose(double limit) {

@@ -65,9 +65,7 @@ OnlinePlay::~OnlinePlay() {
 }
 
 double OnlinePlay::now() const {
-  using namespace std::chrono;
-  static const steady_clock::time_point origin = steady_clock::now();
-  return duration<double>(steady_clock::now() - origin).count();
+  return config_.clock->now();
 }
 
 void OnlinePlay::leave(const std::string& reason) {

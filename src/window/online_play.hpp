@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "net/clock.hpp"
 #include "net/connection.hpp"
 #include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
@@ -52,6 +53,8 @@ struct OnlineConfig {
   /// it (0: no limit; a person may think as long as they like).
   double stall_s = 0.0;
   net::LinkLimits limits;
+  /// What every timeout reads (tests: a fake clock); never null.
+  const net::Clock* clock = &net::steadyClock();
 };
 
 /// One attempt of the joiner to reach the host, made on a worker (connectTo blocks).
