@@ -11,6 +11,7 @@
 #include "common/log.hpp"
 #include "io/snapshot_json.hpp"
 #include "net/handshake.hpp"
+#include "net/peer.hpp"
 #include "nineball/planner.hpp"
 
 namespace nineball::net {
@@ -20,15 +21,10 @@ using Outcome = OnlineRackResult::Outcome;
 
 // However the players play, a rack stops after this many turns (as `nineball match`).
 constexpr std::size_t kMaxTurns = kMostTurns;
-// How long the host waits for a connected peer's hello, and the joiner for the welcome.
+// How long the joiner waits for the welcome (no longer than its wait or rejoin time allows).
 constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
 constexpr double kRetrySeconds = 0.25;
-
-double seconds() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
 
 void nap() {
   std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -45,41 +41,80 @@ struct Stop {};
 // The link closed, or the peer broke the protocol and was dropped: the rack waits for a rejoin.
 struct Dropped {};
 
+// The headless driver of a Peer: a loop that polls the peer, plays this side's turns (the
+// script's or the computer's) and the peer's, waits a little, and hears `quit`. The peer owns
+// the link, the gate, the handshake's timing and the rejoin window; the rack owns the table.
 class OnlineRack {
  public:
   explicit OnlineRack(const OnlineRackOptions& o) : o_(o), token_(o.seat_token) {}
 
   OnlineRackResult run() {
     try {
-      if (!(o_.side == Side::Host ? listen() && awaitJoiner(o_.wait_s) : join(o_.wait_s))) {
-        return result_;
-      }
-      playRack();
+      if (startPeer() && (o_.side == Side::Host ? awaitJoiner() : join())) playRack();
     } catch (const Stop&) {
     }
     if (match_) describeRack();
     // What the peer said reaches the terminal: without control characters.
     result_.why = cleanText(result_.why, std::string::npos);
-    if (link_ && !link_->closed()) {
-      link_->flush(1.0);
+    if (peer_ && peer_->linked()) {
+      peer_->flush(1.0);
       // The side that closes first holds its port for a minute (TCP's TIME_WAIT), and SFML's
       // listener cannot reuse a held port: the host lets the joiner close first, so it can
       // host again at once.
-      if (o_.side == Side::Host) awaitClose(1.0);
-      link_->close("done");
+      if (o_.side == Side::Host) peer_->awaitClose(1.0);
     }
+    if (peer_) peer_->leave(std::nullopt, "done");
     return result_;
   }
 
  private:
-  // --- the link ---
+  double seconds() const { return o_.clock->now(); }
 
-  void awaitClose(double limit) {
-    const double deadline = seconds() + limit;
-    while (!link_->closed() && seconds() < deadline) {
-      link_->pump(seconds());
-      nap();
+  // --- the peer ---
+
+  bool startPeer() {
+    PeerConfig c;
+    c.side = o_.side;
+    c.address = o_.address;
+    c.code = o_.code;
+    c.hello = helloFrom(o_.name, o_.code, token_, localPlayer());
+    c.wait_s = o_.wait_s;
+    c.rejoin_s = o_.rejoin_s;
+    c.connect_s = o_.connect_s;
+    c.retry_s = kRetrySeconds;
+    c.welcome_s = kHandshakeSeconds;
+    c.welcome_within_wait = true;
+    c.limits = o_.limits;
+    c.gate = o_.gate;
+    c.clock = o_.clock;
+    std::string why;
+    peer_ = Peer::start(c, why);
+    if (!peer_) {
+      result_.outcome = Outcome::NoPeer;
+      result_.why = why;
+      return false;
     }
+    if (o_.side == Side::Host) {
+      logger("net")->info("hosting on port {}: join with --join {}:{} --code {}", o_.address.port,
+                          localAddress(), o_.address.port, peer_->code());
+    }
+    return true;
+  }
+
+  // The peer's next event: polled (napping between polls) until there is one.
+  PeerEvent nextEvent() {
+    while (events_.empty()) {
+      leaveIfAsked();
+      poll();
+      if (events_.empty()) nap();
+    }
+    PeerEvent e = std::move(events_.front());
+    events_.pop_front();
+    return e;
+  }
+
+  void poll() {
+    for (PeerEvent& e : peer_->poll()) events_.push_back(std::move(e));
   }
 
   [[noreturn]] void end(Outcome outcome, const std::string& why) {
@@ -89,80 +124,95 @@ class OnlineRack {
     throw Stop{};
   }
 
-  void send(const Message& m) { link_->send(toJson(m)); }
+  void send(const Message& m) { peer_->send(m); }
 
   // Ctrl-C: the other side hears that this one left, and the rack ends here.
   void leaveIfAsked() {
     if (!o_.quit || !o_.quit->load()) return;
-    if (link_ && !link_->closed()) {
+    if (peer_->linked()) {
       send(Bye{"the other player quit", false});
-      link_->flush(0.5);
+      peer_->flush(0.5);
     }
     end(Outcome::Quit, "quit before the rack was over");
   }
 
-  // The other side broke the protocol: tell it why and drop it; it may rejoin.
+  // The other side broke the protocol: tell it why and drop it; it may rejoin. (When the
+  // peer already took a new link from the same player, the old one is gone unheard.)
   [[noreturn]] void refusePeer(const std::string& why) {
     logger("net")->warn("the other side sent {}: disconnected it", cleanText(why, 400));
-    send(Refuse{"disconnected: you sent " + why});
-    link_->flush(0.5);
-    link_->close("it sent " + why);
+    forgetOldLink();
+    if (!rejoinQueued()) {
+      send(Refuse{"disconnected: you sent " + why});
+      peer_->flush(0.5);
+      lost_ = "it sent " + why;
+      peer_->lose(lost_);
+    }
     throw Dropped{};
   }
 
-  // The host, while a game is on: someone else connects. The gate hears every newcomer at
-  // once, without waiting for any: a hello with the code and the seat's token is the other
-  // player back on a new connection (the old one is dead without our knowing yet, or its
-  // program was restarted): it takes the seat, and the rack goes on through a rejoin. Anyone
-  // else is refused and the game goes on.
-  void watchForRejoin() {
-    if (!listener_ || !link_ || link_->closed()) return;
-    if (auto admitted = gate_->poll(*listener_, seconds())) {
-      link_->close("the other player connected again");
-      rejoining_ = std::move(admitted);
+  // What the dropped link said after what was being played: not the rack's any more.
+  void forgetOldLink() {
+    while (!events_.empty() && !std::holds_alternative<PeerJoined>(events_.front())) {
+      events_.pop_front();
     }
   }
 
-  // The next message from the peer; nothing once the link has closed.
+  bool rejoinQueued() const {
+    return !events_.empty() && std::holds_alternative<PeerJoined>(events_.front());
+  }
+
+  // The next message from the peer; nothing once the link is lost (lost_ says why). The host
+  // hears newcomers throughout: the other player back on a new connection (its old one dead
+  // without our knowing yet, or its program restarted) takes the seat, and the rack goes on
+  // through a rejoin.
   std::optional<Message> next() {
     while (true) {
-      if (!inbox_.empty()) {
-        nlohmann::json j = std::move(inbox_.front());
-        inbox_.pop_front();
-        std::string why;
-        auto m = readMessage(j, why);
-        if (!m) refusePeer("a bad message (" + why + ")");
-        if (std::holds_alternative<Aim>(*m) || std::holds_alternative<Rematch>(*m)) continue;
-        if (const auto* r = std::get_if<Refuse>(&*m)) {
-          end(Outcome::Refused, "the other side refused: " + r->reason);
-        }
-        return m;
-      }
-      leaveIfAsked();
-      if (link_->closed()) return std::nullopt;
-      if (turn_deadline_ > 0.0 && seconds() > turn_deadline_) {
+      if (events_.empty() && turn_deadline_ > 0.0 && seconds() > turn_deadline_) {
         const std::string why = "no turn within " + std::to_string(static_cast<int>(o_.turn_s)) +
                                 " s: the rack is given up";
         send(Bye{why, false});
-        link_->flush(0.5);
+        peer_->flush(0.5);
         end(Outcome::LinkLost, "the other player played " + why);
       }
-      for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
-      watchForRejoin();
-      if (inbox_.empty()) nap();
+      if (events_.empty()) {
+        leaveIfAsked();
+        poll();
+        if (events_.empty()) nap();
+        continue;
+      }
+      if (rejoinQueued()) {
+        lost_ = "the other player connected again";
+        return std::nullopt;
+      }
+      PeerEvent e = std::move(events_.front());
+      events_.pop_front();
+      if (auto* lost = std::get_if<PeerLost>(&e)) {
+        lost_ = lost->reason;
+        return std::nullopt;
+      }
+      if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
+        refusePeer("a bad message (" + bad->why + ")");
+      }
+      const auto* in = std::get_if<PeerMessage>(&e);
+      if (!in) continue;
+      const Message& m = in->message;
+      if (std::holds_alternative<Aim>(m) || std::holds_alternative<Rematch>(m)) continue;
+      if (const auto* r = std::get_if<Refuse>(&m)) {
+        end(Outcome::Refused, "the other side refused: " + r->reason);
+      }
+      return m;
     }
   }
 
   // A lost link: the rack pauses, and goes on if the peer comes back in time.
   void recover() {
-    const std::string reason = link_->reason();
+    const std::string reason = lost_;
     if (++rejoins_ > o_.most_rejoins) {
       end(Outcome::LinkLost, "the link was lost (" + reason + ") more than " +
                                  std::to_string(o_.most_rejoins) + " times in this rack");
     }
     logger("net")->warn("link lost ({}): waiting up to {} s for a rejoin", reason, o_.rejoin_s);
-    inbox_.clear();
-    const bool back = o_.side == Side::Host ? awaitJoiner(o_.rejoin_s) : join(o_.rejoin_s);
+    const bool back = o_.side == Side::Host ? awaitJoiner() : join();
     if (!back) end(Outcome::LinkLost, "the link was lost (" + reason + ") and not rejoined");
     logger("net")->info("rejoined after turn {}", lockstep_->turns().size());
   }
@@ -189,41 +239,22 @@ class OnlineRack {
 
   // --- the handshake ---
 
-  bool listen() {
-    std::string why;
-    listener_ = Listener::open(o_.address.port, why);
-    if (!listener_) {
-      result_.outcome = Outcome::NoPeer;
-      result_.why = why;
-      return false;
-    }
-    gate_ =
-        std::make_unique<HostGate>(o_.code.empty() ? makeJoinCode() : o_.code, o_.limits, o_.gate);
-    logger("net")->info("hosting on port {}: join with --join {}:{} --code {}", o_.address.port,
-                        localAddress(), o_.address.port, gate_->code());
-    return true;
-  }
-
   // The host: the first newcomer the gate lets in is welcomed to the match (the rack as it
-  // stands, when it is a rejoin). Newcomers are heard at once, however many say nothing.
-  bool awaitJoiner(double limit) {
-    const double deadline = seconds() + limit;
-    while (!rejoining_ && seconds() < deadline) {
-      leaveIfAsked();
-      rejoining_ = gate_->poll(*listener_, seconds());
-      if (!rejoining_) nap();
+  // stands, when it is a rejoin), or the wait (the rejoin window) runs out.
+  bool awaitJoiner() {
+    while (true) {
+      PeerEvent e = nextEvent();
+      if (auto* joined = std::get_if<PeerJoined>(&e)) {
+        welcome(joined->hello);
+        return true;
+      }
+      if (std::holds_alternative<PeerTimedOut>(e)) break;
     }
-    if (rejoining_) {
-      link_ = std::move(rejoining_->link);
-      const Hello hello = rejoining_->hello;
-      rejoining_.reset();
-      welcome(hello);
-      return true;
-    }
-    if (!match_ && !gate_->buildRefusal().empty()) {
+    const double limit = match_ ? o_.rejoin_s : o_.wait_s;
+    if (!match_ && !peer_->buildRefusal().empty()) {
       // The host's friend knew the code but runs another build: say so, not "nobody".
       result_.outcome = Outcome::Refused;
-      result_.why = "refused the other side: " + gate_->buildRefusal();
+      result_.why = "refused the other side: " + peer_->buildRefusal();
       return false;
     }
     result_.outcome = Outcome::NoPeer;
@@ -231,64 +262,43 @@ class OnlineRack {
     return false;
   }
 
-  // What a new link says first: waits until it says something, closes, or `limit` passes.
-  std::vector<nlohmann::json> firstWords(Connection& c, double limit) {
-    const double deadline = seconds() + limit;
-    while (seconds() < deadline && !c.closed()) {
-      leaveIfAsked();
-      auto in = c.pump(seconds());
-      if (!in.empty()) return in;
-      nap();
-    }
-    return {};
-  }
-
-  // The first message of the host's answer on the joiner's side: a welcome (with the host's
-  // hash behind it) or a refusal.
-  std::optional<Message> hostsAnswer(double limit) {
-    const auto in = firstWords(*link_, limit);
-    if (in.empty()) {
-      result_.why = link_->closed() ? "the host closed the link (" + link_->reason() + ")"
-                                    : "the host did not answer the hello";
-      return std::nullopt;
-    }
-    std::string why;
-    auto m = readMessage(in.front(), why);
-    if (!m) {
-      refuseLink(*link_, "a bad first message (" + why + ")");
-      return std::nullopt;
-    }
-    for (std::size_t i = 1; i < in.size(); ++i) inbox_.push_back(in[i]);
-    return m;
-  }
-
   void welcome(const Hello& hello) {
     peer_name_ = hello.name;
     if (!match_) startRack(o_.script.setup);
     lockstep_->setPeerPlayer(hello.player);
-    send(welcomeFrom(o_.name, o_.match, Race{}, *lockstep_, gate_->seatToken()));
+    peer_->handshakeDone();
+    send(welcomeFrom(o_.name, o_.match, Race{}, *lockstep_, peer_->seatToken()));
     lockstep_->rejoined();
     if (const auto h = lockstep_->lastHash()) send(*h);
-    logger("net")->info("{} joined from {}", peer_name_, link_->remote());
+    logger("net")->info("{} joined", peer_name_);
   }
 
-  // The joiner: reaches the host (again and again until `limit`), says hello, and replays the
-  // rack the welcome carries.
-  bool join(double limit) {
-    const double deadline = seconds() + limit;
+  // The joiner: the peer reaches the host (again and again until its wait, or the rejoin
+  // window, runs out) and says hello; the first answer is a welcome, whose rack is replayed,
+  // or a refusal.
+  bool join() {
     std::string why = "nobody answered";
-    while (seconds() < deadline) {
-      leaveIfAsked();
-      auto socket = connectTo(o_.address, std::min(o_.connect_s, deadline - seconds()), why);
-      if (socket) {
-        link_ = std::make_unique<Connection>(std::move(socket), seconds(), o_.limits);
-        send(helloFrom(o_.name, o_.code, token_, localPlayer()));
-        // The answer is awaited within the rejoin's own limit too.
-        if (acceptWelcome(std::clamp(deadline - seconds(), 0.5, kHandshakeSeconds))) return true;
+    while (true) {
+      PeerEvent e = nextEvent();
+      if (const auto* u = std::get_if<PeerUnreachable>(&e)) {
+        why = u->why;
+      } else if (const auto* lost = std::get_if<PeerLost>(&e)) {
+        why = "the host closed the link (" + lost->reason + ")";
+      } else if (const auto* t = std::get_if<PeerTimedOut>(&e)) {
+        if (t->what == PeerTimedOut::What::NoWelcome) {
+          why = "the host did not answer the hello";
+          continue;
+        }
+        break;
+      } else if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
+        send(Refuse{"a bad first message (" + bad->why + ")"});
+        peer_->flush(0.5);
+        peer_->lose("it sent a bad first message", true);
+      } else if (const auto* in = std::get_if<PeerMessage>(&e)) {
+        if (acceptWelcome(in->message)) return true;
         if (result_.outcome == Outcome::Refused) return false;
         why = result_.why.empty() ? why : result_.why;
       }
-      std::this_thread::sleep_for(std::chrono::duration<double>(kRetrySeconds));
     }
     // Nobody answered, or only "busy" or silence did (a bad welcome has said LinkLost).
     if (result_.outcome == Outcome::InStep) {
@@ -298,22 +308,23 @@ class OnlineRack {
     return false;
   }
 
-  bool acceptWelcome(double limit) {
-    auto m = hostsAnswer(limit);
-    if (!m) return false;
-    if (const auto* r = std::get_if<Refuse>(&*m)) {
+  // The host's first answer: a welcome (its rack replayed here) or a refusal. Anything else
+  // refuses the link, and the peer tries again.
+  bool acceptWelcome(const Message& m) {
+    if (const auto* r = std::get_if<Refuse>(&m)) {
       result_.why = "the host refused: " + r->reason;
       // A full host is tried again; any other refusal is final.
       if (!isBusyRefusal(r->reason)) result_.outcome = Outcome::Refused;
+      peer_->lose(r->reason, true);
       return false;
     }
-    const auto* w = std::get_if<Welcome>(&*m);
+    const auto* w = std::get_if<Welcome>(&m);
     std::string why;
     if (!w) why = "a first message that is not a welcome";
     if (w) {
       if (const auto r = refusalOf(*w)) {
         send(Refuse{*r});
-        link_->flush(0.5);
+        peer_->flush(0.5);
         result_.outcome = Outcome::Refused;
         result_.why = "refused the host: " + *r;
         return false;
@@ -322,14 +333,17 @@ class OnlineRack {
     const auto setup = w ? setupOf(*w, why) : std::nullopt;
     if (!setup || !replay(*setup, *w, why)) {
       send(Refuse{"a bad welcome (" + why + ")"});
-      link_->flush(0.5);
+      peer_->flush(0.5);
+      peer_->lose("it sent a bad welcome", true);
       result_.outcome = Outcome::LinkLost;
       result_.why = "the host sent a bad welcome (" + why + ")";
       return false;
     }
     peer_name_ = w->name;
     token_ = w->token;
+    peer_->setSeatToken(token_);
     if (o_.on_seat_token) o_.on_seat_token(token_);
+    peer_->handshakeDone();
     if (const auto h = lockstep_->lastHash()) send(*h);
     return true;
   }
@@ -425,8 +439,7 @@ class OnlineRack {
   // Keeps the link alive (pings out, messages in for later) while this side thinks.
   void keepAlive() {
     if (o_.quit && o_.quit->load()) return;  // the plan finishes first; then the rack ends
-    if (link_->closed()) return;
-    for (auto& j : link_->pump(seconds())) inbox_.push_back(std::move(j));
+    poll();
   }
 
   std::optional<TurnInput> localChoice() {
@@ -458,12 +471,12 @@ class OnlineRack {
       const std::string why = planner_ ? std::string("the computer's turn was refused: ") + e.what()
                                        : "turns[" + std::to_string(script_turn) + "]: " + e.what();
       send(Bye{"my turn was refused", false});
-      link_->flush(0.5);
+      peer_->flush(0.5);
       records_.pop_back();
       end(Outcome::BadTurn, why);
     }
     if (o_.drop_before_turn && o_.drop_before_turn(message.index)) {
-      link_->close("dropped by the test");
+      peer_->closeLink("dropped by the test");
     }
     send(message);
     afterTurn(message.turn);
@@ -520,7 +533,7 @@ class OnlineRack {
     } else if (verdict == HashVerdict::Unhealed) {
       send(Bye{"out of step after turn " + std::to_string(index) + ", and the heal did not take",
                false});
-      link_->flush(0.5);
+      peer_->flush(0.5);
       end(Outcome::OutOfStep, "the peers fell out of step after turn " + std::to_string(index) +
                                   " and the host's state did not heal it");
     }
@@ -530,7 +543,7 @@ class OnlineRack {
     const std::string why = "out of step after turn " + std::to_string(index) + ", healed " +
                             std::to_string(lockstep_->heals()) + " times in this rack already";
     send(Bye{why, false});
-    link_->flush(0.5);
+    peer_->flush(0.5);
     end(Outcome::OutOfStep, why);
   }
 
@@ -545,7 +558,7 @@ class OnlineRack {
     send(lockstep_->healed(*snapshot, took));
     logger("net")->warn("took the host's state after turn {}", s.index);
     if (!took) {
-      link_->flush(0.5);
+      peer_->flush(0.5);
       end(Outcome::OutOfStep, "the peers fell out of step after turn " + std::to_string(s.index) +
                                   " and the host's state did not heal it");
     }
@@ -562,14 +575,12 @@ class OnlineRack {
 
   const OnlineRackOptions& o_;
   OnlineRackResult result_;
-  std::unique_ptr<Listener> listener_;
-  std::unique_ptr<Connection> link_;
-  std::unique_ptr<HostGate> gate_;     // the host: who may sit down
-  std::optional<Admitted> rejoining_;  // the other player back on a new connection
-  std::string token_;                  // the joiner: its seat token
+  std::unique_ptr<Peer> peer_;    // the link, the gate, the handshake's timing, the rejoin window
+  std::deque<PeerEvent> events_;  // what the peer reported, not yet acted on
+  std::string lost_;              // why the link was lost (the rejoin's reason)
+  std::string token_;             // the joiner: its seat token
   int rejoins_ = 0;
   double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)
-  std::deque<nlohmann::json> inbox_;
   std::unique_ptr<Match> match_;
   std::unique_ptr<Lockstep> lockstep_;
   std::unique_ptr<ai::Planner> planner_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/match_json.hpp"
+#include "net/clock.hpp"
 #include "net/connection.hpp"
 #include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
@@ -44,6 +45,8 @@ struct OnlineRackOptions {
   int most_rejoins = 20;
   LinkLimits limits;
   GateLimits gate;
+  /// What every timeout reads (tests: a fake clock); never null.
+  const Clock* clock = &steadyClock();
   /// Raised (by Ctrl-C, say) to leave: the other side is told, and the rack ends.
   const std::atomic<bool>* quit = nullptr;
   /// Tests: called after each turn is played on this side (a test knocks a peer out of step).

@@ -13,8 +13,6 @@
 namespace nineball::window {
 namespace {
 
-// How long a goodbye may take to go out before the window closes.
-constexpr double kByeFlush = 0.5;
 // Heals and rejoins a rack may take (as `nineball online`); one more ends the game.
 constexpr int kMostHeals = 3;
 constexpr int kMostRejoins = 20;
@@ -32,27 +30,39 @@ AimPose poseOf(const net::Aim& a) {
   return {a.heading_rad, a.speed, a.tip, a.elevation_rad, a.cue};
 }
 
+
 }  // namespace
 
 std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::string& why) {
   std::unique_ptr<OnlinePlay> play(new OnlinePlay(config));
-  if (config.side == net::Side::Host) {
-    play->listener_ = net::Listener::open(config.address.port, why);
-    if (!play->listener_) return nullptr;
-    if (play->config_.code.empty()) play->config_.code = net::makeJoinCode();
-    play->gate_ = std::make_unique<net::HostGate>(play->config_.code, config.limits);
-    logger("online")->info("hosting on port {}: the friend joins with {}", config.address.port,
-                           play->joinLine());
+  OnlineConfig& c = play->config_;
+  if (c.side == net::Side::Joiner && c.seat_token.empty() && !c.seat_file.empty()) {
+    c.seat_token = loadSeatToken(c.seat_file, net::addressText(c.address));
   }
-  if (config.side == net::Side::Joiner && config.seat_token.empty() && !config.seat_file.empty()) {
-    play->config_.seat_token = loadSeatToken(config.seat_file, net::addressText(config.address));
+  net::PeerConfig p;
+  p.side = c.side;
+  p.address = c.address;
+  p.code = c.code;
+  p.hello = net::helloFrom(c.name, c.code, c.seat_token);
+  p.wait_s = c.wait_s;
+  p.rejoin_s = c.rejoin_s;
+  p.connect_s = c.connect_s;
+  p.retry_s = c.retry_s;
+  p.welcome_s = kWelcomeSeconds;
+  p.limits = c.limits;
+  p.clock = c.clock;
+  play->peer_ = net::Peer::start(p, why);
+  if (!play->peer_) return nullptr;
+  if (c.side == net::Side::Host) {
+    c.code = play->peer_->code();
+    logger("online")->info("hosting on port {}: the friend joins with {}", c.address.port,
+                           play->joinLine());
   }
   return play;
 }
 
 OnlinePlay::OnlinePlay(const OnlineConfig& config) : config_(config) {
   peer_name_ = config_.side == net::Side::Host ? "Player 2" : "Player 1";
-  waiting_since_ = now();
 }
 
 OnlinePlay::~OnlinePlay() {
@@ -61,35 +71,22 @@ OnlinePlay::~OnlinePlay() {
 }
 
 double OnlinePlay::now() const {
-  using namespace std::chrono;
-  static const steady_clock::time_point origin = steady_clock::now();
-  return duration<double>(steady_clock::now() - origin).count();
+  return config_.clock->now();
 }
 
 void OnlinePlay::leave(const std::string& reason) {
-  if (link_ && !link_->closed()) {
-    if (!local_finished_) send(net::Bye{reason, false});
-    link_->pump(now());
-    link_->flush(kByeFlush);
-    link_->close(reason);
-  }
-  link_.reset();
-  if (stage_ != Stage::Over) {
-    stage_ = Stage::Over;
+  if (!peer_) return;  // start() failed: nothing was linked
+  peer_->leave(local_finished_ ? std::nullopt : std::optional<net::Bye>(net::Bye{reason, false}),
+               reason);
+  if (!ended_) {
+    ended_ = true;
     why_ = "You left the game.";
   }
+  peer_->end(why_);  // whoever comes later hears why
 }
 
 void OnlinePlay::send(const net::Message& message) {
-  if (!link_ || link_->closed()) return;
-  // Until the handshake is over only its own words go out: a hash of a turn that ended
-  // meanwhile must not come before the welcome (the rejoin exchanges the last hash anyway).
-  const bool greeting = std::holds_alternative<net::Hello>(message) ||
-                        std::holds_alternative<net::Welcome>(message) ||
-                        std::holds_alternative<net::Refuse>(message) ||
-                        std::holds_alternative<net::Bye>(message);
-  if (!greeting && (handshaking_ || stage_ != Stage::Playing)) return;
-  link_->send(net::toJson(message));
+  peer_->send(message);
 }
 
 // --- the link ---
@@ -100,13 +97,13 @@ void OnlinePlay::update(GameSession& session, double seconds) {
   connectionStep(session);
   finishTurns(session);
   // A turn's messages wait while a shot rolls: the next is played once this one has ended.
-  while (!inbox_.empty() && stage_ != Stage::Over && session.phase() != Phase::Rolling) {
+  while (!inbox_.empty() && stage() != Stage::Over && session.phase() != Phase::Rolling) {
     const net::Message message = std::move(inbox_.front());
     inbox_.pop_front();
     handle(*session_, message);
     finishTurns(*session_);
   }
-  if (stage_ == Stage::Playing && local_offer_ && peer_offer_ &&
+  if (stage() == Stage::Playing && local_offer_ && peer_offer_ &&
       session_->phase() == Phase::GameOver && lockstep_ && lockstep_->settled()) {
     rematch_now_ = true;
     session_->rematch();
@@ -115,7 +112,7 @@ void OnlinePlay::update(GameSession& session, double seconds) {
     session_->say("Rematch: rack " + std::to_string(session_->rackNumber()) + ", " +
                   session_->seatName(session_->seatToMove()) + " breaks.");
   }
-  if (stage_ == Stage::Playing) {
+  if (stage() == Stage::Playing) {
     playScript(*session_);
     sendAim(*session_);
     if (config_.stall_s > 0.0 && now() - progress_at_ > config_.stall_s && !finished(*session_)) {
@@ -125,137 +122,56 @@ void OnlinePlay::update(GameSession& session, double seconds) {
   showPeerAim(*session_, seconds);
 }
 
-void OnlinePlay::connectionStep(GameSession& session) {
-  if (stage_ == Stage::Over) {
-    // Whoever comes now (the friend's restarted window) hears why, and does not hang.
-    while (listener_) {
-      auto socket = listener_->accept();
-      if (!socket) break;
-      net::Connection c(std::move(socket), now(), config_.limits);
-      net::refuseLink(c, "the game is over: " + why_);
-    }
-    return;
-  }
-  const double t = now();
-  if (config_.side == net::Side::Host) {
-    hostStep(session);
-  } else if (!link_) {
-    joinerConnect();
-  }
-  if (!link_) {
-    if (stage_ == Stage::Lost && t - lost_at_ > config_.rejoin_s) {
-      end(peer_name_ + " did not come back within " + clockText(config_.rejoin_s) +
-              ": the game is over.",
-          true);
-    } else if (stage_ == Stage::Waiting && config_.wait_s > 0.0 &&
-               t - waiting_since_ > config_.wait_s) {
-      end(config_.side == net::Side::Host
-              ? "Nobody joined within " + clockText(config_.wait_s) + "."
-              : "No host answered at " + net::addressText(config_.address) + " within " +
-                    clockText(config_.wait_s) + (why_.empty() ? "" : " (" + why_ + ")") + ".",
-          true);
-    }
-    return;
-  }
-  for (const nlohmann::json& j : link_->pump(t)) {
-    std::string why;
-    const std::optional<net::Message> message = net::readMessage(j, why);
-    if (!message) {
-      protocolError(peer_name_ + " sent a message this game refuses: " + why);
-      return;
-    }
-    inbox_.push_back(*message);
-  }
-  if (link_->closed()) return linkLost(link_->reason());
-  if (config_.side == net::Side::Joiner && handshaking_ && t - hello_sent_ > kWelcomeSeconds) {
-    // A host that says nothing to the hello (it is over, or not a nineball): said, not hung on.
-    link_->close("no welcome");
-    link_.reset();
-    handshaking_ = false;
-    end("The host did not answer the hello within " + clockText(kWelcomeSeconds) +
-            " (its game may be over).",
-        true);
+// The peer's step: a newcomer is welcomed between shots only (the welcome then holds every
+// turn played); its hello and the link's messages wait in the inbox with the others.
+void OnlinePlay::connectionStep(const GameSession& session) {
+  const bool between_shots = session.phase() != Phase::Rolling;
+  for (net::PeerEvent& event : peer_->poll(between_shots)) {
+    std::visit(Overloaded{
+                   [&](net::PeerJoined& e) { inbox_.push_back(std::move(e.hello)); },
+                   [&](net::PeerMessage& e) { inbox_.push_back(std::move(e.message)); },
+                   [&](net::PeerBadMessage& e) {
+                     protocolError(peer_name_ + " sent a message this game refuses: " + e.why);
+                   },
+                   [&](net::PeerLost& e) { why_ = e.reason; },
+                   [&](net::PeerUnreachable& e) { why_ = e.why; },
+                   [&](net::PeerTimedOut& e) { timedOut(e.what); },
+               },
+               event);
   }
 }
 
-// The host hears everyone who connects through the gate, in every stage: a friend with the
-// code takes the free seat, the seated player with its token takes it back (its old link
-// dead, or its window restarted), anyone else is refused by name, silent ones dropped, while
-// a shot rolls too. The one let in is welcomed between shots only: the welcome then holds every
-// turn played (a later one let in meanwhile, the same player again, takes its place).
-void OnlinePlay::hostStep(const GameSession& session) {
-  if (!gate_) return;
-  if (auto admitted = gate_->poll(*listener_, now())) {
-    if (admitted_) admitted_->link->close("the other player connected again");
-    admitted_ = std::move(admitted);
-  }
-  if (!admitted_ || session.phase() == Phase::Rolling) return;
-  if (link_) {
-    link_->close("the other player connected again");
-    link_.reset();
-  }
-  linkUp(std::move(admitted_->link));
-  // Handled with the other messages, after the turn that just ended is recorded: the welcome
-  // then holds it (and the hash of it that follows is of a turn the joiner has).
-  inbox_.push_back(admitted_->hello);
-  admitted_.reset();
-}
-
-void OnlinePlay::joinerConnect() {
-  if (connecting_.valid()) {
-    if (connecting_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    ConnectAttempt attempt = connecting_.get();
-    if (attempt.socket) {
-      linkUp(std::make_unique<net::Connection>(std::move(attempt.socket), now(), config_.limits));
-    } else {
-      why_ = attempt.why;
-      next_attempt_ = now() + config_.retry_s;
-    }
-    return;
-  }
-  if (now() < next_attempt_) return;
-  const net::Address address = config_.address;
-  const double timeout = config_.connect_s;
-  // connectTo blocks up to its timeout: on a worker, so that frames keep drawing.
-  connecting_ = std::async(std::launch::async, [address, timeout] {
-    ConnectAttempt a;
-    a.socket = net::connectTo(address, timeout, a.why);
-    return a;
-  });
-}
-
-void OnlinePlay::linkUp(std::unique_ptr<net::Connection> link) {
-  link_ = std::move(link);
-  logger("online")->info("linked with {}", link_->remote());
-  if (stage_ != Stage::Lost) stage_ = Stage::Handshake;
-  handshaking_ = true;
-  if (config_.side == net::Side::Joiner) {
-    send(net::helloFrom(config_.name, config_.code, config_.seat_token));
-    hello_sent_ = now();
+void OnlinePlay::timedOut(net::PeerTimedOut::What what) {
+  using What = net::PeerTimedOut::What;
+  switch (what) {
+    case What::NoRejoin:
+      return end(peer_name_ + " did not come back within " + clockText(config_.rejoin_s) +
+                     ": the game is over.",
+                 true);
+    case What::NobodyCame:
+      return end(config_.side == net::Side::Host
+                     ? "Nobody joined within " + clockText(config_.wait_s) + "."
+                     : "No host answered at " + net::addressText(config_.address) + " within " +
+                           clockText(config_.wait_s) + (why_.empty() ? "" : " (" + why_ + ")") +
+                           ".",
+                 true);
+    case What::NoWelcome:
+      return end("The host did not answer the hello within " + clockText(kWelcomeSeconds) +
+                     " (its game may be over).",
+                 true);
   }
 }
 
 void OnlinePlay::linkLost(std::string reason) {
-  reason = net::cleanText(reason, std::string::npos);
-  logger("online")->warn("link lost: {}", reason);
-  link_.reset();
-  handshaking_ = false;
-  why_ = reason;
-  if (!lockstep_) {
-    // Lost before the rack began: wait (or try) again from the start.
-    if (stage_ != Stage::Lost) stage_ = Stage::Waiting;
-    return;
-  }
-  if (stage_ != Stage::Lost) {
-    stage_ = Stage::Lost;
-    lost_at_ = now();
-  }
+  peer_->lose(std::move(reason));
+  why_ = peer_->lastProblem();
 }
 
 void OnlinePlay::end(const std::string& reason, bool failure) {
-  if (stage_ == Stage::Over) return;
-  stage_ = Stage::Over;
+  if (ended_) return;
+  ended_ = true;
   why_ = net::cleanText(reason, std::string::npos);  // often the peer's words: shown clean
+  peer_->end(why_);
   failed_ = failure;
   if (failure) {
     logger("online")->warn("{}", why_);
@@ -265,10 +181,7 @@ void OnlinePlay::end(const std::string& reason, bool failure) {
 }
 
 void OnlinePlay::protocolError(const std::string& reason) {
-  if (link_) {
-    link_->close(reason);
-    link_.reset();
-  }
+  peer_->drop(reason);
   end(reason + " - the link was closed.", true);
 }
 
@@ -276,18 +189,18 @@ void OnlinePlay::protocolError(const std::string& reason) {
 
 void OnlinePlay::handle(GameSession& session, const net::Message& message) {
   // What arrived before a link dropped is still the rack's (a host that finished and left).
-  const bool playing = lockstep_ && (stage_ == Stage::Playing || stage_ == Stage::Lost);
+  const bool playing = lockstep_ && (stage() == Stage::Playing || stage() == Stage::Lost);
   auto outOfPlace = [&](const char* what) {
     protocolError(peer_name_ + " sent " + what + " at the wrong time");
   };
   std::visit(Overloaded{
                  [&](const net::Hello& m) {
-                   if (config_.side != net::Side::Host || !handshaking_)
+                   if (config_.side != net::Side::Host || !peer_->handshaking())
                      return outOfPlace("a hello");
                    onHello(session, m);
                  },
                  [&](const net::Welcome& m) {
-                   if (config_.side != net::Side::Joiner || !handshaking_) {
+                   if (config_.side != net::Side::Joiner || !peer_->handshaking()) {
                      return outOfPlace("a welcome");
                    }
                    onWelcome(session, m);
@@ -339,17 +252,11 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   progress_at_ = now();
   if (const auto refusal = net::refusalOf(hello)) {
     logger("online")->warn("refused {}: {}", hello.name, *refusal);
-    send(net::Refuse{*refusal});
-    link_->pump(now());
-    link_->flush(kByeFlush);
-    link_.reset();
-    handshaking_ = false;
-    if (stage_ == Stage::Handshake) stage_ = Stage::Waiting;  // waiting on for the friend
+    peer_->refuseNewcomer(*refusal);
     why_ = "Refused a player: " + *refusal;
     session.say(why_, render::Tone::Warning);
     return;
   }
-  handshaking_ = false;
   peer_name_ = hello.name.empty() ? std::string("Player 2") : net::cleanName(hello.name);
   // Two players of one name are told apart by their seats.
   if (peer_name_ == config_.name) peer_name_ = net::cleanName(peer_name_ + " (B)");
@@ -362,12 +269,12 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
     newRack(session);
   }
   lockstep_->setPeerPlayer(hello.player);
-  stage_ = Stage::Playing;
-  send(net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_,
-                        gate_ ? gate_->seatToken() : std::string()));
+  peer_->handshakeDone();
+  send(
+      net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_, peer_->seatToken()));
   if (!lockstep_->turns().empty() && ++rejoins_ > kMostRejoins) {
     send(net::Refuse{"rejoined more than " + std::to_string(kMostRejoins) + " times in this rack"});
-    link_->flush(kByeFlush);
+    peer_->flush();
     return end(peer_name_ + " rejoined more than " + std::to_string(kMostRejoins) +
                    " times in this rack: the game is over.",
                true);
@@ -385,10 +292,8 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
 
 void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   progress_at_ = now();
-  handshaking_ = false;
   if (const auto refusal = net::refusalOf(welcome)) {
-    if (link_) link_->close(*refusal);
-    link_.reset();
+    peer_->drop(*refusal);
     end("Cannot play this host: " + *refusal, true);
     return;
   }
@@ -401,6 +306,7 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
     keepSeatToken(config_.seat_file, net::addressText(config_.address), welcome.token);
   }
   config_.seat_token = welcome.token;
+  peer_->setSeatToken(welcome.token);
   std::optional<GameSession> made;
   try {
     made.emplace(*setup);
@@ -445,8 +351,8 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   local_offer_ = peer_offer_ = false;
   peer_aim_.reset();
   script_next_ = std::min(own_turns, config_.script.size());
-  const bool rejoin = stage_ == Stage::Lost;
-  stage_ = Stage::Playing;
+  const bool rejoin = peer_->stage() == Stage::Lost;
+  peer_->handshakeDone();
   if (const auto h = lockstep_->lastHash()) send(*h);
   session.say(rejoin ? "Back with " + peer_name_ + ": the rack goes on."
                      : "Playing " + peer_name_ + " online. " +
@@ -570,7 +476,7 @@ void OnlinePlay::installRelay(GameSession& session) {
   };
   relay.rematch = [this]() {
     if (rematch_now_) return true;
-    if (stage_ != Stage::Playing || !session_) return false;
+    if (stage() != Stage::Playing || !session_) return false;
     if (!local_offer_) {
       local_offer_ = true;
       send(net::Rematch{});
@@ -656,7 +562,7 @@ void OnlinePlay::sendAim(const GameSession& session) {
 
 void OnlinePlay::showPeerAim(GameSession& session, double seconds) {
   peer_aiming_ = false;
-  if (stage_ != Stage::Playing || !lockstep_ || ourMove(session) || !lockstep_->settled() ||
+  if (stage() != Stage::Playing || !lockstep_ || ourMove(session) || !lockstep_->settled() ||
       session.phase() != Phase::Aiming) {
     return;
   }
@@ -674,7 +580,7 @@ void OnlinePlay::showPeerAim(GameSession& session, double seconds) {
 }
 
 bool OnlinePlay::ourMove(const GameSession& session) const {
-  return stage_ == Stage::Playing && lockstep_ && !pending_ && !outgoing_ &&
+  return stage() == Stage::Playing && lockstep_ && !pending_ && !outgoing_ &&
          lockstep_->localToMove(session.match());
 }
 

@@ -1,16 +1,17 @@
 #pragma once
 
 #include <deque>
-#include <future>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "net/clock.hpp"
 #include "net/connection.hpp"
 #include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
+#include "net/peer.hpp"
 #include "net/protocol.hpp"
 #include "net/wire.hpp"
 #include "window/computer_player.hpp"
@@ -53,23 +54,14 @@ struct OnlineConfig {
   /// it (0: no limit; a person may think as long as they like).
   double stall_s = 0.0;
   net::LinkLimits limits;
-};
-
-/// One attempt of the joiner to reach the host, made on a worker (connectTo blocks).
-struct ConnectAttempt {
-  std::unique_ptr<sf::TcpSocket> socket;
-  std::string why;  ///< nobody answered: why
+  /// What every timeout reads (tests: a fake clock); never null.
+  const net::Clock* clock = &net::steadyClock();
 };
 
 class OnlinePlay : public RemoteControl {
  public:
-  enum class Stage {
-    Waiting,    ///< host: listening; joiner: connecting
-    Handshake,  ///< connected, hello / welcome under way
-    Playing,    ///< the rack goes on
-    Lost,       ///< the link dropped: waiting for a rejoin
-    Over,       ///< the game against this peer is over (why())
-  };
+  /// Waiting, Handshake, Playing, Lost, Over (why()): the peer's.
+  using Stage = net::Peer::Stage;
 
   /// Host: opens the listening port; nothing, with `why`, when it is taken.
   static std::unique_ptr<OnlinePlay> start(const OnlineConfig& config, std::string& why);
@@ -83,7 +75,7 @@ class OnlinePlay : public RemoteControl {
   void update(GameSession& session, double seconds);
   bool sessionReplaced() { return std::exchange(replaced_, false); }
 
-  Stage stage() const { return stage_; }
+  Stage stage() const { return peer_->stage(); }
   /// Why the game ended (Over), or the reason of the last problem.
   const std::string& why() const { return why_; }
   /// True once the out-of-step or refusal was final (exit status for tests).
@@ -116,10 +108,8 @@ class OnlinePlay : public RemoteControl {
   explicit OnlinePlay(const OnlineConfig& config);
   double now() const;
   void installRelay(GameSession& session);
-  void connectionStep(GameSession& session);
-  void joinerConnect();
-  void linkUp(std::unique_ptr<net::Connection> link);
-  void hostStep(const GameSession& session);
+  void connectionStep(const GameSession& session);
+  void timedOut(net::PeerTimedOut::What what);
   // By value: the reason is often the dropped link's own, which goes with it.
   void linkLost(std::string reason);
   void end(const std::string& reason, bool failure);
@@ -141,24 +131,15 @@ class OnlinePlay : public RemoteControl {
   net::Race race(const GameSession& session) const;
 
   OnlineConfig config_;
-  Stage stage_ = Stage::Waiting;
+  std::unique_ptr<net::Peer> peer_;  // the link, the gate, the handshake's and rejoin's clocks
+  bool ended_ = false;
   std::string why_;
   bool failed_ = false;
-  std::unique_ptr<net::Listener> listener_;
-  std::unique_ptr<net::HostGate> gate_;    // host: who may sit down
-  std::optional<net::Admitted> admitted_;  // host: heard while a shot rolled, welcomed after it
-  std::unique_ptr<net::Connection> link_;
-  std::future<ConnectAttempt> connecting_;
-  double next_attempt_ = 0.0;
-  double waiting_since_ = 0.0;
-  double hello_sent_ = 0.0;  // joiner: when the hello went out (the welcome is awaited)
-  double lost_at_ = 0.0;
   double progress_at_ = 0.0;        // the last turn or hash
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
   std::optional<net::Lockstep> lockstep_;
   std::optional<net::WireTurn> pending_;      // the turn rolling, as it went over the wire
   std::optional<net::TurnMessage> outgoing_;  // this side's turn, sent once it has begun
-  bool handshaking_ = false;                  // linked, hello / welcome not yet exchanged
   GameSession* session_ = nullptr;            // the session driven (its relay is cleared)
   bool playing_peer_turn_ = false;
   bool rematch_now_ = false;

@@ -36,8 +36,7 @@ double OnlinePlay::pull() const {
 }
 
 std::string OnlinePlay::banner(const GameSession& session) const {
-  const double t = now();
-  switch (stage_) {
+  switch (stage()) {
     case Stage::Waiting:
       if (config_.side == net::Side::Host) {
         return "Waiting for a friend to join: " + joinLine() + "  (Esc cancels)";
@@ -47,7 +46,7 @@ std::string OnlinePlay::banner(const GameSession& session) const {
     case Stage::Handshake:
       return "Connected: greeting the other side...";
     case Stage::Lost: {
-      const std::string left = clockText(config_.rejoin_s - (t - lost_at_));
+      const std::string left = clockText(peer_->rejoinLeft());
       return config_.side == net::Side::Host
                  ? "Connection lost - waiting for " + peer_name_ + " to rejoin (" + left + ")"
                  : "Connection lost - reconnecting to " + peer_name_ + " (" + left + ")";
@@ -62,7 +61,7 @@ std::string OnlinePlay::banner(const GameSession& session) const {
 }
 
 std::string OnlinePlay::status(const GameSession& session) const {
-  if (stage_ != Stage::Playing) return banner(session);
+  if (stage() != Stage::Playing) return banner(session);
   if (pending_ || (lockstep_ && !lockstep_->settled())) {
     return "Waiting for " + peer_name_ + "'s table to agree...";
   }
