@@ -45,7 +45,7 @@ constexpr double kRackBound = 60.0;
 // Bursts the host can only close on silence (truncated frames, silent peers) cost a silence
 // limit each: a few of them are enough.
 constexpr int kMostSlowBursts = 12;
-constexpr std::uint64_t kSeed = 0x5eedf00d;
+constexpr std::uint64_t kFuzzSeed = 0x5eedf00d;
 // A host that fails this often is broken: the campaign stops rather than wait out each bound.
 constexpr int kMostFailures = 10;
 
@@ -363,7 +363,7 @@ TEST_F(ProtocolFuzz, AHostRefusesEveryHostileMessageAndThenPlaysARackInStep) {
   host.gate.free_wrong_guesses = 1 << 20;
   RackThread host_rack(host);
 
-  Rng rng(kSeed);
+  Rng rng(kFuzzSeed);
   int slow_left = kMostSlowBursts;
 
   // Wait for the host to listen (bounded).

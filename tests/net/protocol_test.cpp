@@ -45,7 +45,7 @@ bool mentions(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-TurnInput aShot(double heading_rad, double speed) {
+TurnInput aSpunShot(double heading_rad, double speed) {
   TurnInput t;
   t.shot.heading_rad = heading_rad;
   t.shot.speed = speed;
@@ -57,7 +57,7 @@ TurnInput aShot(double heading_rad, double speed) {
 // One of every message, with its fields away from their defaults.
 std::vector<Message> oneOfEach() {
   const MatchSetup setup;
-  TurnInput placed = aShot(0.3, 2.5);
+  TurnInput placed = aSpunShot(0.3, 2.5);
   placed.cue = Vec2{-0.6, 0.1};
   Welcome w;
   w.protocol = kProtocolVersion;
@@ -65,7 +65,7 @@ std::vector<Message> oneOfEach() {
   w.name = "Host";
   w.match = {{"game", "nine-ball"}, {"seed", 7}};
   w.race = Race{3, 1, {1, 0}};
-  w.turns = {wireTurn(aShot(1.0, 6.0), HumanSeat{}, setup.game),
+  w.turns = {wireTurn(aSpunShot(1.0, 6.0), HumanSeat{}, setup.game),
              wireTurn(placed, ComputerSeat{ai::Level::Beginner}, setup.game)};
   w.hashes = {0x0123456789abcdefull, 0xfedcba9876543210ull};
   w.token = "0123456789abcdef0123456789abcdef";
@@ -78,7 +78,7 @@ std::vector<Message> oneOfEach() {
           helloFrom("Bo", "7KQ4-ZP2M", std::string(32, 'e'), ComputerSeat{ai::Level::Master}),
           w,
           Refuse{"another build"},
-          TurnMessage{4, wireTurn(aShot(-2.5, 1.5), HumanSeat{}, setup.game)},
+          TurnMessage{4, wireTurn(aSpunShot(-2.5, 1.5), HumanSeat{}, setup.game)},
           TurnMessage{5, wireTurn(decision, HumanSeat{}, setup.game)},
           HashMessage{4, 0xffffffffffffffffull},
           HashMessage{0, 0},
@@ -275,7 +275,7 @@ TEST(Protocol, AWireTurnKeepsTheRadiansBitForBit) {
   const MatchSetup setup;
   // Angles whose degrees do not read back to the same radians.
   for (double heading : {0.1, 1.0 / 3.0, -2.9, 3.1, std::nextafter(kPi, 0.0), 1e-300}) {
-    TurnInput t = aShot(heading, 3.0);
+    TurnInput t = aSpunShot(heading, 3.0);
     t.shot.elevation_rad = std::nextafter(0.4, 1.0);
     const WireTurn w = wireTurn(t, HumanSeat{}, setup.game);
     // Through text, as the peer gets it.
@@ -293,7 +293,7 @@ TEST(Protocol, AWireTurnKeepsTheRadiansBitForBit) {
 
 TEST(Protocol, AWireTurnWhoseRadiansDisagreeWithItsDegreesIsRefused) {
   const MatchSetup setup;
-  const WireTurn good = wireTurn(aShot(1.0, 3.0), HumanSeat{}, setup.game);
+  const WireTurn good = wireTurn(aSpunShot(1.0, 3.0), HumanSeat{}, setup.game);
   std::string why;
   ASSERT_TRUE(parseWireTurn(good, setup, why).has_value()) << why;
 
@@ -330,7 +330,7 @@ TEST(Protocol, AWireTurnWhoseRadiansDisagreeWithItsDegreesIsRefused) {
 
 TEST(Protocol, AWireTurnIsCheckedAsAScriptTurn) {
   const MatchSetup setup;
-  const WireTurn good = wireTurn(aShot(1.0, 3.0), HumanSeat{}, setup.game);
+  const WireTurn good = wireTurn(aSpunShot(1.0, 3.0), HumanSeat{}, setup.game);
   const std::vector<std::pair<const char*, json>> bad = {
       {"speed", 14.5},
       {"speed", -1.0},

@@ -14,6 +14,13 @@
 
 namespace nineball::testing {
 
+/// The window size the picture tests draw at, unless a test needs another.
+inline constexpr unsigned kWidth = 1280;
+inline constexpr unsigned kHeight = 800;
+/// The smaller window some tests draw at (960 x 600, the default window's size).
+inline constexpr unsigned kSmallWidth = 960;
+inline constexpr unsigned kSmallHeight = 600;
+
 struct XvfbRun {
   int status = -1;
   std::string err;

@@ -14,13 +14,14 @@
 #include "nineball/match.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/script_screenshot.hpp"
 
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 
 // The master's opening shot of seed 1 (nineball match, both players ai:master): a point off
 // three cushions, the white onto the red first.

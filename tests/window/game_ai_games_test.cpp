@@ -8,26 +8,19 @@
 
 #include "window/computer_player.hpp"
 #include "window/frame_builder.hpp"
+#include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
 namespace {
 
-constexpr double kFrame = 1.0 / 30.0;
+constexpr double kGamesFrame = 1.0 / 30.0;
 using Stage = ComputerPlayer::Stage;
-
-bool roll(GameSession& s) {
-  for (int frame = 0; frame < 30 * 120; ++frame) {
-    s.advance(kFrame);
-    if (s.phase() != Phase::Rolling) return true;
-  }
-  return false;
-}
 
 // Runs the computer's frames until `stage` (true), or until its turn is over (false).
 bool runUntil(ComputerPlayer& c, GameSession& s, Stage stage) {
   for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kGamesFrame);
     if (c.stage() == stage) return true;
   }
   return false;
@@ -37,7 +30,7 @@ bool runUntil(ComputerPlayer& c, GameSession& s, Stage stage) {
 std::set<std::string> finishTurn(ComputerPlayer& c, GameSession& s) {
   std::set<std::string> said;
   for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kGamesFrame);
     if (c.controls(s)) said.insert(c.status(s));
   }
   return said;
@@ -99,7 +92,7 @@ TEST(ComputerGames, TheComputersCallIsMadeInTheSessionShownAndPlayed) {
   s.setSpeed(1.5);
   s.callObvious();
   ASSERT_TRUE(s.shoot()) << s.message();
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kGamesFrame));
   ASSERT_TRUE(c.controls(s)) << s.message();
   ASSERT_TRUE(s.callRequired());
 
@@ -128,7 +121,7 @@ TEST(ComputerGames, AShotWithoutTheCallDueIsCalledTheObviousWay) {
   s.setSpeed(1.5);
   s.callObvious();
   ASSERT_TRUE(s.shoot()) << s.message();
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kGamesFrame));
   ASSERT_TRUE(c.controls(s));
   ComputerMove move;  // the planner forgot the call: the window must not get stuck on it
   move.turn.shot.heading_rad = 0.3;
@@ -163,7 +156,7 @@ TEST(ComputerGames, TheComputersPushOutIsDeclaredAndPlayedAsOne) {
     return m;
   });
   finishTurn(c, s);
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kGamesFrame));
   ASSERT_EQ(s.seatToMove(), ComputerPlayer::kSeat) << s.message();
   ASSERT_TRUE(s.pushOutAvailable());
 
@@ -173,7 +166,7 @@ TEST(ComputerGames, TheComputersPushOutIsDeclaredAndPlayedAsOne) {
   finishTurn(c, s);
   ASSERT_EQ(s.phase(), Phase::Rolling) << s.message();
   EXPECT_EQ(s.rackTurns().back().kind, TurnInput::Kind::PushOut);
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kGamesFrame));
   EXPECT_EQ(s.phase(), Phase::PushOutChoice);
   EXPECT_EQ(s.seatToMove(), 0);
   EXPECT_NE(s.message().find("Computer pushed out"), std::string::npos) << s.message();
@@ -187,7 +180,7 @@ GameSession illegalEightBallBreak(ComputerPlayer& c) {
   c.setOpponent(s, ComputerSeat{ai::Level::Casual});
   s.setSpeed(0.5);
   EXPECT_TRUE(s.shoot()) << s.message();
-  EXPECT_TRUE(roll(s));
+  EXPECT_TRUE(roll(s, kGamesFrame));
   return s;
 }
 
@@ -202,13 +195,13 @@ TEST(ComputerGames, TheComputerReracksAfterAnIllegalBreakAndBreaks) {
   rerack.turn.kind = TurnInput::Kind::Decision;
   rerack.turn.shoot = false;
   thinkAlways(c, rerack);
-  c.update(s, kFrame);
+  c.update(s, kGamesFrame);
   ASSERT_EQ(c.stage(), Stage::Thinking);
   EXPECT_EQ(c.status(s), "Computer thinking: play on or re-rack?");
   const render::Frame f = buildFrame(s, {}, seats);
   EXPECT_TRUE(f.hud.button_left.empty());  // no buttons for the human to press
   for (int frame = 0; frame < 30 * 30 && s.phase() == Phase::PushOutChoice; ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kGamesFrame);
   }
   EXPECT_NE(s.message().find("Computer has the balls re-racked and breaks"), std::string::npos)
       << s.message();
@@ -224,7 +217,7 @@ TEST(ComputerGames, ThePlannerAnswersTheIllegalBreak) {
   ASSERT_EQ(s.phase(), Phase::PushOutChoice) << s.message();
   c.setWaitForPlans(true);
   for (int frame = 0; frame < 30 * 30 && s.phase() == Phase::PushOutChoice; ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kGamesFrame);
   }
   const bool on = s.message().find("Computer plays the table as it lies") != std::string::npos;
   const bool again = s.message().find("Computer has the balls re-racked") != std::string::npos;
@@ -259,7 +252,7 @@ void playSomeTurns(rules::Game game) {
       ASSERT_TRUE(s.shoot()) << s.message();
     }
     if (s.phase() == Phase::Rolling) {
-      ASSERT_TRUE(roll(s));
+      ASSERT_TRUE(roll(s, kGamesFrame));
     }
   }
   EXPECT_GT(computer_turns, 0);

@@ -14,6 +14,7 @@
 #include "window/computer_player.hpp"
 #include "window/frame_builder.hpp"
 #include "window/game_input.hpp"
+#include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
 
 using nineball::BallState;
@@ -33,17 +34,9 @@ using Stage = nineball::window::ComputerPlayer::Stage;
 
 namespace {
 
-constexpr double kFrame = 1.0 / 30.0;
+constexpr double kAiFrame = 1.0 / 30.0;
 
 // Runs the shot to its end; false if it never ends.
-bool roll(GameSession& s) {
-  for (int frame = 0; frame < 30 * 120; ++frame) {
-    s.advance(kFrame);
-    if (s.phase() != Phase::Rolling) return true;
-  }
-  return false;
-}
-
 // The test's human: straight at the ball on, hard on the break; plays on after a push-out.
 void playHuman(GameSession& s) {
   if (s.phase() == Phase::PushOutChoice) {
@@ -58,7 +51,7 @@ void playHuman(GameSession& s) {
 std::set<Stage> computerTurn(ComputerPlayer& c, GameSession& s) {
   std::set<Stage> seen;
   for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kAiFrame);
     seen.insert(c.stage());
   }
   return seen;
@@ -108,7 +101,7 @@ TEST(ComputerPlayer, OnlyPlayerTwosSeatAndOnlyWhenChosen) {
   c.setOpponent(s, ComputerSeat{Level::Casual});
   EXPECT_EQ(s.seatName(1), "Computer");
   EXPECT_FALSE(c.controls(s));  // Player 1 breaks
-  c.update(s, kFrame);
+  c.update(s, kAiFrame);
   EXPECT_EQ(c.stage(), Stage::Idle);
   c.setOpponent(s, HumanSeat{});
   EXPECT_EQ(s.seatName(1), "Player 2");
@@ -126,14 +119,14 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kAiFrame));
   ASSERT_EQ(s.seatToMove(), ComputerPlayer::kSeat);
   ASSERT_TRUE(s.cueInHand());
   ASSERT_TRUE(c.controls(s));
 
   // However long the planner takes, the frames go on and the position stays as it is.
   const Vec2 cue_before = s.cuePosition();
-  for (int frame = 0; frame < 60; ++frame) c.update(s, kFrame);
+  for (int frame = 0; frame < 60; ++frame) c.update(s, kAiFrame);
   EXPECT_EQ(c.stage(), Stage::Thinking);
   EXPECT_EQ(c.status(s), "Computer thinking...");
   EXPECT_EQ(s.phase(), Phase::Aiming);
@@ -148,7 +141,7 @@ TEST(ComputerPlayer, ThinksOffTheWindowThreadThenShowsTheShotAndStrikes) {
   double max_pull = 0.0;
   bool guide_while_aiming = false;
   for (int frame = 0; frame < 30 * 30 && c.controls(s); ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kAiFrame);
     if (!c.controls(s)) break;
     seen.insert(c.stage());
     max_pull = std::max(max_pull, c.pull());
@@ -177,7 +170,7 @@ TEST(ComputerPlayer, KeysAndClicksDoNotPlayTheComputersTurn) {
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kAiFrame));
   ASSERT_TRUE(c.controls(s));
   nineball::window::UiState ui;
   nineball::window::GameInput input(s, ui, seats);
@@ -222,8 +215,8 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
-  c.update(s, kFrame);
+  ASSERT_TRUE(roll(s, kAiFrame));
+  c.update(s, kAiFrame);
   ASSERT_EQ(c.stage(), Stage::Thinking);
   // Back to the computer at another level while the dropped plan is still under way: a new
   // planner takes the turn, and the old one's answer is never played.
@@ -231,7 +224,7 @@ TEST(ComputerPlayer, SwitchingOpponentWhileItThinksDropsItsTurn) {
   EXPECT_EQ(c.stage(), Stage::Idle);
   EXPECT_FALSE(c.controls(s));
   c.setOpponent(s, ComputerSeat{Level::Club});
-  c.update(s, kFrame);
+  c.update(s, kAiFrame);
   EXPECT_EQ(c.stage(), Stage::Thinking);
   release = true;
   c.setWaitForPlans(true);
@@ -251,7 +244,7 @@ TEST(ComputerPlayer, APlannerThatFailsGivesAPlainShotAtTheBallOn) {
   s.setHeading(0.0);
   s.setSpeed(1.5);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kAiFrame));
   ASSERT_TRUE(c.controls(s));
   computerTurn(c, s);
   ASSERT_EQ(s.phase(), Phase::Rolling);
@@ -269,20 +262,20 @@ TEST(ComputerPlayer, AnswersAPushOut) {
   c.setOpponent(s, ComputerSeat{Level::Casual});
   c.setWaitForPlans(true);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kAiFrame));
   ASSERT_EQ(s.seatToMove(), 0) << s.message();
   ASSERT_TRUE(s.pushOutAvailable());
   s.togglePushOut();
   s.setSpeed(0.5);
   ASSERT_TRUE(s.shoot());
-  ASSERT_TRUE(roll(s));
+  ASSERT_TRUE(roll(s, kAiFrame));
   ASSERT_EQ(s.phase(), Phase::PushOutChoice);
   ASSERT_TRUE(c.controls(s));
   const auto f = nineball::window::buildFrame(s, {}, seats);
   EXPECT_TRUE(f.hud.button_left.empty());  // no buttons for the human to press
   // Up to the decision only: a computer that plays on goes on to shoot, and its message with it.
   for (int frame = 0; frame < 30 * 30 && s.phase() == Phase::PushOutChoice; ++frame) {
-    c.update(s, kFrame);
+    c.update(s, kAiFrame);
   }
   const bool played = s.message().find("Computer plays from there") != std::string::npos;
   const bool passed = s.message().find("Computer passes") != std::string::npos;
@@ -308,7 +301,7 @@ TEST(ComputerPlayer, PlaysARackToTheEndAgainstTheTestsShots) {
       ++human_shots;
     }
     if (s.phase() == Phase::Rolling) {
-      ASSERT_TRUE(roll(s));
+      ASSERT_TRUE(roll(s, kAiFrame));
     }
   }
   ASSERT_EQ(s.phase(), Phase::GameOver) << s.message();

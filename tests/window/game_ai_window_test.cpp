@@ -10,20 +10,14 @@
 #include <sstream>
 #include <string>
 
+#include "support/file_text.hpp"
 #include "support/xvfb_run.hpp"
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
+using nineball::testing::shellWord;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using nineball::testing::fileText;
 
 struct Run {
   int status = -1;
@@ -35,7 +29,7 @@ struct Run {
 Run playUnderXvfb(const std::string& game, const std::string& png) {
   const nineball::testing::XvfbRun run =
       nineball::testing::runGameUnderXvfb("--log-level info --opponent ai:easy --game " + game +
-                                              " --frames 1200 --screenshot " + quoted(png),
+                                              " --frames 1200 --screenshot " + shellWord(png),
                                           1280, 800);
   Run r;
   r.status = run.status;
@@ -50,7 +44,7 @@ void expectComputerTurns(const std::string& game) {
   const std::string png = "/tmp/nineball-test-ai-" + game + "-" + std::to_string(getpid()) + ".png";
   const Run r = playUnderXvfb(game, png);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_FALSE(slurp(png).empty()) << "no screenshot";
+  EXPECT_FALSE(fileText(png).empty()) << "no screenshot";
   std::remove(png.c_str());
   EXPECT_NE(r.err.find("opponent: vs computer (casual)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("Computer shoots:"), std::string::npos) << r.err;  // its own turn

@@ -5,18 +5,11 @@
 
 #include <cmath>
 
+#include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
 namespace {
-
-bool roll(GameSession& s) {
-  for (int frame = 0; frame < 60 * 120; ++frame) {
-    s.advance(1.0 / 60.0);
-    if (s.phase() != Phase::Rolling) return true;
-  }
-  return false;
-}
 
 Vec2 pocketCentre(const GameSession& s, PocketId id) {
   for (const Pocket& p : s.match().world().table().pockets) {

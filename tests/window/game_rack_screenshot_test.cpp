@@ -19,13 +19,11 @@
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
-constexpr int kTolerance = 24;  // per channel; the balls are drawn without antialiasing
+using nineball::testing::shellWord;
 
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
+constexpr int kTolerance = 24;  // per channel; the balls are drawn without antialiasing
 
 int shoot(const std::string& args) {
   return testing::runGameUnderXvfb(args, kWidth, kHeight).status;
@@ -44,8 +42,8 @@ void expectRack(rules::Game game, std::size_t balls) {
   SCOPED_TRACE(rules::gameName(game));
   const std::string png = "/tmp/nineball-test-rack-" + std::string(rules::gameName(game)) + "-" +
                           std::to_string(getpid()) + ".png";
-  ASSERT_EQ(shoot(std::string("--game ") + rules::gameName(game) + " --screenshot " + quoted(png)),
-            0);
+  ASSERT_EQ(
+      shoot(std::string("--game ") + rules::gameName(game) + " --screenshot " + shellWord(png)), 0);
   sf::Image image;
   ASSERT_TRUE(image.loadFromFile(png));
   std::remove(png.c_str());

@@ -1,14 +1,18 @@
 // Shots of the game's session played to their end the way the window plays them.
 #pragma once
 
+#include <cmath>
+
 #include "window/game_session.hpp"
 
 namespace nineball::window {
 
-/// Runs the shot to its end at 60 frames per second; false if it never ends.
-inline bool roll(GameSession& s) {
-  for (int frame = 0; frame < 60 * 120; ++frame) {
-    s.advance(1.0 / 60.0);
+/// Runs the shot to its end a `frame` (s) at a time, 60 a second unless told; false if it has
+/// not ended after two minutes.
+inline bool roll(GameSession& s, double frame_s = 1.0 / 60.0) {
+  const long frames = std::lround(120.0 / frame_s);
+  for (long frame = 0; frame < frames; ++frame) {
+    s.advance(frame_s);
     if (s.phase() != Phase::Rolling) return true;
   }
   return false;

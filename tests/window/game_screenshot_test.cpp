@@ -21,6 +21,7 @@
 #include "render/cue_stick_shape.hpp"
 #include "render/palette.hpp"
 #include "render/view_transform.hpp"
+#include "support/file_text.hpp"
 #include "support/xvfb_run.hpp"
 #include "window/game_session.hpp"
 
@@ -35,21 +36,14 @@ using nineball::render::ViewTransform;
 
 namespace {
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
+using nineball::testing::shellWord;
+
+using nineball::testing::fileText;
+
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 // Each colour channel may differ this much from the palette (there is no antialiasing).
 constexpr int kTolerance = 24;
-
-std::string quoted(const std::string& s) {
-  return "'" + s + "'";
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 using nineball::testing::haveXvfbRun;
 using nineball::testing::XvfbRun;
@@ -262,7 +256,7 @@ TEST(GameWindow, ScreenshotsUnderXvfbShowThePhysics) {
   {
     SCOPED_TRACE("the rack before the break");
     const std::string png = tempPath("rack");
-    const XvfbRun r = runUnderXvfb("--screenshot " + quoted(png));
+    const XvfbRun r = runUnderXvfb("--screenshot " + shellWord(png));
     ASSERT_EQ(r.status, 0) << r.err;
     expectNoLeakOfOurs(r);
     MatchSetup setup;
@@ -284,7 +278,7 @@ TEST(GameWindow, ScreenshotsUnderXvfbShowThePhysics) {
     std::ofstream(script_path) << script;
     const std::string png = tempPath("script");
     const XvfbRun r =
-        runUnderXvfb("--script " + quoted(script_path) + " --screenshot " + quoted(png));
+        runUnderXvfb("--script " + shellWord(script_path) + " --screenshot " + shellWord(png));
     std::remove(script_path.c_str());
     ASSERT_EQ(r.status, 0) << r.err;
     expectNoLeakOfOurs(r);
@@ -302,7 +296,7 @@ TEST(GameWindow, ScreenshotsUnderXvfbShowThePhysics) {
   {
     SCOPED_TRACE("the break in motion, 30 frames of 1/60 s in");
     const std::string png = tempPath("moving");
-    const XvfbRun r = runUnderXvfb("--frames 30 --screenshot " + quoted(png));
+    const XvfbRun r = runUnderXvfb("--frames 30 --screenshot " + shellWord(png));
     ASSERT_EQ(r.status, 0) << r.err;
     expectNoLeakOfOurs(r);
     nineball::window::GameSession session{MatchSetup{}};
@@ -338,7 +332,7 @@ TEST(GameWindow, ScreenshotsUnderXvfbShowThePhysics) {
 // The HUD's own record of what it drew (NINEBALL_HUD_TEXTS): each tray ball's box by name.
 std::map<std::string, std::array<double, 4>> trayBoxes(const std::string& path) {
   std::map<std::string, std::array<double, 4>> boxes;
-  std::istringstream in(slurp(path));
+  std::istringstream in(fileText(path));
   for (std::string line; std::getline(in, line);) {
     const auto colon = line.find(" : ");
     if (line.rfind("text ", 0) != 0 || colon == std::string::npos) continue;
@@ -361,8 +355,8 @@ TEST(GameWindow, TheReplayAndTheTrayOnScreen) {
   const std::string png = tempPath("replay");
   const std::string texts = png + ".txt";
   const XvfbRun r = runUnderXvfb(
-      "--script " + quoted(script_path) + " --replay --frames 20 --screenshot " + quoted(png),
-      "NINEBALL_HUD_TEXTS=" + quoted(texts));
+      "--script " + shellWord(script_path) + " --replay --frames 20 --screenshot " + shellWord(png),
+      "NINEBALL_HUD_TEXTS=" + shellWord(texts));
   std::remove(script_path.c_str());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto parsed = nineball::io::parseMatchScript(script);
@@ -410,10 +404,10 @@ TEST(GameWindow, TheReplayAndTheTrayOnScreen) {
 
 TEST(GameWindow, WithoutADisplaySaysSoInOneLine) {
   const std::string err_path = "/tmp/nineball-nodisplay-" + std::to_string(getpid());
-  const std::string cmd =
-      "env -u DISPLAY " + quoted(NINEBALL_BINARY) + " --mute >/dev/null 2>" + quoted(err_path);
+  const std::string cmd = "env -u DISPLAY " + shellWord(NINEBALL_BINARY) + " --mute >/dev/null 2>" +
+                          shellWord(err_path);
   const int raw = std::system(cmd.c_str());
-  const std::string err = slurp(err_path);
+  const std::string err = fileText(err_path);
   std::remove(err_path.c_str());
   ASSERT_TRUE(WIFEXITED(raw));
   EXPECT_EQ(WEXITSTATUS(raw), 1);

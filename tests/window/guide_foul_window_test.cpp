@@ -8,13 +8,14 @@
 
 #include "nineball/match.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/script_screenshot.hpp"
 
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 
 TEST(GuideFoulWindow, TheWarningIsDrawnOverTheBalls) {
   ASSERT_TRUE(testing::haveXvfbRun())

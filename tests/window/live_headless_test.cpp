@@ -22,7 +22,7 @@
 namespace nineball::window {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+constexpr double kLiveFrame = 1.0 / 60.0;
 constexpr int kMaxFrames = 60 * 60 * 30;  // half an hour of play: a rack ends long before
 
 struct Features {
@@ -89,9 +89,9 @@ LiveRack playLive(const MatchSetup& setup, ai::Level seat1, ai::Level seat2, std
         EXPECT_TRUE(s.shoot(turn)) << s.message();
       }
     } else {
-      computer.update(s, kFrame);
+      computer.update(s, kLiveFrame);
     }
-    s.advance(kFrame);
+    s.advance(kLiveFrame);
   }
   rack.turns = s.rackTurns();
   rack.end = s.match().balls();
@@ -115,7 +115,7 @@ std::vector<std::uint64_t> playHeadless(const MatchSetup& setup,
 // plays the last shot to where the rack ended.
 void expectReplayEndsWhereTheRackEnded(const LiveRack& live) {
   ShotReplay replay(live.setup, live.turns, 1.0);
-  for (int frame = 0; frame < kMaxFrames && !replay.finished(); ++frame) replay.advance(kFrame);
+  for (int frame = 0; frame < kMaxFrames && !replay.finished(); ++frame) replay.advance(kLiveFrame);
   ASSERT_TRUE(replay.finished());
   EXPECT_EQ(stateHash(replay.balls()), stateHash(live.end));
 }
@@ -232,7 +232,7 @@ TEST(LiveAndHeadless, AThreeCushionGameIsTheSameEitherWay) {
 // Rolls the session's shot to its end a fixed frame at a time.
 void rollFrames(GameSession& s) {
   for (int frame = 0; frame < kMaxFrames && s.phase() == Phase::Rolling; ++frame) {
-    s.advance(kFrame);
+    s.advance(kLiveFrame);
   }
 }
 
@@ -334,7 +334,7 @@ TEST(LiveAndHeadless, NineballMatchEndsWhereTheWindowEnds) {
     }
     ASSERT_TRUE(s.shoot(t)) << s.message();
     for (int frame = 0; frame < kMaxFrames && s.phase() == Phase::Rolling; ++frame) {
-      s.advance(kFrame);
+      s.advance(kLiveFrame);
     }
   }
   testing::TempFile file(text);

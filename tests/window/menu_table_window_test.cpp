@@ -16,8 +16,8 @@
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 960;
-constexpr unsigned kHeight = 600;
+using nineball::testing::kSmallHeight;
+using nineball::testing::kSmallWidth;
 
 // The games in the menu's order (the registry's), the Game row's Right presses away from
 // nine-ball.
@@ -43,8 +43,8 @@ class MenuTableWindow : public ::testing::Test {
     std::string env = "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' XDG_STATE_HOME='" +
                       (dir_ / "state").string() + "'";
     if (!keys.empty()) env += " NINEBALL_MENU_KEYS='" + keys + "'";
-    const testing::XvfbRun run =
-        testing::runGameUnderXvfb(args + " --screenshot '" + png + "'", kWidth, kHeight, env);
+    const testing::XvfbRun run = testing::runGameUnderXvfb(args + " --screenshot '" + png + "'",
+                                                           kSmallWidth, kSmallHeight, env);
     sf::Image image;
     EXPECT_EQ(run.status, 0) << run.err;
     EXPECT_TRUE(image.loadFromFile(png)) << name << ": " << run.err;
@@ -95,8 +95,9 @@ TEST_F(MenuTableWindow, KeysThatPickNothingEndTheRunWithoutHanging) {
   const std::string png = (dir_ / "none.png").string();
   const std::string env = "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' XDG_STATE_HOME='" +
                           (dir_ / "state").string() + "'";
-  const testing::XvfbRun bad = testing::runGameUnderXvfb(
-      "--menu --screenshot '" + png + "'", kWidth, kHeight, env + " NINEBALL_MENU_KEYS=down,jump");
+  const testing::XvfbRun bad =
+      testing::runGameUnderXvfb("--menu --screenshot '" + png + "'", kSmallWidth, kSmallHeight,
+                                env + " NINEBALL_MENU_KEYS=down,jump");
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.err.find("\"jump\" is not a menu key"), std::string::npos) << bad.err;
 }

@@ -23,8 +23,8 @@ namespace {
 
 using nineball::testing::freePort;
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 // The table and its rails in a 1280x800 window (the HUD's bands above and below it differ:
 // each window names its own opponent).
 constexpr unsigned kTableTop = 90, kTableBottom = 712, kTableLeft = 56, kTableRight = 1224;

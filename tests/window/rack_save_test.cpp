@@ -11,18 +11,11 @@
 #include <vector>
 
 #include "support/computer_race.hpp"
+#include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
 
 namespace nineball::window {
 namespace {
-
-bool roll(GameSession& s) {
-  for (int frame = 0; frame < 60 * 120; ++frame) {
-    s.advance(1.0 / 60.0);
-    if (s.phase() != Phase::Rolling) return true;
-  }
-  return false;
-}
 
 class RackFiles : public ::testing::Test {
  protected:

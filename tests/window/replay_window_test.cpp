@@ -21,18 +21,14 @@
 #include "io/match_json.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "support/file_text.hpp"
 
 namespace nineball {
 namespace {
 
-using nlohmann::json;
+using nineball::testing::fileText;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using nlohmann::json;
 
 void pause(double seconds) {
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
@@ -89,7 +85,7 @@ class XvfbGame {
   // True when it did so.
   bool restartAfterNoDisplay() {
     if (running() || restarts_ >= kMaxRestarts) return false;
-    if (slurp(dir_ + "/err.log").find("no display found") == std::string::npos) return false;
+    if (fileText(dir_ + "/err.log").find("no display found") == std::string::npos) return false;
     ++restarts_;
     stop();
     pause(1.0);
@@ -106,7 +102,7 @@ class XvfbGame {
     xvfb_ = spawn("exec Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>'" + said +
                   "' 2>/dev/null");
     for (int i = 0; i < 600 && display_ < 0; ++i) {
-      const std::string text = slurp(said);
+      const std::string text = fileText(said);
       if (!text.empty() && text.back() == '\n') display_ = std::stoi(text);
       if (display_ < 0) pause(0.1);
     }
@@ -190,12 +186,12 @@ TEST(ReplayWindow, ShiftVAtTheEndOfARackWithFoulsPlaysTheReplayAndTheGameGoesOn)
        ++i) {
     const std::string ids = dir + "/ids";
     game.run("xdotool search --name '^nineball' >'" + ids + "' 2>/dev/null");
-    std::istringstream(slurp(ids)) >> window;
+    std::istringstream(fileText(ids)) >> window;
     if (window.empty()) pause(0.1);
   }
-  ASSERT_FALSE(window.empty()) << slurp(dir + "/err.log");
+  ASSERT_FALSE(window.empty()) << fileText(dir + "/err.log");
   pause(1.0);
-  ASSERT_TRUE(game.running()) << slurp(dir + "/err.log");
+  ASSERT_TRUE(game.running()) << fileText(dir + "/err.log");
   game.run("xdotool windowfocus " + window + " 2>/dev/null");
   game.run("xdotool mousemove --window " + window + " 640 400");
 
@@ -211,21 +207,21 @@ TEST(ReplayWindow, ShiftVAtTheEndOfARackWithFoulsPlaysTheReplayAndTheGameGoesOn)
   for (int i = 0; i < kLooks; ++i) {
     const std::string file = dir + "/frame.xwd";
     ASSERT_EQ(game.run("xwd -root -silent >'" + file + "'"), 0);
-    const std::string picture = slurp(file);
+    const std::string picture = fileText(file);
     if (i > 0 && picture != last) ++changes;
     last = picture;
     pause(0.3);
   }
   EXPECT_GE(changes, 5) << "the replay does not play: " << changes << " changes in " << kLooks
                         << " looks";
-  ASSERT_TRUE(game.running()) << slurp(dir + "/err.log");
+  ASSERT_TRUE(game.running()) << fileText(dir + "/err.log");
 
   // The replay is let run to its end (on a loaded machine it may already be over, and the keys
   // below would then mean something else): the picture still for a second, within 60 s.
   for (int still = 0, i = 0; still < 4 && i < 240; ++i) {
     const std::string file = dir + "/frame.xwd";
     ASSERT_EQ(game.run("xwd -root -silent >'" + file + "'"), 0);
-    const std::string picture = slurp(file);
+    const std::string picture = fileText(file);
     still = picture == last ? still + 1 : 0;
     last = picture;
     pause(0.25);
@@ -234,8 +230,8 @@ TEST(ReplayWindow, ShiftVAtTheEndOfARackWithFoulsPlaysTheReplayAndTheGameGoesOn)
   game.run("xdotool key --window " + window + " Escape");
   pause(0.5);
   game.run("xdotool key --window " + window + " y");
-  EXPECT_EQ(game.waitExit(20.0), 0) << slurp(dir + "/err.log");
-  const std::string log = slurp(dir + "/err.log");
+  EXPECT_EQ(game.waitExit(20.0), 0) << fileText(dir + "/err.log");
+  const std::string log = fileText(dir + "/err.log");
   EXPECT_EQ(log.find("internal error"), std::string::npos) << log;
   if (log.find("LeakSanitizer") != std::string::npos) {
     EXPECT_EQ(log.find("nineball::"), std::string::npos) << log;

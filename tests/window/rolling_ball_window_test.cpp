@@ -21,7 +21,8 @@
 namespace nineball {
 namespace {
 
-constexpr unsigned kWidth = 1280, kHeight = 800;
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 constexpr double kFrame = 1.0 / 60.0;
 
 // The break, frame by frame, as the window plays and draws it: what each frame shows and how

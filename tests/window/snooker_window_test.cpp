@@ -14,13 +14,14 @@
 #include "nineball/match.hpp"
 #include "nineball/table_markings.hpp"
 #include "render/view_transform.hpp"
+#include "support/xvfb_run.hpp"
 #include "window/script_screenshot.hpp"
 
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 1280;
-constexpr unsigned kHeight = 800;
+using nineball::testing::kHeight;
+using nineball::testing::kWidth;
 
 // The colour a snooker ball of this id must read as, by its dominant channels.
 bool looksLike(int id, const sf::Color& c) {

@@ -15,13 +15,13 @@
 namespace nineball::window {
 namespace {
 
-constexpr unsigned kWidth = 960;
-constexpr unsigned kHeight = 600;
+using nineball::testing::kSmallHeight;
+using nineball::testing::kSmallWidth;
 
 sf::Image shoot(const std::string& stem, const std::string& args) {
   const std::string png = stem + ".png";
   const testing::XvfbRun run =
-      testing::runGameUnderXvfb(args + " --screenshot '" + png + "'", kWidth, kHeight);
+      testing::runGameUnderXvfb(args + " --screenshot '" + png + "'", kSmallWidth, kSmallHeight);
   EXPECT_EQ(run.status, 0) << run.err;
   sf::Image image;
   EXPECT_TRUE(image.loadFromFile(png)) << run.err;
