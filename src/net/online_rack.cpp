@@ -46,7 +46,8 @@ struct Dropped {};
 // the link, the gate, the handshake's timing and the rejoin window; the rack owns the table.
 class OnlineRack {
  public:
-  explicit OnlineRack(const OnlineRackOptions& o) : o_(o), token_(o.seat_token) {}
+  explicit OnlineRack(const OnlineRackOptions& o)
+      : o_(o), token_(o.seat_token), allowance_(o.most_heals, o.most_rejoins) {}
 
   OnlineRackResult run() {
     try {
@@ -207,7 +208,7 @@ class OnlineRack {
   // A lost link: the rack pauses, and goes on if the peer comes back in time.
   void recover() {
     const std::string reason = lost_;
-    if (++rejoins_ > o_.most_rejoins) {
+    if (!allowance_.takeRejoin()) {
       end(Outcome::LinkLost, "the link was lost (" + reason + ") more than " +
                                  std::to_string(o_.most_rejoins) + " times in this rack");
     }
@@ -523,7 +524,7 @@ class OnlineRack {
 
   void onVerdict(HashVerdict verdict, std::size_t index) {
     if (verdict == HashVerdict::Mismatch && o_.side == Side::Host) {
-      if (lockstep_->heals() >= o_.most_heals) tooManyHeals(index);
+      if (allowance_.healsSpent(lockstep_->heals())) tooManyHeals(index);
       logger("net")->warn("out of step after turn {}: sending this side's state whole", index);
       const MatchSnapshot own = match_->snapshot();
       send(lockstep_->healMessage(own));
@@ -548,7 +549,7 @@ class OnlineRack {
   }
 
   void heal(const StateMessage& s) {
-    if (lockstep_->heals() >= o_.most_heals) tooManyHeals(s.index);
+    if (allowance_.healsSpent(lockstep_->heals())) tooManyHeals(s.index);
     std::string why;
     auto snapshot = lockstep_->healState(s, *match_, why);
     if (!snapshot) refusePeer(why);
@@ -579,8 +580,8 @@ class OnlineRack {
   std::deque<PeerEvent> events_;  // what the peer reported, not yet acted on
   std::string lost_;              // why the link was lost (the rejoin's reason)
   std::string token_;             // the joiner: its seat token
-  int rejoins_ = 0;
-  double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)
+  RackAllowance allowance_;       // the heals and rejoins this rack may take
+  double turn_deadline_ = 0.0;    // the peer's turn must have come by then (0: not waiting)
   std::unique_ptr<Match> match_;
   std::unique_ptr<Lockstep> lockstep_;
   std::unique_ptr<ai::Planner> planner_;

@@ -11,6 +11,7 @@
 #include "net/connection.hpp"
 #include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
+#include "net/rack_allowance.hpp"
 
 // One rack over the network without a window: `nineball online`. Each side takes its own
 // seat's turns from its match script (or plays it as the computer), both play every turn,
@@ -41,8 +42,8 @@ struct OnlineRackOptions {
   /// is given up.
   double turn_s = 300.0;
   /// Heals and rejoins a rack may take; one more ends it (out of step, or the link lost).
-  int most_heals = 3;
-  int most_rejoins = 20;
+  int most_heals = kMostHealsPerRack;
+  int most_rejoins = kMostRejoinsPerRack;
   LinkLimits limits;
   GateLimits gate;
   /// What every timeout reads (tests: a fake clock); never null.

@@ -13,9 +13,6 @@
 namespace nineball::window {
 namespace {
 
-// Heals and rejoins a rack may take (as `nineball online`); one more ends the game.
-constexpr int kMostHeals = 3;
-constexpr int kMostRejoins = 20;
 // How long the joiner waits for the host's answer to its hello.
 constexpr double kWelcomeSeconds = 10.0;
 
@@ -29,7 +26,6 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 AimPose poseOf(const net::Aim& a) {
   return {a.heading_rad, a.speed, a.tip, a.elevation_rad, a.cue};
 }
-
 
 }  // namespace
 
@@ -272,10 +268,11 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   peer_->handshakeDone();
   send(
       net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_, peer_->seatToken()));
-  if (!lockstep_->turns().empty() && ++rejoins_ > kMostRejoins) {
-    send(net::Refuse{"rejoined more than " + std::to_string(kMostRejoins) + " times in this rack"});
+  if (!lockstep_->turns().empty() && !allowance_.takeRejoin()) {
+    send(net::Refuse{"rejoined more than " + std::to_string(allowance_.mostRejoins()) +
+                     " times in this rack"});
     peer_->flush();
-    return end(peer_name_ + " rejoined more than " + std::to_string(kMostRejoins) +
+    return end(peer_name_ + " rejoined more than " + std::to_string(allowance_.mostRejoins()) +
                    " times in this rack: the game is over.",
                true);
   }
@@ -402,7 +399,7 @@ void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
     case net::HashVerdict::Mismatch:
       logger("online")->warn("the two tables differ after {}: the host's state is sent whole",
                              turn);
-      if (lockstep_->heals() >= kMostHeals) {
+      if (allowance_.healsSpent(lockstep_->heals())) {
         // Disagreeing, dropping and rejoining must not keep a host healing for ever.
         send(net::Bye{"out of step after " + turn + ", healed " +
                           std::to_string(lockstep_->heals()) + " times in this rack already",
@@ -491,7 +488,7 @@ void OnlinePlay::installRelay(GameSession& session) {
 void OnlinePlay::newRack(GameSession& session) {
   lockstep_.emplace(config_.side, session.rackSetup());
   if (peer_player_) lockstep_->setPeerPlayer(*peer_player_);
-  rejoins_ = 0;
+  allowance_.newRack();
   pending_.reset();
   outgoing_.reset();
   local_offer_ = peer_offer_ = false;

@@ -13,6 +13,7 @@
 #include "net/lockstep.hpp"
 #include "net/peer.hpp"
 #include "net/protocol.hpp"
+#include "net/rack_allowance.hpp"
 #include "net/wire.hpp"
 #include "window/computer_player.hpp"
 #include "window/game_session.hpp"
@@ -156,7 +157,7 @@ class OnlinePlay : public RemoteControl {
   double peer_power_ = 0.0;
   AimThrottle throttle_;
   std::size_t rack_turns_seen_ = 0;
-  int rejoins_ = 0;  // host: rejoins in this rack
+  net::RackAllowance allowance_;  // the heals (and, hosting, the rejoins) this rack may take
 };
 
 /// "m:ss" of a number of seconds (the rejoin's countdown).
