@@ -5,7 +5,8 @@
 namespace nineball::window {
 namespace {
 
-bool keyPressed(const sf::Event& event, sf::Keyboard::Key key) {
+// A press of `key` (named apart from game_loop.cpp's helper: one unity build unit may hold both).
+bool isPressOf(const sf::Event& event, sf::Keyboard::Key key) {
   return event.type == sf::Event::KeyPressed && event.key.code == key;
 }
 
@@ -21,8 +22,8 @@ SettingsScreen::SettingsScreen(const Settings& settings, bool muted_by_option,
 }
 
 void SettingsScreen::event(const sf::Event& event) {
-  if (keyPressed(event, sf::Keyboard::F2)) model_.key(MenuKey::Escape);
-  if (keyPressed(event, sf::Keyboard::F12)) hooks_.screenshot();
+  if (isPressOf(event, sf::Keyboard::F2)) model_.key(MenuKey::Escape);
+  if (isPressOf(event, sf::Keyboard::F12)) hooks_.screenshot();
   // A key held when the settings opened is still let go in the game.
   if (event.type == sf::Event::KeyReleased || event.type == sf::Event::LostFocus) {
     hooks_.let_go(event);
