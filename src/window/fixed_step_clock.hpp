@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 namespace nineball::window {
 
@@ -10,6 +11,13 @@ namespace nineball::window {
 class FixedStepClock {
  public:
   FixedStepClock(double dt, int max_steps_per_frame) : dt_(dt), max_steps_(max_steps_per_frame) {}
+
+  /// The clock the window plays a match's steps (`hz` a second) on: one frame catches up at
+  /// most a quarter of a second of play; past it a slow frame slows the game down.
+  static FixedStepClock forPlay(double dt, double hz) {
+    constexpr double kMaxCatchUp = 0.25;
+    return FixedStepClock(dt, std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * hz))));
+  }
 
   /// Adds one frame's time and says how many steps to take now.
   int advance(double seconds) {

@@ -19,9 +19,6 @@
 namespace nineball::window {
 namespace {
 
-// Catch-up in one frame, s of play: past this a slow frame slows the game down.
-constexpr double kMaxCatchUp = 0.25;
-// A shot still rolling after this long (s, simulated) is run to rest at once.
 // The picture's clock runs on this long (s) after the balls stop: a ball that dropped as the
 // shot ended finishes sinking into its pocket (the balls at rest turn no further).
 constexpr double kAfterRest = 1.0;
@@ -37,9 +34,7 @@ std::string formatSpeed(double mps) {
 }  // namespace
 
 GameSession::GameSession(const MatchSetup& setup, bool practice)
-    : setup_(setup),
-      clock_(setup.step.dt(),
-             std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * setup.step.hz)))) {
+    : setup_(setup), clock_(FixedStepClock::forPlay(setup.step.dt(), setup.step.hz)) {
   if (practice) {
     const Match racked(setup);
     practice_ = std::make_unique<PracticeTable>(

@@ -6,9 +6,6 @@
 namespace nineball::window {
 namespace {
 
-// Frames longer than this (s of play) are not caught up in one go.
-constexpr double kMaxCatchUp = 0.25;
-
 bool isShot(const TurnInput& t) {
   return t.kind != TurnInput::Kind::Decision;
 }
@@ -23,8 +20,7 @@ ShotReplay::ShotReplay(const MatchSetup& rack_setup, const std::vector<TurnInput
                        double rate)
     : match_(std::make_unique<Match>(rack_setup)),
       rate_(rate),
-      clock_(rack_setup.step.dt(),
-             std::max(1, static_cast<int>(std::ceil(kMaxCatchUp * rack_setup.step.hz)))) {
+      clock_(FixedStepClock::forPlay(rack_setup.step.dt(), rack_setup.step.hz)) {
   const auto last = std::find_if(turns.rbegin(), turns.rend(), isShot);
   if (last == turns.rend()) {
     finished_ = true;
