@@ -1,15 +1,9 @@
 #include "nineball/seat.hpp"
 
+#include "common/overloaded.hpp"
+
 namespace nineball {
 namespace {
-
-// Lets std::visit take one lambda per alternative.
-template <class... Fs>
-struct Overloaded : Fs... {
-  using Fs::operator()...;
-};
-template <class... Fs>
-Overloaded(Fs...) -> Overloaded<Fs...>;
 
 constexpr const char* kComputerPrefix = "ai:";
 

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "common/log.hpp"
+#include "common/overloaded.hpp"
 #include "net/handshake.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "window/seat_token_file.hpp"
@@ -15,13 +16,6 @@ namespace {
 
 // How long the joiner waits for the host's answer to its hello.
 constexpr double kWelcomeSeconds = 10.0;
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 AimPose poseOf(const net::Aim& a) {
   return {a.heading_rad, a.speed, a.tip, a.elevation_rad, a.cue};

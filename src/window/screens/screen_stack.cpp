@@ -34,27 +34,26 @@ bool ScreenStack::busy() const {
   return false;
 }
 
+void ScreenStack::closeTop() {
+  // A screen's closed() may push another (the menu's game starting over the table): it is
+  // taken off before it is told.
+  std::unique_ptr<Screen> done = std::move(screens_.back());
+  screens_.pop_back();
+  done->closed();
+  changed_ = true;
+}
+
 bool ScreenStack::removeFinished() {
   bool removed = false;
-  // A screen's closed() may push another (the menu's game starting over the table): each is
-  // taken off before it is told.
   while (!screens_.empty() && screens_.back()->finished()) {
-    std::unique_ptr<Screen> done = std::move(screens_.back());
-    screens_.pop_back();
-    done->closed();
+    closeTop();
     removed = true;
   }
-  changed_ = changed_ || removed;
   return removed;
 }
 
 void ScreenStack::closeDownTo(std::size_t keep) {
-  while (screens_.size() > keep) {
-    std::unique_ptr<Screen> done = std::move(screens_.back());
-    screens_.pop_back();
-    done->closed();
-    changed_ = true;
-  }
+  while (screens_.size() > keep) closeTop();
 }
 
 }  // namespace nineball::window

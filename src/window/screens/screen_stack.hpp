@@ -41,6 +41,8 @@ class ScreenStack {
  private:
   /// The lowest screen in sight: the topmost that covers the rest, else the bottom one.
   std::size_t lowestInSight() const;
+  // Takes the top screen off, then tells it (its closed() may push another).
+  void closeTop();
 
   std::vector<std::unique_ptr<Screen>> screens_;
   bool changed_ = false;

@@ -1,16 +1,8 @@
 #include "window/seats/seats.hpp"
 
+#include "common/overloaded.hpp"
+
 namespace nineball::window {
-namespace {
-
-template <class... Answers>
-struct Visitor : Answers... {
-  using Answers::operator()...;
-};
-template <class... Answers>
-Visitor(Answers...) -> Visitor<Answers...>;
-
-}  // namespace
 
 void Seats::setRemote(int seat, const RemoteControl& remote) {
   remote_ = Remote{seat, &remote};
@@ -32,30 +24,30 @@ WindowSeat Seats::mover(const GameSession& session) const {
 }
 
 bool Seats::controls(const GameSession& session) const {
-  return std::visit(Visitor{[](LocalSeat) { return false; },
-                            [&](PlannerSeat c) { return c.player->controls(session); },
-                            [&](RemoteSeat r) { return r.remote->controls(session); }},
+  return std::visit(Overloaded{[](LocalSeat) { return false; },
+                               [&](PlannerSeat c) { return c.player->controls(session); },
+                               [&](RemoteSeat r) { return r.remote->controls(session); }},
                     mover(session));
 }
 
 bool Seats::showsCue(const GameSession& session) const {
-  return std::visit(
-      Visitor{[](LocalSeat) { return false; }, [](PlannerSeat c) { return c.player->showsCue(); },
-              [](RemoteSeat r) { return r.remote->showsCue(); }},
-      mover(session));
+  return std::visit(Overloaded{[](LocalSeat) { return false; },
+                               [](PlannerSeat c) { return c.player->showsCue(); },
+                               [](RemoteSeat r) { return r.remote->showsCue(); }},
+                    mover(session));
 }
 
 double Seats::pull(const GameSession& session) const {
   return std::visit(
-      Visitor{[](LocalSeat) { return 0.0; }, [](PlannerSeat c) { return c.player->pull(); },
-              [](RemoteSeat r) { return r.remote->pull(); }},
+      Overloaded{[](LocalSeat) { return 0.0; }, [](PlannerSeat c) { return c.player->pull(); },
+                 [](RemoteSeat r) { return r.remote->pull(); }},
       mover(session));
 }
 
 std::string Seats::status(const GameSession& session) const {
-  return std::visit(Visitor{[&](LocalSeat) { return session.status(); },
-                            [&](PlannerSeat c) { return c.player->status(session); },
-                            [&](RemoteSeat r) { return r.remote->status(session); }},
+  return std::visit(Overloaded{[&](LocalSeat) { return session.status(); },
+                               [&](PlannerSeat c) { return c.player->status(session); },
+                               [&](RemoteSeat r) { return r.remote->status(session); }},
                     mover(session));
 }
 
