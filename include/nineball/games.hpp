@@ -53,6 +53,7 @@ enum class GameFamily { Pool, Carom };
 /// One game as data: everything outside its rule book that differs from game to game. The
 /// match, the planner, the JSON readers and writers, the HUD and the menus read it, so that a
 /// new game is a rule book (src/rules), a definition (src/games/<game>/) and a registry line.
+/// What it shows people (help lines, the menu's choices) is beside it, in its folder.
 struct GameDef {
   rules::Game id = rules::Game::NineBall;
   GameFamily family = GameFamily::Pool;
@@ -74,8 +75,6 @@ struct GameDef {
   BallNames ball_name = nullptr;
   /// The tables it is played on (TableDef::named), the first by default.
   std::vector<std::string> tables{"9ft", "8ft", "7ft"};
-  /// The help screen's lines on its rules.
-  std::vector<std::string> help;
   /// Players take groups of balls (the HUD's panels, the tray, the script's "groups").
   bool groups = false;
   /// A call may name any ball on the table (a ball is clicked before its pocket); otherwise
@@ -89,8 +88,6 @@ struct GameDef {
   DecisionWords decision;
   /// The computer's break tries every spot on the head string (else the centre only).
   bool break_from_every_spot = false;
-  /// What `ai-bench` counts as a position made.
-  const char* made = "potted the ball on";
   /// The physics preset its equipment is (PhysicsParams::preset).
   const char* physics = "real";
   /// The cue ball is ever placed by hand (the break, ball in hand); carom never.
@@ -104,16 +101,11 @@ struct GameDef {
   SpotFinder spot = nullptr;
   /// The rules ask whether the striker is snookered (snooker: the free ball after a foul and
   /// the miss): the match judges it from the balls' places (play/snookered.hpp) and tells the
-  /// rules (ShotSummary::snookered_before, Rack::stateFreeBall).
+  /// rules (ShotSummary::snookered_before, rules::stateFreeBall).
   bool snookers = false;
-  /// Played to a number of points (three-cushion): the default distance and the menu's
-  /// choices; 0 and none for a game won on a ball.
+  /// Played to a number of points (three-cushion): the default distance; 0 for a game won on
+  /// a ball.
   int default_points = 0;
-  std::vector<int> points_choices;
-  /// The window's match lengths, best of N (the first to win ceil(N/2) frames or racks wins
-  /// the match), the first the default: snooker's frames, pool's race to N racks (0 among
-  /// them: no limit, the racks simply follow one another); none for a game without matches.
-  std::vector<int> best_of_choices;
   /// The shot after the break may be declared a push-out (nine-ball, ten-ball).
   bool push_outs = false;
   /// The game gives a choice between turns (the script's "decision" turns); carom none.

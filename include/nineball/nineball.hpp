@@ -4,7 +4,9 @@
 /// the engines, the games and their rules, a match, the computer player, fitting recorded shots.
 /// The JSON contracts of the command line (nineball/json.hpp) are nineball::io's, apart.
 #include "nineball/ball.hpp"
+#include "nineball/box2d_settings.hpp"
 #include "nineball/cancel.hpp"
+#include "nineball/carom_rack.hpp"
 #include "nineball/colours.hpp"
 #include "nineball/engine.hpp"
 #include "nineball/event.hpp"
@@ -22,6 +24,7 @@
 #include "nineball/seat.hpp"
 #include "nineball/shot.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "nineball/state_hash.hpp"
 #include "nineball/table.hpp"
 #include "nineball/table_markings.hpp"

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "nineball/box2d_settings.hpp"
 #include "nineball/named_choice.hpp"
 
 namespace nineball {
@@ -77,12 +78,6 @@ enum class PocketModel {
 enum class ContactOrder {
   Sequential,    ///< one contact after the other
   Simultaneous,  ///< the normal impulses of both contacts from one linear complementarity problem
-};
-
-/// How ball-ball contacts are resolved.
-enum class ContactModel {
-  Pairwise,  ///< exact time of impact inside the step, one pair at a time, the paper's formulas
-  Box2D,     ///< Box2D's own simultaneous contact solver
 };
 
 /// Which engine runs a scene: one of the engines of the registry
@@ -171,18 +166,16 @@ struct PhysicsParams {
   static std::vector<std::string> presetNames();
 };
 
-/// Solver settings. Box2D units are metres x scale.
+/// How a run is stepped, whichever engine runs it; what one engine alone reads is grouped by
+/// engine (box2d).
 struct StepParams {
   double hz = 60.0;  ///< base step rate: where stepping stops (a frame); events fall between
-  int velocity_iterations = 8;
-  int position_iterations = 3;
-  double scale = 50.0;  ///< Box2D units per metre (k)
-  ContactModel contacts = ContactModel::Pairwise;
   EngineKind engine = EngineKind::named("box2d");
   double max_time = 600.0;  ///< s, a run to rest gives up after this long
   /// The plain fixed-rate reference: every ball, resting or not, stepped at every step, no
   /// skipping of idle work. Steps still split where a ball would outrun Box2D's travel limit.
   bool baseline = false;
+  Box2DSettings box2d;  ///< read by the box2d engine only
 
   /// The baseline as measured against: every ball at the finest rate of the sweep.
   static StepParams plainBaseline() {
@@ -197,12 +190,10 @@ struct StepParams {
 };
 
 const char* clothModelName(ClothModel m);
-const char* contactModelName(ContactModel m);
 const char* contactOrderName(ContactOrder o);
 const char* pocketModelName(PocketModel m);
 std::optional<PocketModel> pocketModelFromName(const std::string& name);
 std::optional<ContactOrder> contactOrderFromName(const std::string& name);
 std::optional<ClothModel> clothModelFromName(const std::string& name);
-std::optional<ContactModel> contactModelFromName(const std::string& name);
 
 }  // namespace nineball

@@ -247,29 +247,18 @@ class Rack {
   int score(Player p) const { return s_.score[p == Player::A ? 0 : 1]; }
   /// The ball the shooter strikes (RuleBook::cueBall).
   int cueBall() const { return book_->cueBall(s_); }
-  /// Games played to a number of points: the distance, each player's innings (the current
-  /// one included), the points of the inning being played and each player's best inning.
+  /// Games played to a number of points: the distance and the points of the inning being
+  /// played (carom's innings and best inning: nineball/carom_rack.hpp).
   int targetPoints() const { return s_.target; }
   void setTargetPoints(int points) { s_.target = points; }
   /// Who plays the first stroke: set before it.
   void setOpener(Player p);
-  int innings(Player p) const { return s_.innings[p == Player::A ? 0 : 1]; }
   int currentRun() const { return s_.run; }
-  int highRun(Player p) const { return s_.high_run[p == Player::A ? 0 : 1]; }
   /// The game ended level (no winner).
   bool drawn() const { return s_.draw; }
-  /// Snooker: the points the balls left can still give (RuleBook::pointsRemaining), and
-  /// whether `p` needs snookers (his deficit is more than that).
+  /// The points the balls left can still give (RuleBook::pointsRemaining: snooker's; what only
+  /// snooker's frame has is in nineball/snooker_rack.hpp).
   int pointsRemaining() const { return book_->pointsRemaining(s_); }
-  bool snookersRequired(Player p) const;
-  /// Snooker: the coming stroke is a free ball (stateFreeBall), the balls on of a foul's
-  /// free ball included in legalFirstBalls().
-  bool freeBall() const { return s_.snooker.free_ball; }
-  /// Snooker: after a foul the match states whether the incoming striker is snookered (WPBSA
-  /// 3.12): a free ball. Ignored after a legal stroke.
-  void stateFreeBall(bool snookered);
-  /// Snooker: a frame ended level on the black and is decided on the re-spotted black.
-  bool respottedBlack() const { return s_.snooker.respotted_black; }
   /// The state the rule book keeps (snooker's nomination, misses, the state before a foul).
   const RackState& state() const { return s_; }
   const std::vector<int>& ballsOnTable() const { return s_.on_table; }
@@ -296,16 +285,9 @@ class Rack {
   /// true again, every racked ball is back and the chooser breaks. Throws std::logic_error
   /// when no decision is pending.
   void decide(bool shoot);
-  /// Snooker, after a foul and a miss (Decision::PlayPutBackOrReplace): the balls go back
-  /// where they were before the stroke (the caller puts them there) and the offender plays
-  /// it again; the penalty stays scored. Throws std::logic_error when not offered.
-  void replaceAfterMiss();
 
   /// Puts a spotted ball back on the table (the caller found the spot).
   void respot(int ball);
-  /// The balls were set up in the opening position again (carom's frozen balls): the next
-  /// shot is played as the opening one.
-  void replayOpening() { s_.break_next = true; }
   /// Puts the rack in a state another copy of it was in (a snapshot taken with state()).
   void setState(const RackState& s) { s_ = s; }
 

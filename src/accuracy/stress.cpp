@@ -314,7 +314,7 @@ PhysicsParams randomPhysics(std::uint64_t& rng) {
 
 StepParams randomStep(std::uint64_t& rng, double r) {
   StepParams s;
-  s.scale =
+  s.box2d.scale =
       logUniform(rng, std::max(limits::kMinScale, limits::kMinBallUnits / r), limits::kMaxScale);
   s.hz = logUniform(rng, limits::kMinHz, limits::kMaxHz);
   return s;
@@ -411,7 +411,7 @@ Scenario randomSettings(std::uint64_t& rng, int i, bool at_jaw, bool pocketless 
   about << " (" << clothModelName(p.cloth) << " cloth, R " << p.ball_radius << ", e "
         << p.ball_restitution << "/" << p.cushion_restitution << ", table " << s.table.length << "x"
         << s.table.width << " mouths " << s.table.corner_pocket << "/" << s.table.side_pocket
-        << ", k " << s.step.scale << ", " << s.step.hz << " Hz)";
+        << ", k " << s.step.box2d.scale << ", " << s.step.hz << " Hz)";
   s.name += about.str();
   s.fixed_step = true;
   return s;

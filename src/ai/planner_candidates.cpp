@@ -5,6 +5,7 @@
 
 #include "ai/planner_geometry.hpp"
 #include "ai/planner_throw.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "play/aim_guide.hpp"
 #include "rules/snooker_balls.hpp"
 
@@ -454,7 +455,8 @@ namespace {
 // (WPBSA 3.6, 3.12); the rules take the first colour hit when none is stated, which a kiss
 // on the way could make another.
 bool nominates(const rules::Rack& rack) {
-  return rack.game() == rules::Game::Snooker && (rack.state().snooker.colour_on || rack.freeBall());
+  return rack.game() == rules::Game::Snooker &&
+         (rack.state().snooker.colour_on || rules::freeBall(rack));
 }
 
 // A call the match takes: snooker refuses a nomination its rules would not read.

@@ -6,6 +6,7 @@
 
 #include "common/log.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/snooker_rack.hpp"
 
 namespace nineball::ai {
 namespace {
@@ -40,10 +41,10 @@ TurnInput Planner::decideAfterFoul(const Match& match) {
   if (in.rack.pendingDecision() == rules::Decision::PlayPutBackOrReplace &&
       !match.ballsBeforeShot().empty()) {
     // The balls go back where they were before the miss and the offender plays it again, from
-    // where his cue ball lay (not in hand: Rack::replaceAfterMiss).
+    // where his cue ball lay (not in hand: rules::replaceAfterMiss).
     PlanInput replaced = in;
     replaced.balls = match.ballsBeforeShot();
-    replaced.rack.replaceAfterMiss();
+    rules::replaceAfterMiss(replaced.rack);
     replaced.cue_in_hand = false;
     const double replace = worthTo(replaced, false);
     if (replace > best) {

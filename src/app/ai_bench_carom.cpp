@@ -10,6 +10,7 @@
 #include "app/ai_bench_common.hpp"
 #include "app/ai_bench_positions.hpp"
 #include "app/exit_codes.hpp"
+#include "nineball/carom_rack.hpp"
 #include "nineball/games.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
@@ -74,8 +75,8 @@ void playGames(const AiBenchOptions& o, rules::Game game, ai::Level level, Innin
     }
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {
       t.points += match.rack().score(p);
-      t.innings += match.rack().innings(p);
-      t.high_run = std::max(t.high_run, match.rack().highRun(p));
+      t.innings += rules::innings(match.rack(), p);
+      t.high_run = std::max(t.high_run, rules::highRun(match.rack(), p));
     }
     if ((i + 1) % 10 == 0) err << "ai-bench: " << (i + 1) << " games\n" << std::flush;
   }

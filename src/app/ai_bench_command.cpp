@@ -19,6 +19,7 @@
 #include "app/ai_bench_snooker.hpp"
 #include "app/exit_codes.hpp"
 #include "common/log.hpp"
+#include "games/game_texts.hpp"
 #include "nineball/games.hpp"
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
@@ -322,7 +323,7 @@ int runAiBench(const AiBenchOptions& given, std::ostream& out, std::ostream& err
   out << "Computer opponent, " << options.game << ", level " << ai::levelName(*level) << ", "
       << options.threads << " threads, seeds from " << options.seed
       << (options.noise == "level" ? "" : ", " + options.noise + " noise") << "\n";
-  const char* aim = gameDef(*game).made;
+  const char* aim = gameTexts(*game).made;
   out << "positions: " << aim << " in " << positions.potted << " of " << options.positions
       << " (a pot attempted in " << positions.attempted << ", fouls " << positions.fouls
       << "; cued without error the same shots pot it in " << positions.potted_as_planned << ")\n";

@@ -24,10 +24,10 @@ struct Row {
 
 StepParams setting(ContactModel contacts, double scale, double hz, int iterations = 8) {
   StepParams s;
-  s.contacts = contacts;
-  s.scale = scale;
+  s.box2d.contacts = contacts;
+  s.box2d.scale = scale;
   s.hz = hz;
-  s.velocity_iterations = iterations;
+  s.box2d.velocity_iterations = iterations;
   return s;
 }
 
@@ -53,7 +53,8 @@ std::vector<StepParams> settings(bool quick) {
 std::string label(const StepParams& s) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%s%s k=%g %gHz vi=%d", s.baseline ? "baseline " : "",
-                contactModelName(s.contacts), s.scale, s.hz, s.velocity_iterations);
+                contactModelName(s.box2d.contacts), s.box2d.scale, s.hz,
+                s.box2d.velocity_iterations);
   return buf;
 }
 
@@ -80,8 +81,8 @@ Row measure(const StepParams& step, int repeats) {
 
 bool isDefault(const StepParams& s) {
   const StepParams d;
-  return !s.baseline && s.contacts == d.contacts && s.scale == d.scale && s.hz == d.hz &&
-         s.velocity_iterations == d.velocity_iterations;
+  return !s.baseline && s.box2d.contacts == d.box2d.contacts && s.box2d.scale == d.box2d.scale &&
+         s.hz == d.hz && s.box2d.velocity_iterations == d.box2d.velocity_iterations;
 }
 
 std::string sci(double v) {
@@ -163,7 +164,7 @@ void rackGaps(std::ostream& out) {
   out << "\ncue ball after the break (vx / break speed at 0.3 s), by rack gap:\n";
   for (ContactModel contacts : {ContactModel::Pairwise, ContactModel::Box2D}) {
     StepParams s;
-    s.contacts = contacts;
+    s.box2d.contacts = contacts;
     out << "  " << contactModelName(contacts) << ':';
     for (double gap : {0.0, 1e-4, 5e-4}) {
       char cell[64];
@@ -217,10 +218,10 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   std::vector<PlotPoint> plot;
   for (const Row& r : rows) {
     const double score = worstScore(r.errors);
-    csv << label(r.step) << ',' << contactModelName(r.step.contacts) << ',' << r.step.scale << ','
-        << r.step.hz << ',' << r.step.velocity_iterations << ',' << r.step.baseline << ','
-        << r.timing.sim_time << ',' << r.timing.steps << ',' << r.timing.wall_ms << ',' << score
-        << ',' << r.on_front;
+    csv << label(r.step) << ',' << contactModelName(r.step.box2d.contacts) << ','
+        << r.step.box2d.scale << ',' << r.step.hz << ',' << r.step.box2d.velocity_iterations << ','
+        << r.step.baseline << ',' << r.timing.sim_time << ',' << r.timing.steps << ','
+        << r.timing.wall_ms << ',' << score << ',' << r.on_front;
     char head[160];
     std::snprintf(head, sizeof head, "%-30s %7.2f %6ld %8.2f %12.2e %5s |", label(r.step).c_str(),
                   r.timing.sim_time, r.timing.steps, r.timing.wall_ms, score,

@@ -27,7 +27,7 @@ CLI::App* addStressCommand(CLI::App& app, StressCommandOptions& options) {
   cmd->add_option("--long-run", s.long_run_s, "Simulated seconds of the endless run")
       ->check(CLI::Range(1.0, 360000.0))
       ->capture_default_str();
-  cmd->add_option("--scale", s.step.scale, "Box2D units per metre")
+  cmd->add_option("--scale", s.step.box2d.scale, "Box2D units per metre")
       ->check(CLI::Range(1.0, 10000.0))
       ->capture_default_str();
   cmd->add_option("--hz", s.step.hz, "Base step rate")
@@ -44,13 +44,13 @@ CLI::App* addStressCommand(CLI::App& app, StressCommandOptions& options) {
 
 int runStressCommand(const StressCommandOptions& options, std::ostream& out) {
   StressOptions o = options.stress;
-  o.step.contacts = *contactModelFromName(options.contacts);
+  o.step.box2d.contacts = *contactModelFromName(options.contacts);
   const auto start = std::chrono::steady_clock::now();
   const StressReport r = runStress(o);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << "stress (seed " << o.seed << ", " << contactModelName(o.step.contacts)
-      << " k=" << o.step.scale << " " << o.step.hz << " Hz), each scenario run twice:\n";
+  out << "stress (seed " << o.seed << ", " << contactModelName(o.step.box2d.contacts)
+      << " k=" << o.step.box2d.scale << " " << o.step.hz << " Hz), each scenario run twice:\n";
   for (const auto& [kind, count] : r.scenarios) out << "  " << count << " x " << kind << '\n';
   out << "  each also through the reference engine (" << r.reference_runs << " scenarios)\n";
   char line[256];

@@ -2,6 +2,7 @@
 
 #include "common/named.hpp"
 #include "games/eight_ball/eight_ball.hpp"
+#include "games/game_texts.hpp"
 #include "games/nine_ball/nine_ball.hpp"
 #include "games/snooker/snooker.hpp"
 #include "games/ten_ball/ten_ball.hpp"
@@ -11,12 +12,32 @@
 
 namespace nineball {
 
-const std::vector<GameDef>& allGames() {
-  static const std::vector<GameDef> all{
+namespace {
+
+const std::vector<games::GameEntry>& registeredGames() {
+  static const std::vector<games::GameEntry> all{
       games::nineBall(),     games::eightBall(), games::tenBall(),
       games::threeCushion(), games::snooker(),
   };
   return all;
+}
+
+}  // namespace
+
+const std::vector<GameDef>& allGames() {
+  static const std::vector<GameDef> all = [] {
+    std::vector<GameDef> defs;
+    for (const games::GameEntry& e : registeredGames()) defs.push_back(e.def);
+    return defs;
+  }();
+  return all;
+}
+
+const GameTexts& gameTexts(rules::Game game) {
+  for (const games::GameEntry& e : registeredGames()) {
+    if (e.def.id == game) return e.texts;
+  }
+  return registeredGames().front().texts;
 }
 
 const GameDef& gameDef(rules::Game game) {

@@ -12,6 +12,7 @@
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/snooker_rack.hpp"
 
 namespace nineball::io {
 namespace {
@@ -347,8 +348,8 @@ nlohmann::ordered_json matchResultToJson(const std::vector<TurnRecord>& turns,
   if (gameDef(rack.game()).snookers) {
     doc["score"] = snookerScoreJson(scoreOf(rack));
     doc["points_remaining"] = rack.pointsRemaining();
-    doc["snookers_required"] = {{"A", rack.snookersRequired(rules::Player::A)},
-                                {"B", rack.snookersRequired(rules::Player::B)}};
+    doc["snookers_required"] = {{"A", rules::snookersRequired(rack, rules::Player::A)},
+                                {"B", rules::snookersRequired(rack, rules::Player::B)}};
   }
   ordered_json ball_list = ordered_json::array();
   for (const BallState& b : balls) ball_list.push_back(ballToJson(b));

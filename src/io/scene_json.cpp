@@ -565,13 +565,13 @@ StepParams parseStep(const json& v) {
     s.hz = number(*p, "step.hz", Bounds::closed(limits::kMinHz, limits::kMaxHz));
   }
   if (const json* p = optional(v, "velocity_iterations")) {
-    s.velocity_iterations = integer(*p, "step.velocity_iterations", 1, 100);
+    s.box2d.velocity_iterations = integer(*p, "step.velocity_iterations", 1, 100);
   }
   if (const json* p = optional(v, "position_iterations")) {
-    s.position_iterations = integer(*p, "step.position_iterations", 0, 100);
+    s.box2d.position_iterations = integer(*p, "step.position_iterations", 0, 100);
   }
   if (const json* p = optional(v, "scale")) {
-    s.scale = number(*p, "step.scale", Bounds::closed(limits::kMinScale, limits::kMaxScale));
+    s.box2d.scale = number(*p, "step.scale", Bounds::closed(limits::kMinScale, limits::kMaxScale));
   }
   if (const json* p = optional(v, "contacts")) {
     const std::string name = text(*p, "step.contacts");
@@ -580,7 +580,7 @@ StepParams parseStep(const json& v) {
       refuse("step.contacts",
              "unknown contact model " + quote(name) + " (expected \"pairwise\" or \"box2d\")");
     }
-    s.contacts = *model;
+    s.box2d.contacts = *model;
   }
   if (const json* p = optional(v, "engine")) {
     const std::string name = text(*p, "step.engine");

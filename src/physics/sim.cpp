@@ -12,6 +12,7 @@
 #include "nineball/cancel.hpp"
 #include "nineball/engine.hpp"
 #include "physics/engines/engine_internals.hpp"
+#include "physics/engines/registry.hpp"
 #include "physics/model/arc_log.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 
@@ -36,14 +37,11 @@ bool finite(Vec2 v) {
 std::optional<std::string> checkSettings(const Scene& scene) {
   const PhysicsParams& p = scene.physics;
   const StepParams& st = scene.step;
-  const std::pair<const char*, double> positive[] = {{"physics.ball_mass", p.ball_mass},
-                                                     {"physics.ball_radius", p.ball_radius},
-                                                     {"physics.gravity", p.gravity},
-                                                     {"step.hz", st.hz},
-                                                     {"step.scale", st.scale},
-                                                     {"step.max_time", st.max_time},
-                                                     {"table.length", scene.table.length},
-                                                     {"table.width", scene.table.width}};
+  const std::pair<const char*, double> positive[] = {
+      {"physics.ball_mass", p.ball_mass}, {"physics.ball_radius", p.ball_radius},
+      {"physics.gravity", p.gravity},     {"step.hz", st.hz},
+      {"step.max_time", st.max_time},     {"table.length", scene.table.length},
+      {"table.width", scene.table.width}};
   for (const auto& [name, v] : positive) {
     if (!finite(v) || v <= 0.0) return std::string(name) + ": must be a finite number > 0";
   }
@@ -58,16 +56,9 @@ std::optional<std::string> checkSettings(const Scene& scene) {
   if (const auto check = physics::cushionModel(p.cushion).check) {
     if (auto problem = check(p)) return problem;
   }
-  if (st.velocity_iterations < 1) return std::string("step.velocity_iterations: must be >= 1");
-  if (st.position_iterations < 0) return std::string("step.position_iterations: must be >= 0");
   if (auto problem = checkTable(scene.table, p.ball_radius)) return problem;
-  // Box2D refuses cushion vertices closer than its linear slop (0.005 units).
-  const TableGeometry table = buildTable(scene.table, p.ball_radius);
-  const auto& loop = table.cushion_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (length(loop[(i + 1) % loop.size()] - loop[i]) * st.scale < 0.01) {
-      return std::string("step.scale: too small for this table's cushion geometry");
-    }
+  if (const auto check = physics::engines()[st.engine.index()].check) {
+    if (auto problem = check(buildTable(scene.table, p.ball_radius), st)) return problem;
   }
   if (scene.shot) {
     if (!finite(scene.shot->speed) || scene.shot->speed < 0.0) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <set>
 
+#include "nineball/carom_rack.hpp"
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "play/shot_summary.hpp"
 #include "play/snookered.hpp"
 #include "rules/snooker_balls.hpp"
@@ -63,8 +65,8 @@ Score scoreOf(const rules::Rack& rack) {
   for (rules::Player p : {rules::Player::A, rules::Player::B}) {
     PlayerScore& one = p == rules::Player::A ? s.a : s.b;
     one.points = rack.score(p);
-    one.innings = rack.innings(p);
-    one.high_run = rack.highRun(p);
+    one.innings = rules::innings(rack, p);
+    one.high_run = rules::highRun(rack, p);
     one.run = !rack.over() && rack.shooter() == p ? rack.currentRun() : 0;
   }
   return s;
@@ -87,7 +89,8 @@ Match::Match(const MatchSetup& setup)
   const std::string table_problem = tableProblem(gameDef(setup.game), setup.table);
   if (!table_problem.empty()) throw IllegalAction(table_problem);
   if (setup.opener != rules::Player::A && gameDef(setup.game).family == GameFamily::Carom) {
-    throw IllegalAction(std::string(gameDef(setup.game).name) + " is opened by A, who plays the white");
+    throw IllegalAction(std::string(gameDef(setup.game).name) +
+                        " is opened by A, who plays the white");
   }
   std::vector<BallState> balls;
   if (setup.balls) {
@@ -325,12 +328,12 @@ TurnRecord Match::finishShot() {
   if (gameDef(rack_.game()).snookers && rack_.awaitingDecision()) {
     // WPBSA 3.12: after a foul the incoming striker snookered on every ball on gets a free
     // ball. With the cue ball in hand (in the D) nineball never states one.
-    rack_.stateFreeBall(!cue_pocketed_ && cueSnookered());
+    rules::stateFreeBall(rack_, !cue_pocketed_ && cueSnookered());
   }
   rec.ball_on = rack_.ballOn();
   rec.score = scoreOf(rack_);
   rec.points_remaining = rack_.pointsRemaining();
-  rec.free_ball_next = rack_.freeBall();
+  rec.free_ball_next = rules::freeBall(rack_);
   return rec;
 }
 
@@ -353,7 +356,7 @@ void Match::setUpFrozenBalls() {
     const int id = b.id == kCueBall ? shooter : b.id == shooter ? kCueBall : b.id;
     world_->placeBall(id, b.pos);
   }
-  rack_.replayOpening();
+  rules::replayOpening(rack_);
 }
 
 TurnRecord Match::play(const TurnInput& turn) {
@@ -375,7 +378,7 @@ TurnRecord Match::play(const TurnInput& turn) {
         throw IllegalAction("only a miss lets the balls be replaced");
       }
       replaceBalls();
-      rack_.replaceAfterMiss();
+      rules::replaceAfterMiss(rack_);
     } else {
       rack_.decide(turn.shoot);
     }
@@ -385,7 +388,7 @@ TurnRecord Match::play(const TurnInput& turn) {
     rec.ball_on = rack_.ballOn();
     rec.score = scoreOf(rack_);
     rec.points_remaining = rack_.pointsRemaining();
-    rec.free_ball_next = rack_.freeBall();
+    rec.free_ball_next = rules::freeBall(rack_);
     return rec;
   }
   beginShot(turn);

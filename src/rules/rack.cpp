@@ -66,18 +66,6 @@ Verdict Rack::shoot(const ShotSummary& shot, bool push_out) {
   return v;
 }
 
-bool Rack::snookersRequired(Player p) const {
-  const int me = s_.score[p == Player::A ? 0 : 1];
-  const int them = s_.score[p == Player::A ? 1 : 0];
-  return them - me > pointsRemaining();
-}
-
-void Rack::stateFreeBall(bool snookered) {
-  const bool after_foul =
-      s_.decision == Decision::PlayOrPutBack || s_.decision == Decision::PlayPutBackOrReplace;
-  s_.snooker.free_ball = after_foul && snookered && !over();
-}
-
 void Rack::decide(bool shoot_now) {
   if (!awaitingDecision()) throw std::logic_error("no push-out is waiting for a decision");
   const Decision d = s_.decision;
@@ -101,18 +89,6 @@ void Rack::decide(bool shoot_now) {
   s_.push_out_available = false;
   s_.groups = Groups{};
   s_.fouls[0] = s_.fouls[1] = 0;
-}
-
-void Rack::replaceAfterMiss() {
-  if (s_.decision != Decision::PlayPutBackOrReplace) {
-    throw std::logic_error("no miss is waiting for the balls to be replaced");
-  }
-  s_.decision = Decision::None;
-  s_.shooter = other(s_.shooter);
-  s_.on_table = s_.snooker.on_table_before;
-  s_.snooker.colour_on = s_.snooker.colour_on_before;
-  s_.snooker.free_ball = s_.snooker.free_ball_before;
-  s_.ball_in_hand = false;
 }
 
 }  // namespace nineball::rules

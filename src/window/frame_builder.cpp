@@ -7,6 +7,7 @@
 #include "nineball/games.hpp"
 #include "nineball/rules.hpp"
 #include "nineball/seat.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "render/cue_stick_shape.hpp"
 #include "rules/snooker_balls.hpp"
 #include "window/game_help.hpp"
@@ -252,12 +253,12 @@ void fillSnookerHud(render::HudState& hud, const GameSession& session) {
   line += "break " + std::to_string(rack.over() ? 0 : rack.currentRun()) + "   remaining " +
           std::to_string(rack.pointsRemaining());
   hud.score_call = false;
-  if (!rack.over() && rack.freeBall()) {
+  if (!rack.over() && rules::freeBall(rack)) {
     line += "   FREE BALL";
     hud.score_call = true;
   }
   for (rules::Player p : {rules::Player::A, rules::Player::B}) {
-    if (rack.over() || !rack.snookersRequired(p)) continue;
+    if (rack.over() || !rules::snookersRequired(rack, p)) continue;
     line += "   " + session.seatName(session.seatOf(p)) + ": snookers required";
     hud.score_call = true;
   }

@@ -1,5 +1,6 @@
 #include "window/game_help.hpp"
 
+#include "games/game_texts.hpp"
 #include "nineball/games.hpp"
 
 namespace nineball::window {
@@ -23,7 +24,7 @@ std::vector<std::string> controlHelpLines() {
 }
 
 std::vector<std::string> gameHelpLines(rules::Game game) {
-  return gameDef(game).help;
+  return gameTexts(game).help;
 }
 
 std::string groupLabel(const rules::Groups& groups, rules::Player player) {

@@ -124,7 +124,7 @@ class GameSession {
   int seatToMove() const { return seatOf(match_->rack().shooter()); }
   int racksWon(int seat) const { return racks_won_[seat]; }
   int rackNumber() const { return rack_ + 1; }
-  /// A match of `best_of` frames (GameDef::best_of_choices): the first seat to win
+  /// A match of `best_of` frames (GameTexts::best_of_choices): the first seat to win
   /// framesToWinMatch(best_of) of them wins it, and the next rematch starts a new match at
   /// 0-0. 0 (the default): racks simply follow one another, counted without an end.
   void setBestOf(int best_of) { best_of_ = best_of; }

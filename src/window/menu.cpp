@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "games/game_texts.hpp"
 #include "net/protocol.hpp"
 #include "net/wire.hpp"
 #include "nineball/games.hpp"
@@ -114,7 +115,7 @@ std::vector<MenuModel::Item> MenuModel::items() const {
                  Item::OpenOnline, Item::OpenSettings, Item::Quit}) {
     // Only a game played in frames has a match length to choose.
     const bool in_frames = i == Item::Frames || i == Item::Breaks;
-    if (in_frames && gameDef(settings_.last.game).best_of_choices.empty()) continue;
+    if (in_frames && gameTexts(settings_.last.game).best_of_choices.empty()) continue;
     v.push_back(i);
   }
   return v;
@@ -131,7 +132,7 @@ bool MenuModel::enabled(Item item) const {
     case Item::Rules:
       return severalRules();
     case Item::Points:
-      return !gameDef(settings_.last.game).points_choices.empty();
+      return !gameTexts(settings_.last.game).points_choices.empty();
     case Item::Breaks:
       return bestOf() > 0;  // a single rack or racks without end: each seat breaks in turn
     case Item::Name2:
@@ -309,7 +310,7 @@ void MenuModel::change(Item item, int step) {
       break;
     }
     case Item::Points: {
-      const std::vector<int>& choices = gameDef(settings_.last.game).points_choices;
+      const std::vector<int>& choices = gameTexts(settings_.last.game).points_choices;
       const int n = static_cast<int>(choices.size());
       int at = 0;
       for (int i = 0; i < n; ++i) {
@@ -319,7 +320,7 @@ void MenuModel::change(Item item, int step) {
       break;
     }
     case Item::Frames: {
-      const std::vector<int>& choices = gameDef(settings_.last.game).best_of_choices;
+      const std::vector<int>& choices = gameTexts(settings_.last.game).best_of_choices;
       const int n = static_cast<int>(choices.size());
       const int at =
           static_cast<int>(std::find(choices.begin(), choices.end(), bestOf()) - choices.begin());
@@ -508,14 +509,14 @@ void MenuModel::click(int i) {
 
 int MenuModel::pointsToWin() const {
   const GameDef& g = gameDef(settings_.last.game);
-  const auto& choices = g.points_choices;
+  const auto& choices = gameTexts(g.id).points_choices;
   const bool offered =
       std::find(choices.begin(), choices.end(), settings_.last.points) != choices.end();
   return offered ? settings_.last.points : g.default_points;
 }
 
 int MenuModel::bestOf() const {
-  const auto& choices = gameDef(settings_.last.game).best_of_choices;
+  const auto& choices = gameTexts(settings_.last.game).best_of_choices;
   if (choices.empty()) return 0;
   const bool offered =
       std::find(choices.begin(), choices.end(), settings_.last.best_of) != choices.end();

@@ -23,9 +23,9 @@ struct MenuChoice {
   rules::Game game = defaultGame().id;  ///< the game of a match (practice: none)
   Seat opponent;  ///< who plays Player 2: a second person, or the computer at a level
   rules::RuleSet rules = rules::RuleSet::Wpa;
-  /// The distance of a game played to points (GameDef::points_choices; 0: the game's default).
+  /// The distance of a game played to points (GameTexts::points_choices; 0: the game's default).
   int points = 0;
-  /// A match of frames or racks: best of N, a race to ceil(N/2) (GameDef::best_of_choices; 0:
+  /// A match of frames or racks: best of N, a race to ceil(N/2) (GameTexts::best_of_choices; 0:
   /// none, the racks add up).
   int best_of = 0;
   /// Who breaks the racks of a match after its first.

@@ -1,6 +1,7 @@
 #include "window/snooker_turn_message.hpp"
 
 #include "nineball/games.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "rules/snooker_balls.hpp"
 
 namespace nineball::window {
@@ -94,7 +95,7 @@ TurnMessage describeSnookerTurn(const TurnRecord& record, const rules::Rack& rac
         " " + winner + " wins the frame " + std::to_string(wp) + "-" + std::to_string(lp) + ".";
     return m;
   }
-  if (rack.freeBall()) m.text += " Free ball.";
+  if (rules::freeBall(rack)) m.text += " Free ball.";
   if (rack.pendingDecision() == rules::Decision::PlayPutBackOrReplace) {
     m.text += " " + opponent + ": play on, put " + shooter + " back in, or replace the balls.";
   } else if (rack.pendingDecision() == rules::Decision::PlayOrPutBack) {

@@ -48,7 +48,7 @@ TEST(Stress, Box2DsOwnBallSolverHoldsOnExactPositions) {
   o.random_layouts = 100;
   o.random_settings = 0;
   o.long_run_s = 5.0;
-  o.step.contacts = nineball::ContactModel::Box2D;
+  o.step.box2d.contacts = nineball::ContactModel::Box2D;
   const nineball::StressReport r = nineball::runStress(o);
   EXPECT_GT(r.checks, 10000);
   EXPECT_EQ(r.failureCount(), 0);

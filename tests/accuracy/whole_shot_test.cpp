@@ -129,7 +129,7 @@ TEST(WholeShots, ComparisonCatchesBox2DsSimultaneousSolver) {
   // Box2D's own contact solver (contacts "box2d") settles the rack's simultaneous contacts
   // all at once, not pair by pair in time order: the break's events come in another order.
   StepParams box2d_contacts;
-  box2d_contacts.contacts = ContactModel::Box2D;
+  box2d_contacts.box2d.contacts = ContactModel::Box2D;
   const BreakComparison b = compareBreak(box2d_contacts);
   EXPECT_FALSE(b.events_match);
   EXPECT_FALSE(b.withinTolerance());

@@ -2,10 +2,12 @@
 // sets, rack, ball set and tables), so the checks here hold for any game added to it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <string>
 
+#include "games/game_texts.hpp"
 #include "nineball/games.hpp"
 #include "nineball/params.hpp"
 
@@ -22,6 +24,26 @@ TEST(GameRegistry, NamesAreUniqueAndEachIsFoundByItsName) {
   }
   EXPECT_EQ(gameNamed("snooker-on-ice"), nullptr);
   EXPECT_EQ(&defaultGame(), &allGames().front());
+}
+
+TEST(GameRegistry, EveryGameHasItsOwnTextsAndAPointsGameOffersItsDistance) {
+  for (const GameDef& g : allGames()) {
+    const GameTexts& t = gameTexts(g.id);
+    EXPECT_FALSE(t.help.empty()) << g.name;
+    EXPECT_NE(std::string(t.made), "") << g.name;
+    // The menu offers a distance exactly for a game played to points, its default among them.
+    EXPECT_EQ(t.points_choices.empty(), g.default_points == 0) << g.name;
+    if (g.default_points > 0) {
+      EXPECT_EQ(std::count(t.points_choices.begin(), t.points_choices.end(), g.default_points), 1)
+          << g.name;
+    }
+    // A game's texts are its own: no two games share a help screen.
+    for (const GameDef& other : allGames()) {
+      if (other.id != g.id) {
+        EXPECT_NE(gameTexts(other.id).help, t.help) << g.name;
+      }
+    }
+  }
 }
 
 TEST(GameRegistry, EveryGameRacksItsOwnBallsOnEachOfItsTables) {

@@ -244,7 +244,7 @@ TEST(SceneJson, AppliesDefaults) {
   EXPECT_EQ(s.physics.cloth, real.cloth);
   const StepParams step;
   EXPECT_EQ(s.step.hz, step.hz);
-  EXPECT_EQ(s.step.contacts, step.contacts);
+  EXPECT_EQ(s.step.box2d.contacts, step.box2d.contacts);
   EXPECT_FALSE(s.shot.has_value());
   EXPECT_FALSE(s.until.has_value());
   ASSERT_EQ(s.balls.size(), 1u);
@@ -484,10 +484,10 @@ TEST(SceneJson, ReadsUntilAndStep) {
       "max_time": 30})"));
   EXPECT_EQ(timed.until, 2.5);
   EXPECT_EQ(timed.step.hz, 2000.0);
-  EXPECT_EQ(timed.step.velocity_iterations, 10);
-  EXPECT_EQ(timed.step.position_iterations, 0);
-  EXPECT_EQ(timed.step.scale, 50.0);
-  EXPECT_EQ(timed.step.contacts, ContactModel::Box2D);
+  EXPECT_EQ(timed.step.box2d.velocity_iterations, 10);
+  EXPECT_EQ(timed.step.box2d.position_iterations, 0);
+  EXPECT_EQ(timed.step.box2d.scale, 50.0);
+  EXPECT_EQ(timed.step.box2d.contacts, ContactModel::Box2D);
   EXPECT_EQ(timed.step.max_time, 30.0);
   EXPECT_FALSE(accepted(twoBallScene(R"("until": "rest")")).until.has_value());
 }

@@ -5,6 +5,7 @@
 
 #include "games/snooker/spots.hpp"
 #include "nineball/match.hpp"
+#include "nineball/snooker_rack.hpp"
 #include "nineball/table_markings.hpp"
 #include "play/match_turns.hpp"
 
@@ -86,7 +87,7 @@ TEST(MatchSnooker, SnookeredAfterAFoulTheStrikerHasAFreeBall) {
   EXPECT_EQ(foul.verdict.foul, rules::Foul::NoContact);
   EXPECT_FALSE(foul.verdict.miss);  // snookered before the stroke too
   EXPECT_TRUE(foul.free_ball_next);
-  EXPECT_TRUE(m.rack().freeBall());
+  EXPECT_TRUE(rules::freeBall(m.rack()));
   m.play(decision(true));
   TurnInput free_ball = shot(0.0, 0.6);
   free_ball.call = rules::Call{20, PocketId::TopRight};

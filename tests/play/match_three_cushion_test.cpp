@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "nineball/carom_rack.hpp"
 #include "nineball/match.hpp"
 #include "play/match_turns.hpp"
 
@@ -56,7 +57,7 @@ TEST(MatchThreeCushion, EachPlayerStrikesTheirOwnBall) {
   m.play(shot(-90.0, 0.4));  // B's yellow rolls towards the bottom cushion, alone
   EXPECT_EQ(where(m, kWhite).x, white.x);
   EXPECT_LT(where(m, kYellow).y, yellow.y - 0.05);
-  EXPECT_EQ(m.rack().innings(Player::B), 1);
+  EXPECT_EQ(rules::innings(m.rack(), Player::B), 1);
 }
 
 TEST(MatchThreeCushion, FrozenBallsAreSetUpAgainAndPlayedAsAnOpening) {

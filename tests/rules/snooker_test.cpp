@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "nineball/rules.hpp"
+#include "nineball/snooker_rack.hpp"
 
 namespace nineball::rules {
 namespace {
@@ -215,8 +216,8 @@ TEST(SnookerRules, AfterAFoulTheOpponentPlaysOrPutsTheOffenderBack) {
 TEST(SnookerRules, AFreeBallCountsAsTheBallOnAndIsRespotted) {
   Rack r = frame();
   r.shoot(nothingHit());
-  r.stateFreeBall(true);
-  EXPECT_TRUE(r.freeBall());
+  rules::stateFreeBall(r, true);
+  EXPECT_TRUE(rules::freeBall(r));
   EXPECT_EQ(r.legalFirstBalls(), fullSet());
   r.decide(true);
   const Verdict v = r.shoot(called(kBlack, hit(kBlack, {kBlack, 2})));
@@ -226,14 +227,14 @@ TEST(SnookerRules, AFreeBallCountsAsTheBallOnAndIsRespotted) {
   EXPECT_EQ(v.points[1], 2);  // the free ball as a red, and the red
   EXPECT_EQ(v.to_spot, std::vector<int>{kBlack});
   EXPECT_EQ(r.legalFirstBalls(), colours());
-  EXPECT_FALSE(r.freeBall());
+  EXPECT_FALSE(rules::freeBall(r));
 }
 
 // 3.12(b): the free ball nominated must be hit first; a red potted after it still scores.
 TEST(SnookerRules, TheNominatedFreeBallMustBeHitFirst) {
   Rack r = frame();
   r.shoot(nothingHit());
-  r.stateFreeBall(true);
+  rules::stateFreeBall(r, true);
   r.decide(true);
   Rack after = r;
   Verdict v = r.shoot(called(kBlack, hit(2)));
@@ -249,7 +250,7 @@ TEST(SnookerRules, TheNominatedFreeBallMustBeHitFirst) {
 TEST(SnookerRules, AFreeBallInTheColoursTakesTheBallOnsValue) {
   Rack r = frame({kYellow, kGreen, kBlack});
   r.shoot(nothingHit());  // A fouls: B 4
-  r.stateFreeBall(true);
+  rules::stateFreeBall(r, true);
   r.decide(true);
   Rack fouled = r;
   Verdict v = r.shoot(called(kBlack, hit(kBlack, {kBlack})));
@@ -267,14 +268,14 @@ TEST(SnookerRules, AFreeBallInTheColoursTakesTheBallOnsValue) {
 TEST(SnookerRules, AFreeBallIsVoidWhenTheOffenderPlaysAgain) {
   Rack r = frame();
   r.shoot(nothingHit());
-  r.stateFreeBall(true);
+  rules::stateFreeBall(r, true);
   r.decide(false);
-  EXPECT_FALSE(r.freeBall());
+  EXPECT_FALSE(rules::freeBall(r));
   EXPECT_EQ(r.legalFirstBalls(), reds());
   Rack legal = frame();
   legal.shoot(hit(1));
-  legal.stateFreeBall(true);
-  EXPECT_FALSE(legal.freeBall());
+  rules::stateFreeBall(legal, true);
+  EXPECT_FALSE(rules::freeBall(legal));
 }
 
 // 3.14 in nineball's form: a foul that fails to first hit a ball on is a miss unless the
@@ -309,7 +310,7 @@ TEST(SnookerRules, NoMissWhenTheStrikerNeedsSnookers) {
   r.shoot(hit(kBlack));  // B plays the black without potting it: A to play, 16 behind
   EXPECT_EQ(r.score(Player::B), 16);
   ASSERT_EQ(r.shooter(), Player::A);
-  EXPECT_TRUE(r.snookersRequired(Player::A));
+  EXPECT_TRUE(rules::snookersRequired(r, Player::A));
   EXPECT_FALSE(r.shoot(nothingHit()).miss);
 }
 
@@ -319,23 +320,23 @@ TEST(SnookerRules, AfterAMissTheBallsMayBeReplaced) {
   const Verdict v = r.shoot(hit(kPink, {5}));  // hits the pink first, a red drops
   EXPECT_TRUE(v.miss);
   EXPECT_FALSE(r.state().has(5));
-  r.replaceAfterMiss();
+  rules::replaceAfterMiss(r);
   EXPECT_EQ(r.shooter(), Player::A);
   EXPECT_TRUE(r.state().has(5));
   EXPECT_EQ(r.score(Player::B), 6);
   EXPECT_FALSE(r.awaitingDecision());
   Rack plain = frame();
   plain.shoot(hit(1));  // legal: no decision
-  EXPECT_THROW(plain.replaceAfterMiss(), std::logic_error);
+  EXPECT_THROW(rules::replaceAfterMiss(plain), std::logic_error);
 }
 
 // 3.14(h): the third miss in a row with a ball on in view loses the frame.
 TEST(SnookerRules, ThreeMissesInARowLoseTheFrame) {
   Rack r = frame();
   r.shoot(hit(kPink));
-  r.replaceAfterMiss();
+  rules::replaceAfterMiss(r);
   r.shoot(hit(kPink));
-  r.replaceAfterMiss();
+  rules::replaceAfterMiss(r);
   const Verdict v = r.shoot(hit(kPink));
   EXPECT_EQ(v.foul, Foul::ThreeMisses);
   EXPECT_EQ(v.winner, Player::B);
@@ -350,7 +351,7 @@ TEST(SnookerRules, ThreeMissesInARowLoseTheFrame) {
   // A stroke that is not a miss starts the count again.
   Rack again = frame();
   again.shoot(hit(kPink));
-  again.replaceAfterMiss();
+  rules::replaceAfterMiss(again);
   again.shoot(hit(1));
   EXPECT_EQ(again.state().snooker.misses[0], 0);
 }
@@ -442,7 +443,7 @@ TEST(SnookerRules, PointsRemaining) {
   EXPECT_EQ(r.pointsRemaining(), 14 * 8 + 7 + 27);
   EXPECT_EQ(frame(colours()).pointsRemaining(), 27);
   EXPECT_EQ(frame({kPink, kBlack}).pointsRemaining(), 13);
-  EXPECT_FALSE(r.snookersRequired(Player::B));
+  EXPECT_FALSE(rules::snookersRequired(r, Player::B));
 }
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "nineball/carom_rack.hpp"
 #include "nineball/rules.hpp"
 
+namespace rules = nineball::rules;
 using nineball::rules::Foul;
 using nineball::rules::Game;
 using nineball::rules::Player;
@@ -125,19 +127,19 @@ TEST(ThreeCushion, EachPlayerStrikesTheirOwnBall) {
 TEST(ThreeCushion, APointPlaysOnAndAMissEndsTheInning) {
   Rack r = opened();
   EXPECT_EQ(r.shooter(), Player::A);
-  EXPECT_EQ(r.innings(Player::A), 1);
+  EXPECT_EQ(rules::innings(r, Player::A), 1);
   r.shoot(pointFor(kYellow, kRed));
   EXPECT_EQ(r.currentRun(), 2);
   r.shoot(miss());
   EXPECT_EQ(r.shooter(), Player::B);
   EXPECT_EQ(r.currentRun(), 0);
-  EXPECT_EQ(r.highRun(Player::A), 2);
+  EXPECT_EQ(rules::highRun(r, Player::A), 2);
   r.shoot(miss());
-  EXPECT_EQ(r.innings(Player::B), 1);
+  EXPECT_EQ(rules::innings(r, Player::B), 1);
   EXPECT_EQ(r.shooter(), Player::A);
   r.shoot(pointFor(kRed, kYellow));
-  EXPECT_EQ(r.innings(Player::A), 2);
-  EXPECT_EQ(r.highRun(Player::A), 2);  // a run of one does not beat two
+  EXPECT_EQ(rules::innings(r, Player::A), 2);
+  EXPECT_EQ(rules::highRun(r, Player::A), 2);  // a run of one does not beat two
 }
 
 TEST(ThreeCushion, TheOpeningShotGoesStraightOntoTheRed) {
@@ -155,7 +157,7 @@ TEST(ThreeCushion, TheOpeningShotGoesStraightOntoTheRed) {
   EXPECT_EQ(r.shoot(path({kCushion, kCushion, kCushion, touch(kYellow), touch(kRed)})).foul,
             Foul::None);
   // When the balls are set up again (frozen balls), the next shot is an opening one.
-  r.replayOpening();
+  rules::replayOpening(r);
   EXPECT_EQ(r.shoot(pointFor(kYellow, kRed)).foul, Foul::WrongBallFirst);
 }
 
@@ -179,7 +181,7 @@ TEST(ThreeCushion, TheOpenerReachingTheDistanceGivesTheOtherALastInning) {
   ASSERT_TRUE(v.winner);
   EXPECT_EQ(*v.winner, Player::A);
   EXPECT_TRUE(r.over());
-  EXPECT_EQ(r.innings(Player::A), r.innings(Player::B));
+  EXPECT_EQ(rules::innings(r, Player::A), rules::innings(r, Player::B));
 }
 
 TEST(ThreeCushion, BothReachingTheDistanceInEqualInningsIsADraw) {

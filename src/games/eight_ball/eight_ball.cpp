@@ -39,8 +39,9 @@ std::vector<BallState> rackEightBall(const TableDef& table, double ball_radius, 
 
 namespace games {
 
-GameDef eightBall() {
+GameEntry eightBall() {
   GameDef g;
+  GameTexts t;
   g.id = rules::Game::EightBall;
   g.name = "eight-ball";
   g.balls = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
@@ -48,17 +49,17 @@ GameDef eightBall() {
   g.required_why = "an eight-ball layout needs the 8 (the rack is won on it)";
   g.highest_ball = 15;
   g.rack = rackEightBall;
-  g.help = {"Eight-ball: the first legal pot takes its group (solids 1-7 or stripes 9-15);",
+  t.help = {"Eight-ball: the first legal pot takes its group (solids 1-7 or stripes 9-15);",
             "  hit your own group first, clear it, then call the 8 to win (8 early loses)",
             "Calling: click a pocket, or K for the obvious shot; the call shows on the table"};
   g.groups = true;
   g.called_shots = "shot at the 8";
   g.takes_calls = true;
   // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
-  g.best_of_choices = {0, 5, 7, 9, 13, 17};
+  t.best_of_choices = {0, 5, 7, 9, 13, 17};
   g.decision = {"play-on", "rerack", "eight-ball's choice after an illegal break"};
-  g.made = "potted a ball and kept the table";
-  return g;
+  t.made = "potted a ball and kept the table";
+  return {g, t};
 }
 
 }  // namespace games

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "games/game_texts.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table.hpp"
@@ -18,7 +19,7 @@ std::vector<BallState> rackEightBall(const TableDef& table, double ball_radius, 
 namespace games {
 
 /// eight-ball: its rack, its rules' name and what else differs from game to game.
-GameDef eightBall();
+GameEntry eightBall();
 
 }  // namespace games
 }  // namespace nineball

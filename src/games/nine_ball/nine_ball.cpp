@@ -45,8 +45,9 @@ std::vector<BallState> rackNineBall(const TableDef& table, double ball_radius, s
 
 namespace games {
 
-GameDef nineBall() {
+GameEntry nineBall() {
   GameDef g;
+  GameTexts t;
   g.id = rules::Game::NineBall;
   g.name = "nine-ball";
   g.balls = {1, 2, 3, 4, 5, 6, 7, 8, 9};
@@ -54,9 +55,9 @@ GameDef nineBall() {
   g.rack = rackNineBall;
   g.push_outs = true;
   // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
-  g.best_of_choices = {0, 5, 7, 9, 13, 17};
-  g.help = {"Rules: hit the lowest ball first; the 9 wins the rack"};
-  return g;
+  t.best_of_choices = {0, 5, 7, 9, 13, 17};
+  t.help = {"Rules: hit the lowest ball first; the 9 wins the rack"};
+  return {g, t};
 }
 
 }  // namespace games

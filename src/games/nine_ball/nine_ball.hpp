@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "games/game_texts.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table.hpp"
@@ -17,7 +18,7 @@ std::vector<BallState> rackNineBall(const TableDef& table, double ball_radius, s
 namespace games {
 
 /// nine-ball: its rack, its rules' name and what else differs from game to game.
-GameDef nineBall();
+GameEntry nineBall();
 
 }  // namespace games
 }  // namespace nineball

@@ -36,8 +36,9 @@ std::vector<BallState> rackSnooker(const TableDef& table, double ball_radius, st
 
 namespace games {
 
-GameDef snooker() {
+GameEntry snooker() {
   GameDef g;
+  GameTexts t;
   g.id = rules::Game::Snooker;
   g.name = "snooker";
   for (int b = balls::kFirstRed; b <= balls::kBlack; ++b) g.balls.push_back(b);
@@ -47,11 +48,11 @@ GameDef snooker() {
   g.looks = snookerBallLook;
   g.ball_name = snookerBallName;
   g.tables = {"snooker", "snooker-10ft"};
-  g.help = {"Snooker: pot a red (1), then a colour (its value: yellow 2 ... black 7), while reds",
+  t.help = {"Snooker: pot a red (1), then a colour (its value: yellow 2 ... black 7), while reds",
             "  remain; colours are re-spotted. Then the colours from yellow to black.",
             "A foul gives the opponent 4-7 points; they play on or put you back in.",
             "Snookered after a foul: a free ball. The cue ball is in hand in the D."};
-  g.made = "potted the ball on";
+  t.made = "potted the ball on";
   g.physics = "snooker";
   g.takes_calls = true;
   g.decision = {"play", "put-back", "the choice after a foul (\"replace\" too after a miss)",
@@ -63,8 +64,8 @@ GameDef snooker() {
   // A snooker match is the best of an agreed odd number of frames, odd so that it cannot be tied
   // (professional ones from best of 9 to the world final's 35: sportsdefinitions.com/snooker/
   // frame, liquisearch.com/rules_of_snooker); up to 11 here, a single frame the quick game.
-  g.best_of_choices = {1, 3, 5, 7, 9, 11};
-  return g;
+  t.best_of_choices = {1, 3, 5, 7, 9, 11};
+  return {g, t};
 }
 
 }  // namespace games

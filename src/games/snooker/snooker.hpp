@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "games/game_texts.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table.hpp"
@@ -20,7 +21,7 @@ std::vector<BallState> rackSnooker(const TableDef& table, double ball_radius, st
 namespace games {
 
 /// snooker: its rack, balls, tables, the D and the re-spotting of colours.
-GameDef snooker();
+GameEntry snooker();
 
 }  // namespace games
 }  // namespace nineball

@@ -28,14 +28,15 @@ std::vector<BallState> rackTenBall(const TableDef& table, double ball_radius, st
 
 namespace games {
 
-GameDef tenBall() {
+GameEntry tenBall() {
   GameDef g;
+  GameTexts t;
   g.id = rules::Game::TenBall;
   g.name = "ten-ball";
   g.balls = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
   g.highest_ball = 10;
   g.rack = rackTenBall;
-  g.help = {"Ten-ball: hit the lowest ball first; every shot after the break is called,",
+  t.help = {"Ten-ball: hit the lowest ball first; every shot after the break is called,",
             "  a pot not as called ends the turn (play or pass); the 10 called wins",
             "Calling: click a ball (default: the ball on), then a pocket; K: the obvious shot"};
   g.call_any_ball = true;
@@ -43,12 +44,12 @@ GameDef tenBall() {
   g.called_shots = "shot after the break";
   g.push_outs = true;
   // A race to 3, 4, 5, 7 or 9 racks, or none (the racks simply add up, the first choice).
-  g.best_of_choices = {0, 5, 7, 9, 13, 17};
+  t.best_of_choices = {0, 5, 7, 9, 13, 17};
   g.takes_calls = true;
   g.decision.about = "the choice after a push-out or a pot not as called";
   g.break_from_every_spot = true;
-  g.made = "potted the ball on as called";
-  return g;
+  t.made = "potted the ball on as called";
+  return {g, t};
 }
 
 }  // namespace games

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "games/game_texts.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table.hpp"
@@ -17,7 +18,7 @@ std::vector<BallState> rackTenBall(const TableDef& table, double ball_radius, st
 namespace games {
 
 /// ten-ball: its rack, its rules' name and what else differs from game to game.
-GameDef tenBall();
+GameEntry tenBall();
 
 }  // namespace games
 }  // namespace nineball

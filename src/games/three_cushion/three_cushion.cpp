@@ -26,8 +26,9 @@ std::vector<BallState> rackThreeCushion(const TableDef& table, double, std::uint
 
 namespace games {
 
-GameDef threeCushion() {
+GameEntry threeCushion() {
   GameDef g;
+  GameTexts t;
   g.id = rules::Game::ThreeCushion;
   g.family = GameFamily::Carom;
   g.name = "three-cushion";
@@ -40,17 +41,17 @@ GameDef threeCushion() {
   g.looks = caromBallLook;
   g.ball_name = caromBallName;
   g.tables = {"carom", "carom-small"};
-  g.help = {"Three-cushion: your ball (white opens, yellow for the other) must touch both",
+  t.help = {"Three-cushion: your ball (white opens, yellow for the other) must touch both",
             "  other balls and meet three cushions before the second; a point plays on.",
             "The opening shot goes straight onto the red. Games to 15, 25 or 40 points."};
-  g.made = "scored a point";
+  t.made = "scored a point";
   g.physics = "carom";
   g.cue_in_hand = false;
   g.decisions = false;
   g.decision.about = "three-cushion has no choice between turns: every turn is a shot";
   g.default_points = 25;
-  g.points_choices = {15, 25, 40};
-  return g;
+  t.points_choices = {15, 25, 40};
+  return {g, t};
 }
 
 }  // namespace games

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "games/game_texts.hpp"
 #include "nineball/ball.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table.hpp"
@@ -19,7 +20,7 @@ std::vector<BallState> rackThreeCushion(const TableDef& table, double ball_radiu
 namespace games {
 
 /// three-cushion: its opening position, its balls, its points and what else differs.
-GameDef threeCushion();
+GameEntry threeCushion();
 
 }  // namespace games
 }  // namespace nineball

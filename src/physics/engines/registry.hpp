@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct EngineDef {
   std::vector<std::string> reads;
   /// What it lacks that those fields are for, for that message ("has no time step").
   const char* lacks = "";
+  /// Its own settings on this table that it cannot run, as a message naming the field (what
+  /// Box2D would assert on); null for an engine that can run any.
+  std::optional<std::string> (*check)(const TableGeometry& table, const StepParams& step) = nullptr;
 };
 
 /// Every engine, in the order EngineKind::names() gives. One line of registry.cpp an engine.

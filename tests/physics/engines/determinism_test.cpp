@@ -49,7 +49,7 @@ TEST(Determinism, BreakTwiceGivesTheSameBits) {
 
 TEST(Determinism, SameBitsWithEveryModel) {
   Scene scene = breakScene(7, 12.0);
-  scene.step.contacts = ContactModel::Box2D;
+  scene.step.box2d.contacts = ContactModel::Box2D;
   scene.physics.cloth = ClothModel::Damping;
   scene.until = 3.0;
   expectSameBits(simulate(scene), simulate(scene), "box2d contacts, damping cloth");

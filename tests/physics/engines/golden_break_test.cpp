@@ -108,7 +108,7 @@ TEST(BreakShape, CueBallDoesNotFlyBackOffTheRack) {
   EXPECT_NEAR(first->va.y, 0.0, 0.005 * speed);
   EXPECT_GT(r.balls[0].vel.x, -0.11 * speed);
 
-  scene.step.contacts = nineball::ContactModel::Box2D;
+  scene.step.box2d.contacts = nineball::ContactModel::Box2D;
   const nineball::SimResult box2d = nineball::simulate(scene);
   EXPECT_LT(box2d.balls[0].vel.x, -0.3 * speed);
 }

@@ -13,6 +13,7 @@
 #include "common/log.hpp"
 #include "nineball/cancel.hpp"
 #include "physics/engines/box2d/box2d_clock.hpp"
+#include "physics/engines/box2d/box2d_settings_check.hpp"
 #include "physics/engines/box2d/contact_recorder.hpp"
 #include "physics/engines/event_loop.hpp"
 #include "physics/engines/registry.hpp"
@@ -83,8 +84,8 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
         table(buildTable(t, p.ball_radius)),
         phys(p),
         sp(s),
-        k(s.scale),
-        travel(kMaxTravelUnitsPerStep / s.scale),
+        k(s.box2d.scale),
+        travel(kMaxTravelUnitsPerStep / s.box2d.scale),
         search(table, p) {
     search.sensor_margin = kSensorMargin;
     world.SetContactListener(&recorder);
@@ -176,7 +177,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     fd.restitution = 0.0f;  // Box2D mixes by max: the cushion's e rules ball-cushion contacts
     fd.restitutionThreshold = static_cast<float>(physics::kRestingSpeed * k);
     // Pairwise: balls never meet inside Box2D; the world resolves them itself.
-    fd.filter.groupIndex = sp.contacts == ContactModel::Pairwise ? -1 : 0;
+    fd.filter.groupIndex = sp.box2d.contacts == ContactModel::Pairwise ? -1 : 0;
     fd.userData.pointer = fixtureTag(FixtureKind::Ball, index);
     b.body->CreateFixture(&fd);
     b2MassData md;
@@ -227,17 +228,17 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
         if (!sp.baseline) b.body->SetAwake(false);  // a resting ball costs the solver nothing
       }
     }
-    if (any) box2dStep(static_cast<float>(h), sp.position_iterations);
+    if (any) box2dStep(static_cast<float>(h), sp.box2d.position_iterations);
   }
 
   void box2dStep(float h, int position_iterations) {
     const physics::MutedBox2DClock muted;
-    world.Step(h, sp.velocity_iterations, position_iterations);
+    world.Step(h, sp.box2d.velocity_iterations, position_iterations);
   }
 
   void updateContacts() {
     // A step of no time makes Box2D find the new contacts and fire the sensors.
-    box2dStep(0.0f, sp.position_iterations);
+    box2dStep(0.0f, sp.box2d.position_iterations);
     contacts_stale = false;
   }
 
@@ -360,7 +361,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
 
   // Box2D's simultaneous solver ("contacts": "box2d"): every touching pair at once.
   bool solvedBallContact(std::size_t i, std::size_t j) override {
-    if (sp.contacts != ContactModel::Box2D) return false;
+    if (sp.box2d.contacts != ContactModel::Box2D) return false;
     Ball& a = balls[i];
     Ball& b = balls[j];
     mirrorAll();
@@ -420,8 +421,9 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     // energy back, with the rounding of Box2D's single-precision velocities allowed for.
     // Box2D's own ball solver ("contacts": "box2d") is the one model known to gain energy; it
     // is kept as the measured counter-example and not checked.
-    const bool contact = e.kind == NextEvent::Kind::Cushion ||
-                         (e.kind == NextEvent::Kind::Ball && sp.contacts == ContactModel::Pairwise);
+    const bool contact =
+        e.kind == NextEvent::Kind::Cushion ||
+        (e.kind == NextEvent::Kind::Ball && sp.box2d.contacts == ContactModel::Pairwise);
     const double before = contact ? energyOnTable() : 0.0;
     resolveUnchecked(e);
     const double after = contact ? energyOnTable() : 0.0;
@@ -674,6 +676,7 @@ EngineDef box2dEngine() {
     return std::make_unique<World>(table, physics, step);
   };
   e.reads = {"hz", "velocity_iterations", "position_iterations", "scale", "contacts", "baseline"};
+  e.check = box2dSettingsProblem;
   return e;
 }
 

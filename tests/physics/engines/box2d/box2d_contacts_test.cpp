@@ -39,7 +39,7 @@ TEST(Box2DContacts, FrozenBreaksRunToRestWithoutOverlap) {
 #endif
   for (int i = 0; i < kBreaks; ++i) {
     Scene s;
-    s.step.contacts = ContactModel::Box2D;
+    s.step.box2d.contacts = ContactModel::Box2D;
     const Vec2 cue{uniform(rng, -1.1, -0.3), uniform(rng, -0.5, 0.5)};
     s.balls = frozenRack();
     s.balls.insert(s.balls.begin(), BallState::at(kCueBall, cue));

@@ -34,7 +34,7 @@ TEST(NoClamping, FastBallCoversTheFullDistance) {
                            Solver{60.0, 100.0}, Solver{500.0, 20.0}}) {
       StepParams sp;
       sp.hz = s.hz;
-      sp.scale = s.scale;
+      sp.box2d.scale = s.scale;
       const Vec2 start{-5.0, 0.0};
       auto world = makeWorld(longTable(), p, sp, {makeBall(kCueBall, start)});
       world->strike(kCueBall, Shot::withSpeed(0.0, v0));

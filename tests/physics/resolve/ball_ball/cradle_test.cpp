@@ -19,7 +19,7 @@ std::array<double, kBalls> cradle(double e, ContactModel model) {
   PhysicsParams p = frictionless();
   p.ball_restitution = e;
   StepParams sp;
-  sp.contacts = model;
+  sp.box2d.contacts = model;
   const double d = 2.0 * p.ball_radius;
   std::vector<BallState> balls{makeBall(0, {-0.3, 0.0}, {kSpeed, 0.0})};
   for (int i = 1; i < kBalls; ++i) balls.push_back(makeBall(i, {(i - 1) * d, 0.0}));

@@ -40,7 +40,7 @@ Event collide(const HeadOn& c, ContactModel model = ContactModel::Pairwise) {
   PhysicsParams p = frictionless();
   p.ball_restitution = c.e;
   StepParams sp;
-  sp.contacts = model;
+  sp.box2d.contacts = model;
   auto world = makeWorld(
       longTable(), p, sp,
       {makeBall(1, {-0.5, 0.0}, {c.u1, 0.0}, c.m1), makeBall(2, {0.0, 0.0}, {c.u2, 0.0}, c.m2)});
