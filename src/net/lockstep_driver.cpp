@@ -9,6 +9,10 @@
 namespace nineball::net {
 namespace {
 
+PeerBroke outOfPlace(const std::string& what) {
+  return {what, what + " at the wrong time", true};
+}
+
 // The words of an end, in `nineball online`'s terms (the peer reads the bye's).
 std::string unhealedReason(std::size_t index) {
   return "the peers fell out of step after turn " + std::to_string(index) +
@@ -41,12 +45,12 @@ void LockstepDriver::setPeerPlayer(const Seat& player) {
 std::vector<LockstepEvent> LockstepDriver::hear(const Message& message, RackTable* table,
                                                 bool handshaking) {
   if (const auto* hello = std::get_if<Hello>(&message)) {
-    if (side_ != Side::Host || !handshaking) return {PeerBroke{"a hello", "at the wrong time"}};
+    if (side_ != Side::Host || !handshaking) return {outOfPlace("a hello")};
     return {HelloHeard{*hello}};
   }
   if (const auto* welcome = std::get_if<Welcome>(&message)) {
     if (side_ != Side::Joiner || !handshaking) {
-      return {PeerBroke{"a welcome", "at the wrong time"}};
+      return {outOfPlace("a welcome")};
     }
     return {WelcomeHeard{*welcome}};
   }
@@ -58,12 +62,11 @@ std::vector<LockstepEvent> LockstepDriver::hear(const Message& message, RackTabl
     return {ByeHeard{bye->reason, finished}};
   }
   if (!lockstep_ || !table || handshaking) {
-    return {PeerBroke{std::holds_alternative<TurnMessage>(message)    ? "a turn"
-                      : std::holds_alternative<HashMessage>(message)  ? "a state hash"
-                      : std::holds_alternative<StateMessage>(message) ? "a state"
-                      : std::holds_alternative<Aim>(message)          ? "an aim"
-                                                                      : "a rematch",
-                      "at the wrong time"}};
+    return {outOfPlace(std::holds_alternative<TurnMessage>(message)    ? "a turn"
+                       : std::holds_alternative<HashMessage>(message)  ? "a state hash"
+                       : std::holds_alternative<StateMessage>(message) ? "a state"
+                       : std::holds_alternative<Aim>(message)          ? "an aim"
+                                                                       : "a rematch")};
   }
   return hearInRack(message, *table);
 }
@@ -126,7 +129,7 @@ std::vector<LockstepEvent> LockstepDriver::onState(const StateMessage& message, 
   try {
     table.restore(*state);
   } catch (const std::exception& e) {
-    return {PeerBroke{"a state", std::string("that does not restore: ") + e.what()}};
+    return {PeerBroke{"a state", std::string("a state that does not restore: ") + e.what()}};
   }
   bool took = false;
   send_(lockstep_->healed(table.match().snapshot(), took));

@@ -75,7 +75,8 @@ struct RefuseHeard {
 /// refuses and drops it (the window ends the game; `nineball online` waits for a rejoin).
 struct PeerBroke {
   std::string what;
-  std::string why;
+  std::string why;  ///< whole: "turn 3 arrived when turn 1 was due", "a hello at the wrong time"
+  bool out_of_place = false;  ///< a message this moment does not take (why says so)
 };
 /// The rack ends here; the bye the protocol owes (if any) has been sent.
 struct LockstepEnded {

@@ -227,7 +227,8 @@ TEST_F(LockstepDriverTest, MessagesOutOfPlaceAreReportedAsBroken) {
   begin();
   const auto hello = joiner_->driver.hear(helloFrom("Eve", "CODE"), joiner_.get(), false);
   ASSERT_NE(first<PeerBroke>(hello), nullptr);
-  EXPECT_EQ(first<PeerBroke>(hello)->why, "at the wrong time");
+  EXPECT_EQ(first<PeerBroke>(hello)->why, "a hello at the wrong time");
+  EXPECT_TRUE(first<PeerBroke>(hello)->out_of_place);
   const auto hash = host_->driver.hear(HashMessage{5, 42}, host_.get(), false);
   ASSERT_NE(first<PeerBroke>(hash), nullptr);
   EXPECT_EQ(first<PeerBroke>(hash)->what, "a state hash");
