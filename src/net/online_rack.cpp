@@ -45,9 +45,9 @@ class OnlineRack final : private RackTable {
   explicit OnlineRack(const OnlineRackOptions& o)
       : o_(o),
         token_(o.seat_token),
-        lockstep_(
+        driver_(
             o.side, [this](const Message& m) { send(m); }, o.most_heals, o.most_rejoins) {
-    if (o_.on_heal) lockstep_.setOnHeal(o_.on_heal);
+    if (o_.on_heal) driver_.setOnHeal(o_.on_heal);
   }
 
   OnlineRackResult run() {
@@ -160,7 +160,7 @@ class OnlineRack final : private RackTable {
       return refusePeer("a bad message (" + bad->why + ")");
     }
     if (auto* in = std::get_if<PeerMessage>(&e)) {
-      for (LockstepEvent& l : lockstep_.hear(in->message, this, peer_->handshaking())) {
+      for (LockstepEvent& l : driver_.hear(in->message, this, peer_->handshaking())) {
         if (!over_ && !awaiting_) onLockstep(l);
       }
     }
@@ -213,7 +213,7 @@ class OnlineRack final : private RackTable {
   void onLinkLost(const std::string& reason) {
     lost_ = reason;
     turn_deadline_ = 0.0;
-    if (const auto ended = lockstep_.linkLost(reason)) return end(Outcome::LinkLost, ended->reason);
+    if (const auto ended = driver_.linkLost(reason)) return end(Outcome::LinkLost, ended->reason);
     logger("net")->warn("link lost ({}): waiting up to {} s for a rejoin", reason, o_.rejoin_s);
     awaiting_ = true;
   }
@@ -250,16 +250,16 @@ class OnlineRack final : private RackTable {
     const bool rejoin = match_ != nullptr;
     if (inRack()) {
       lost_ = "the other player connected again";
-      if (const auto ended = lockstep_.rejoinHeard()) return end(Outcome::LinkLost, ended->reason);
+      if (const auto ended = driver_.rejoinHeard()) return end(Outcome::LinkLost, ended->reason);
     }
     peer_name_ = hello.name;
     if (!match_) startRack(o_.script.setup);
     peer_->handshakeDone();
-    lockstep_.welcome(hello, o_.script.setup, o_.name, o_.match, Race{}, peer_->seatToken());
+    driver_.welcome(hello, o_.script.setup, o_.name, o_.match, Race{}, peer_->seatToken());
     awaiting_ = false;
     turn_deadline_ = 0.0;
     logger("net")->info("{} joined", peer_name_);
-    if (rejoin) logger("net")->info("rejoined after turn {}", lockstep_.lockstep()->turns().size());
+    if (rejoin) logger("net")->info("rejoined after turn {}", driver_.lockstep()->turns().size());
   }
 
   // The joiner reaching the host (again and again until its wait, or the rejoin window, runs
@@ -322,13 +322,13 @@ class OnlineRack final : private RackTable {
       join_why_ = result_.why;
       return;
     }
-    const bool rejoin = lockstep_.begun();
+    const bool rejoin = driver_.begun();
     peer_name_ = w->name;
     token_ = w->token;
     peer_->setSeatToken(token_);
     if (o_.on_seat_token) o_.on_seat_token(token_);
     peer_->handshakeDone();
-    lockstep_.welcomed(*setup, w->turns, hashes);
+    driver_.welcomed(*setup, w->turns, hashes);
     awaiting_ = false;
     turn_deadline_ = 0.0;
     if (rejoin) logger("net")->info("rejoined after turn {}", w->turns.size());
@@ -372,7 +372,7 @@ class OnlineRack final : private RackTable {
 
   void startRack(const MatchSetup& setup) {
     match_ = std::make_unique<Match>(setup);
-    if (o_.side == Side::Host) lockstep_.newRack(setup);
+    if (o_.side == Side::Host) driver_.newRack(setup);
     records_.clear();
     computer_.clear();
     next_script_turn_ = 0;
@@ -407,13 +407,13 @@ class OnlineRack final : private RackTable {
   // With the last turn agreed: the rack is played, this side moves, or the peer's turn is
   // awaited (no longer than turn_s). True when something was done.
   bool step() {
-    if (!lockstep_.settled()) return false;
+    if (!driver_.settled()) return false;
     if (rackDone()) {
       send(Bye{"the rack is played", true});
       end(partial_ ? Outcome::Partial : Outcome::InStep, "the rack is played");
       return true;
     }
-    if (lockstep_.localToMove(*match_)) {
+    if (driver_.localToMove(*match_)) {
       playLocalTurn();
       return true;
     }
@@ -455,7 +455,7 @@ class OnlineRack final : private RackTable {
     }
     const Seat player = planner_ ? Seat{ComputerSeat{planner_->level()}} : Seat{HumanSeat{}};
     TurnMessage message;
-    const CheckedTurn turn = lockstep_.localTurn(*choice, player, message);
+    const CheckedTurn turn = driver_.localTurn(*choice, player, message);
     const std::size_t script_turn = next_script_turn_;
     try {
       play(turn);
@@ -474,7 +474,7 @@ class OnlineRack final : private RackTable {
 
   void afterTurn(const WireTurn& turn) {
     if (o_.after_turn) o_.after_turn(*match_, records_.size() - 1);
-    lockstep_.played(turn, match_->snapshot());
+    driver_.played(turn, match_->snapshot());
   }
 
   void playPeerTurn(const TurnReceived& t) {
@@ -488,8 +488,8 @@ class OnlineRack final : private RackTable {
   }
 
   void describeRack() {
-    const Lockstep* l = lockstep_.lockstep();
-    result_.heals = lockstep_.heals();
+    const Lockstep* l = driver_.lockstep();
+    result_.heals = driver_.heals();
     result_.doc = io::matchResultToJson(records_, match_->rack(), match_->balls(), computer_);
     result_.doc["partial"] = partial_;
     nlohmann::ordered_json hashes = nlohmann::ordered_json::array();
@@ -506,7 +506,7 @@ class OnlineRack final : private RackTable {
   std::string lost_;              // why the link was lost (the rejoin's reason)
   std::string join_why_ = "nobody answered";  // the joiner: why no welcome came yet
   std::string token_;                         // the joiner: its seat token
-  LockstepDriver lockstep_;     // the turns, the hashes, the heal and the rack's allowance
+  LockstepDriver driver_;       // the turns, the hashes, the heal and the rack's allowance
   bool awaiting_ = true;        // no rack on the link yet: waiting for a (re)join
   bool over_ = false;           // the rack is over for this side (the result says why)
   double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)

@@ -95,7 +95,7 @@ class LockstepDriverTest : public ::testing::Test {
 };
 
 template <class T>
-bool has(const std::vector<LockstepEvent>& events) {
+bool sawEvent(const std::vector<LockstepEvent>& events) {
   for (const LockstepEvent& e : events) {
     if (std::holds_alternative<T>(e)) return true;
   }
@@ -103,7 +103,7 @@ bool has(const std::vector<LockstepEvent>& events) {
 }
 
 template <class T>
-const T* first(const std::vector<LockstepEvent>& events) {
+const T* firstEvent(const std::vector<LockstepEvent>& events) {
   for (const LockstepEvent& e : events) {
     if (const T* t = std::get_if<T>(&e)) return t;
   }
@@ -116,8 +116,8 @@ TEST_F(LockstepDriverTest, TurnsArePlayedOnBothTablesAndAgreed) {
     DriverSide& mover = playLocal(driverShot(heading, 4.0));
     DriverSide& peer = other(mover);
     playReceived(peer, deliver(mover, peer, 1));
-    EXPECT_TRUE(has<TurnAgreed>(deliver(peer, mover)));
-    EXPECT_TRUE(has<TurnAgreed>(deliver(mover, peer)));
+    EXPECT_TRUE(sawEvent<TurnAgreed>(deliver(peer, mover)));
+    EXPECT_TRUE(sawEvent<TurnAgreed>(deliver(mover, peer)));
     EXPECT_TRUE(host_->driver.settled());
     EXPECT_TRUE(joiner_->driver.settled());
   }
@@ -130,12 +130,12 @@ TEST_F(LockstepDriverTest, AMismatchIsHealedByTheHostsStateAndReportedOnBothSide
   ASSERT_EQ(&mover, host_.get());
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   const auto at_host = deliver(*joiner_, *host_);  // the joiner's differing hash
-  ASSERT_NE(first<HealStarted>(at_host), nullptr);
-  EXPECT_EQ(first<HealStarted>(at_host)->index, 0u);
+  ASSERT_NE(firstEvent<HealStarted>(at_host), nullptr);
+  EXPECT_EQ(firstEvent<HealStarted>(at_host)->index, 0u);
   const auto at_joiner = deliver(*host_, *joiner_);  // the host's hash, then its state
-  EXPECT_TRUE(has<HealStarted>(at_joiner));
-  ASSERT_NE(first<Healed>(at_joiner), nullptr);
-  EXPECT_TRUE(has<TurnAgreed>(deliver(*joiner_, *host_)));
+  EXPECT_TRUE(sawEvent<HealStarted>(at_joiner));
+  ASSERT_NE(firstEvent<Healed>(at_joiner), nullptr);
+  EXPECT_TRUE(sawEvent<TurnAgreed>(deliver(*joiner_, *host_)));
   EXPECT_EQ(host_->driver.heals(), 1);
   EXPECT_EQ(joiner_->driver.heals(), 1);
   EXPECT_EQ(snapshotHash(host_->table.snapshot()), snapshotHash(joiner_->table.snapshot()));
@@ -146,7 +146,7 @@ TEST_F(LockstepDriverTest, OneMismatchMoreThanTheRackMayHealEndsItWithABye) {
   playLocal(driverShot(0.0, 5.0));
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   const auto at_host = deliver(*joiner_, *host_);
-  const auto* ended = first<LockstepEnded>(at_host);
+  const auto* ended = firstEvent<LockstepEnded>(at_host);
   ASSERT_NE(ended, nullptr);
   EXPECT_EQ(ended->why, LockstepEnded::Why::HealsSpent);
   EXPECT_EQ(ended->reason, "out of step after turn 0, healed 0 times in this rack already");
@@ -157,8 +157,8 @@ TEST_F(LockstepDriverTest, OneMismatchMoreThanTheRackMayHealEndsItWithABye) {
   EXPECT_FALSE(bye->finished);
   // The joiner, told the host's hash, finds its own allowance spent the same way.
   const auto at_joiner = deliver(*host_, *joiner_);
-  ASSERT_NE(first<LockstepEnded>(at_joiner), nullptr);
-  EXPECT_EQ(first<LockstepEnded>(at_joiner)->why, LockstepEnded::Why::HealsSpent);
+  ASSERT_NE(firstEvent<LockstepEnded>(at_joiner), nullptr);
+  EXPECT_EQ(firstEvent<LockstepEnded>(at_joiner)->why, LockstepEnded::Why::HealsSpent);
 }
 
 TEST_F(LockstepDriverTest, AHealThatDoesNotTakeEndsBothSides) {
@@ -168,10 +168,10 @@ TEST_F(LockstepDriverTest, AHealThatDoesNotTakeEndsBothSides) {
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   deliver(*joiner_, *host_);
   const auto at_joiner = deliver(*host_, *joiner_);
-  ASSERT_NE(first<LockstepEnded>(at_joiner), nullptr);
-  EXPECT_EQ(first<LockstepEnded>(at_joiner)->why, LockstepEnded::Why::Unhealed);
+  ASSERT_NE(firstEvent<LockstepEnded>(at_joiner), nullptr);
+  EXPECT_EQ(firstEvent<LockstepEnded>(at_joiner)->why, LockstepEnded::Why::Unhealed);
   const auto at_host = deliver(*joiner_, *host_);
-  const auto* ended = first<LockstepEnded>(at_host);
+  const auto* ended = firstEvent<LockstepEnded>(at_host);
   ASSERT_NE(ended, nullptr);
   EXPECT_EQ(ended->why, LockstepEnded::Why::Unhealed);
   EXPECT_EQ(ended->reason,
@@ -210,8 +210,8 @@ TEST_F(LockstepDriverTest, AFinishedByeIsBelievedOnlyWhereThePeersRackCanEnd) {
   begin();
   // The host's break is due: a joiner's "finished" is a quit.
   const auto early = host_->driver.hear(Bye{"played out", true}, host_.get(), false);
-  ASSERT_NE(first<ByeHeard>(early), nullptr);
-  EXPECT_FALSE(first<ByeHeard>(early)->finished);
+  ASSERT_NE(firstEvent<ByeHeard>(early), nullptr);
+  EXPECT_FALSE(firstEvent<ByeHeard>(early)->finished);
   // After an agreed turn at the joiner's move, its script may have run out.
   DriverSide& mover = playLocal(driverShot(0.0, 2.0));
   playReceived(other(mover), deliver(mover, other(mover), 1));
@@ -219,26 +219,26 @@ TEST_F(LockstepDriverTest, AFinishedByeIsBelievedOnlyWhereThePeersRackCanEnd) {
   deliver(mover, other(mover));
   DriverSide& waiting = host_->driver.localToMove(host_->table) ? *joiner_ : *host_;
   const auto late = waiting.driver.hear(Bye{"played out", true}, &waiting, false);
-  ASSERT_NE(first<ByeHeard>(late), nullptr);
-  EXPECT_TRUE(first<ByeHeard>(late)->finished);
+  ASSERT_NE(firstEvent<ByeHeard>(late), nullptr);
+  EXPECT_TRUE(firstEvent<ByeHeard>(late)->finished);
 }
 
 TEST_F(LockstepDriverTest, MessagesOutOfPlaceAreReportedAsBroken) {
   begin();
   const auto hello = joiner_->driver.hear(helloFrom("Eve", "CODE"), joiner_.get(), false);
-  ASSERT_NE(first<PeerBroke>(hello), nullptr);
-  EXPECT_EQ(first<PeerBroke>(hello)->why, "a hello at the wrong time");
-  EXPECT_TRUE(first<PeerBroke>(hello)->out_of_place);
+  ASSERT_NE(firstEvent<PeerBroke>(hello), nullptr);
+  EXPECT_EQ(firstEvent<PeerBroke>(hello)->why, "a hello at the wrong time");
+  EXPECT_TRUE(firstEvent<PeerBroke>(hello)->out_of_place);
   const auto hash = host_->driver.hear(HashMessage{5, 42}, host_.get(), false);
-  ASSERT_NE(first<PeerBroke>(hash), nullptr);
-  EXPECT_EQ(first<PeerBroke>(hash)->what, "a state hash");
+  ASSERT_NE(firstEvent<PeerBroke>(hash), nullptr);
+  EXPECT_EQ(firstEvent<PeerBroke>(hash)->what, "a state hash");
   LockstepDriver fresh(Side::Host, [](const Message&) {});
-  EXPECT_NE(first<PeerBroke>(fresh.hear(Rematch{}, nullptr, false)), nullptr);
-  EXPECT_NE(first<HelloHeard>(fresh.hear(helloFrom("Bob", "CODE"), nullptr, true)), nullptr);
-  EXPECT_NE(first<RematchHeard>(host_->driver.hear(Rematch{}, host_.get(), false)), nullptr);
+  EXPECT_NE(firstEvent<PeerBroke>(fresh.hear(Rematch{}, nullptr, false)), nullptr);
+  EXPECT_NE(firstEvent<HelloHeard>(fresh.hear(helloFrom("Bob", "CODE"), nullptr, true)), nullptr);
+  EXPECT_NE(firstEvent<RematchHeard>(host_->driver.hear(Rematch{}, host_.get(), false)), nullptr);
   const auto busy = host_->driver.hear(Refuse{"busy: later"}, host_.get(), false);
-  ASSERT_NE(first<RefuseHeard>(busy), nullptr);
-  EXPECT_TRUE(first<RefuseHeard>(busy)->busy);
+  ASSERT_NE(firstEvent<RefuseHeard>(busy), nullptr);
+  EXPECT_TRUE(firstEvent<RefuseHeard>(busy)->busy);
 }
 
 }  // namespace
