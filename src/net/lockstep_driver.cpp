@@ -82,7 +82,7 @@ std::vector<LockstepEvent> LockstepDriver::hearInRack(const Message& message, Ra
   if (const auto* state = std::get_if<StateMessage>(&message)) return onState(*state, table);
   if (const auto* aim = std::get_if<Aim>(&message)) return {AimHeard{*aim}};
   if (std::holds_alternative<Rematch>(message)) return {RematchHeard{}};
-  return {};  // a ping
+  return {};  // every message is one of the above
 }
 
 // A mismatch is healed by the host's state, within the rack's allowance; a mismatch after the
