@@ -312,8 +312,9 @@ class OnlineRack final : private RackTable {
     }
     const auto setup = w ? setupOf(*w, why) : std::nullopt;
     std::vector<std::uint64_t> hashes;
-    if (setup && !replay(*setup, *w, hashes, why) && over_) return;
-    if (!setup || !why.empty()) {
+    const bool replayed = setup && replay(*setup, *w, hashes, why);
+    if (over_) return;  // Ctrl-C during the replay
+    if (!replayed) {
       send(Refuse{"a bad welcome (" + why + ")"});
       peer_->flush(0.5);
       peer_->lose("it sent a bad welcome", true);
