@@ -1,6 +1,5 @@
 #include "net/online_rack.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <future>
@@ -11,6 +10,7 @@
 #include "common/log.hpp"
 #include "io/snapshot_json.hpp"
 #include "net/handshake.hpp"
+#include "net/lockstep_driver.hpp"
 #include "net/peer.hpp"
 #include "nineball/planner.hpp"
 
@@ -26,7 +26,7 @@ constexpr double kHandshakeSeconds = 5.0;
 // Between two attempts to reach the host again.
 constexpr double kRetrySeconds = 0.25;
 
-void nap() {
+void rackNap() {
   std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
@@ -36,23 +36,23 @@ std::uint64_t plannerSeed(std::uint64_t seed, rules::Player p) {
   return seed * 0x9E3779B97F4A7C15ull + (p == rules::Player::A ? 1u : 2u);
 }
 
-// The rack is over for this side (the result says why).
-struct Stop {};
-// The link closed, or the peer broke the protocol and was dropped: the rack waits for a rejoin.
-struct Dropped {};
-
-// The headless driver of a Peer: a loop that polls the peer, plays this side's turns (the
-// script's or the computer's) and the peer's, waits a little, and hears `quit`. The peer owns
-// the link, the gate, the handshake's timing and the rejoin window; the rack owns the table.
-class OnlineRack {
+// The headless driver of a Peer and the rack's LockstepDriver: a loop that polls the peer,
+// acts on what it reported, plays this side's turn (the script's or the computer's), naps and
+// hears `quit`. The peer owns the link, the gate, the handshake's timing and the rejoin
+// window; the lockstep driver what the peer's messages mean; this driver the table.
+class OnlineRack final : private RackTable {
  public:
   explicit OnlineRack(const OnlineRackOptions& o)
-      : o_(o), token_(o.seat_token), allowance_(o.most_heals, o.most_rejoins) {}
+      : o_(o),
+        token_(o.seat_token),
+        driver_(
+            o.side, [this](const Message& m) { send(m); }, o.most_heals, o.most_rejoins) {
+    if (o_.on_heal) driver_.setOnHeal(o_.on_heal);
+  }
 
   OnlineRackResult run() {
-    try {
-      if (startPeer() && (o_.side == Side::Host ? awaitJoiner() : join())) playRack();
-    } catch (const Stop&) {
+    if (startPeer()) {
+      while (!over_) loopOnce();
     }
     if (match_) describeRack();
     // What the peer said reaches the terminal: without control characters.
@@ -69,7 +69,52 @@ class OnlineRack {
   }
 
  private:
+  // RackTable
+  const Match& match() const override { return *match_; }
+  void restore(const MatchSnapshot& state) override { match_->restore(state); }
+
   double seconds() const { return o_.clock->now(); }
+  void send(const Message& m) { peer_->send(m); }
+  bool inRack() const { return match_ && !awaiting_; }
+
+  // One step: quit, the peer's events, this side's move (or the peer's turn limit), a nap
+  // when nothing happened.
+  void loopOnce() {
+    if (o_.quit && o_.quit->load()) return quit();
+    poll();
+    bool acted = !events_.empty();
+    while (!over_ && !events_.empty()) {
+      PeerEvent e = std::move(events_.front());
+      events_.pop_front();
+      onEvent(e);
+    }
+    if (!over_ && inRack()) acted = step() || acted;
+    if (!over_ && !acted) rackNap();
+  }
+
+  void poll() {
+    for (PeerEvent& e : peer_->poll()) events_.push_back(std::move(e));
+  }
+
+  // The rack ends here (the result says why).
+  void end(Outcome outcome, const std::string& why) {
+    result_.outcome = outcome;
+    result_.why = why;
+    logger("net")->info("rack ends: {}", why);
+    over_ = true;
+  }
+
+  // Said to the peer before an end: it reaches the other side before the link closes.
+  void sayBye(const std::string& reason, bool finished) {
+    send(Bye{reason, finished});
+    peer_->flush(0.5);
+  }
+
+  // Ctrl-C: the other side hears that this one left, and the rack ends here.
+  void quit() {
+    if (peer_->linked()) sayBye("the other player quit", false);
+    end(Outcome::Quit, "quit before the rack was over");
+  }
 
   // --- the peer ---
 
@@ -102,53 +147,55 @@ class OnlineRack {
     return true;
   }
 
-  // The peer's next event: polled (napping between polls) until there is one.
-  PeerEvent nextEvent() {
-    while (events_.empty()) {
-      leaveIfAsked();
-      poll();
-      if (events_.empty()) nap();
+  void onEvent(PeerEvent& e) {
+    if (auto* joined = std::get_if<PeerJoined>(&e)) return onJoined(joined->hello);
+    if (const auto* t = std::get_if<PeerTimedOut>(&e)) return onTimedOut(t->what);
+    if (inRack()) return onRackEvent(e);
+    if (o_.side == Side::Joiner) onJoinEvent(e);
+  }
+
+  void onRackEvent(PeerEvent& e) {
+    if (const auto* lost = std::get_if<PeerLost>(&e)) return onLinkLost(lost->reason);
+    if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
+      return refusePeer("a bad message (" + bad->why + ")");
     }
-    PeerEvent e = std::move(events_.front());
-    events_.pop_front();
-    return e;
+    if (auto* in = std::get_if<PeerMessage>(&e)) {
+      for (LockstepEvent& l : driver_.hear(in->message, this, peer_->handshaking())) {
+        if (!over_ && !awaiting_) onLockstep(l);
+      }
+    }
   }
 
-  void poll() {
-    for (PeerEvent& e : peer_->poll()) events_.push_back(std::move(e));
-  }
-
-  [[noreturn]] void end(Outcome outcome, const std::string& why) {
-    result_.outcome = outcome;
-    result_.why = why;
-    logger("net")->info("rack ends: {}", why);
-    throw Stop{};
-  }
-
-  void send(const Message& m) { peer_->send(m); }
-
-  // Ctrl-C: the other side hears that this one left, and the rack ends here.
-  void leaveIfAsked() {
-    if (!o_.quit || !o_.quit->load()) return;
-    if (peer_->linked()) {
-      send(Bye{"the other player quit", false});
+  // What the lockstep made of the peer's message.
+  void onLockstep(LockstepEvent& e) {
+    if (auto* turn = std::get_if<TurnReceived>(&e)) return playPeerTurn(*turn);
+    if (const auto* bye = std::get_if<ByeHeard>(&e)) {
+      if (bye->finished)
+        return end(Outcome::InStep, "the other side's rack is played: " + bye->reason);
+      return end(Outcome::LinkLost, "the other player left: " + bye->reason);
+    }
+    if (const auto* r = std::get_if<RefuseHeard>(&e)) {
+      return end(Outcome::Refused, "the other side refused: " + r->reason);
+    }
+    if (const auto* broke = std::get_if<PeerBroke>(&e)) return refusePeer(broke->why);
+    if (const auto* ended = std::get_if<LockstepEnded>(&e)) {
       peer_->flush(0.5);
+      return end(Outcome::OutOfStep, ended->reason);
     }
-    end(Outcome::Quit, "quit before the rack was over");
+    // Agreements, heals under way, aims and rematch offers change nothing here.
   }
 
   // The other side broke the protocol: tell it why and drop it; it may rejoin. (When the
   // peer already took a new link from the same player, the old one is gone unheard.)
-  [[noreturn]] void refusePeer(const std::string& why) {
+  void refusePeer(const std::string& why) {
     logger("net")->warn("the other side sent {}: disconnected it", cleanText(why, 400));
     forgetOldLink();
-    if (!rejoinQueued()) {
-      send(Refuse{"disconnected: you sent " + why});
-      peer_->flush(0.5);
-      lost_ = "it sent " + why;
-      peer_->lose(lost_);
-    }
-    throw Dropped{};
+    if (rejoinQueued()) return;
+    send(Refuse{"disconnected: you sent " + why});
+    peer_->flush(0.5);
+    const std::string reason = "it sent " + why;
+    peer_->lose(reason);
+    onLinkLost(reason);
   }
 
   // What the dropped link said after what was being played: not the rack's any more.
@@ -162,162 +209,94 @@ class OnlineRack {
     return !events_.empty() && std::holds_alternative<PeerJoined>(events_.front());
   }
 
-  // The next message from the peer; nothing once the link is lost (lost_ says why). The host
-  // hears newcomers throughout: the other player back on a new connection (its old one dead
-  // without our knowing yet, or its program restarted) takes the seat, and the rack goes on
-  // through a rejoin.
-  std::optional<Message> next() {
-    while (true) {
-      if (events_.empty() && turn_deadline_ > 0.0 && seconds() > turn_deadline_) {
-        const std::string why = "no turn within " + std::to_string(static_cast<int>(o_.turn_s)) +
-                                " s: the rack is given up";
-        send(Bye{why, false});
-        peer_->flush(0.5);
-        end(Outcome::LinkLost, "the other player played " + why);
-      }
-      if (events_.empty()) {
-        leaveIfAsked();
-        poll();
-        if (events_.empty()) nap();
-        continue;
-      }
-      if (rejoinQueued()) {
-        lost_ = "the other player connected again";
-        return std::nullopt;
-      }
-      PeerEvent e = std::move(events_.front());
-      events_.pop_front();
-      if (auto* lost = std::get_if<PeerLost>(&e)) {
-        lost_ = lost->reason;
-        return std::nullopt;
-      }
-      if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
-        refusePeer("a bad message (" + bad->why + ")");
-      }
-      const auto* in = std::get_if<PeerMessage>(&e);
-      if (!in) continue;
-      const Message& m = in->message;
-      if (std::holds_alternative<Aim>(m) || std::holds_alternative<Rematch>(m)) continue;
-      if (const auto* r = std::get_if<Refuse>(&m)) {
-        end(Outcome::Refused, "the other side refused: " + r->reason);
-      }
-      return m;
-    }
-  }
-
   // A lost link: the rack pauses, and goes on if the peer comes back in time.
-  void recover() {
-    const std::string reason = lost_;
-    if (!allowance_.takeRejoin()) {
-      end(Outcome::LinkLost, "the link was lost (" + reason + ") more than " +
-                                 std::to_string(o_.most_rejoins) + " times in this rack");
-    }
+  void onLinkLost(const std::string& reason) {
+    lost_ = reason;
+    turn_deadline_ = 0.0;
+    if (const auto ended = driver_.linkLost(reason)) return end(Outcome::LinkLost, ended->reason);
     logger("net")->warn("link lost ({}): waiting up to {} s for a rejoin", reason, o_.rejoin_s);
-    const bool back = o_.side == Side::Host ? awaitJoiner() : join();
-    if (!back) end(Outcome::LinkLost, "the link was lost (" + reason + ") and not rejoined");
-    logger("net")->info("rejoined after turn {}", lockstep_->turns().size());
+    awaiting_ = true;
   }
 
-  // A message from the peer; a lost link throws Dropped (the rack then waits for a rejoin).
-  Message nextOrDrop() {
-    auto m = next();
-    if (!m) throw Dropped{};
-    if (const auto* bye = std::get_if<Bye>(&*m)) {
-      if (bye->finished && byeBelieved()) {
-        end(Outcome::InStep, "the other side's rack is played: " + bye->reason);
-      }
-      end(Outcome::LinkLost, "the other player left: " + bye->reason);
+  // A wait ran out: nobody came (or came back), or the joiner's host never answered.
+  void onTimedOut(PeerTimedOut::What what) {
+    if (what == PeerTimedOut::What::NoWelcome) {
+      join_why_ = "the host did not answer the hello";
+      return;
     }
-    return *m;
-  }
-
-  // A peer's "finished" is believed only where a rack can end for it: the rack is over here
-  // too, or the peer's own script ran out at its move. Anywhere else it is a quit.
-  bool byeBelieved() {
-    if (match_->rack().over() || records_.size() >= kMaxTurns) return true;
-    return lockstep_->settled() && match_->rack().shooter() != lockstep_->localSeat();
+    if (match_) return end(Outcome::LinkLost, "the link was lost (" + lost_ + ") and not rejoined");
+    over_ = true;
+    if (o_.side == Side::Joiner) {
+      // Nobody answered, or only "busy" or silence did (a bad welcome has said LinkLost).
+      if (result_.outcome == Outcome::InStep) {
+        result_.outcome = Outcome::NoPeer;
+        result_.why = join_why_;
+      }
+    } else if (!peer_->buildRefusal().empty()) {
+      // The host's friend knew the code but runs another build: say so, not "nobody".
+      result_.outcome = Outcome::Refused;
+      result_.why = "refused the other side: " + peer_->buildRefusal();
+    } else {
+      result_.outcome = Outcome::NoPeer;
+      result_.why = "nobody joined within " + std::to_string(static_cast<int>(o_.wait_s)) + " s";
+    }
   }
 
   // --- the handshake ---
 
-  // The host: the first newcomer the gate lets in is welcomed to the match (the rack as it
-  // stands, when it is a rejoin), or the wait (the rejoin window) runs out.
-  bool awaitJoiner() {
-    while (true) {
-      PeerEvent e = nextEvent();
-      if (auto* joined = std::get_if<PeerJoined>(&e)) {
-        welcome(joined->hello);
-        return true;
-      }
-      if (std::holds_alternative<PeerTimedOut>(e)) break;
+  // The host: a newcomer the gate let in is welcomed to the match (the rack as it stands,
+  // when it is a rejoin; its new link replacing the old one counts as that link lost).
+  void onJoined(const Hello& hello) {
+    const bool rejoin = match_ != nullptr;
+    if (inRack()) {
+      lost_ = "the other player connected again";
+      if (const auto ended = driver_.rejoinHeard()) return end(Outcome::LinkLost, ended->reason);
     }
-    const double limit = match_ ? o_.rejoin_s : o_.wait_s;
-    if (!match_ && !peer_->buildRefusal().empty()) {
-      // The host's friend knew the code but runs another build: say so, not "nobody".
-      result_.outcome = Outcome::Refused;
-      result_.why = "refused the other side: " + peer_->buildRefusal();
-      return false;
-    }
-    result_.outcome = Outcome::NoPeer;
-    result_.why = "nobody joined within " + std::to_string(static_cast<int>(limit)) + " s";
-    return false;
-  }
-
-  void welcome(const Hello& hello) {
     peer_name_ = hello.name;
     if (!match_) startRack(o_.script.setup);
-    lockstep_->setPeerPlayer(hello.player);
     peer_->handshakeDone();
-    send(welcomeFrom(o_.name, o_.match, Race{}, *lockstep_, peer_->seatToken()));
-    lockstep_->rejoined();
-    if (const auto h = lockstep_->lastHash()) send(*h);
+    driver_.welcome(hello, o_.script.setup, o_.name, o_.match, Race{}, peer_->seatToken());
+    awaiting_ = false;
+    turn_deadline_ = 0.0;
     logger("net")->info("{} joined", peer_name_);
+    if (rejoin) logger("net")->info("rejoined after turn {}", driver_.lockstep()->turns().size());
   }
 
-  // The joiner: the peer reaches the host (again and again until its wait, or the rejoin
-  // window, runs out) and says hello; the first answer is a welcome, whose rack is replayed,
-  // or a refusal.
-  bool join() {
-    std::string why = "nobody answered";
-    while (true) {
-      PeerEvent e = nextEvent();
-      if (const auto* u = std::get_if<PeerUnreachable>(&e)) {
-        why = u->why;
-      } else if (const auto* lost = std::get_if<PeerLost>(&e)) {
-        why = "the host closed the link (" + lost->reason + ")";
-      } else if (const auto* t = std::get_if<PeerTimedOut>(&e)) {
-        if (t->what == PeerTimedOut::What::NoWelcome) {
-          why = "the host did not answer the hello";
-          continue;
-        }
-        break;
-      } else if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
-        send(Refuse{"a bad first message (" + bad->why + ")"});
-        peer_->flush(0.5);
-        peer_->lose("it sent a bad first message", true);
-      } else if (const auto* in = std::get_if<PeerMessage>(&e)) {
-        if (acceptWelcome(in->message)) return true;
-        if (result_.outcome == Outcome::Refused) return false;
-        why = result_.why.empty() ? why : result_.why;
-      }
+  // The joiner reaching the host (again and again until its wait, or the rejoin window, runs
+  // out): the first answer is a welcome, whose rack is replayed, or a refusal.
+  void onJoinEvent(PeerEvent& e) {
+    if (const auto* u = std::get_if<PeerUnreachable>(&e)) {
+      join_why_ = u->why;
+    } else if (const auto* lost = std::get_if<PeerLost>(&e)) {
+      join_why_ = "the host closed the link (" + lost->reason + ")";
+    } else if (const auto* bad = std::get_if<PeerBadMessage>(&e)) {
+      send(Refuse{"a bad first message (" + bad->why + ")"});
+      peer_->flush(0.5);
+      peer_->lose("it sent a bad first message", true);
+    } else if (auto* in = std::get_if<PeerMessage>(&e)) {
+      onFirstAnswer(in->message);
     }
-    // Nobody answered, or only "busy" or silence did (a bad welcome has said LinkLost).
-    if (result_.outcome == Outcome::InStep) {
-      result_.outcome = Outcome::NoPeer;
-      result_.why = why;
-    }
-    return false;
+  }
+
+  // A join that cannot go on: before the rack as the result says, during it as a lost link.
+  void joinFailed() {
+    if (match_) return end(Outcome::LinkLost, "the link was lost (" + lost_ + ") and not rejoined");
+    over_ = true;
   }
 
   // The host's first answer: a welcome (its rack replayed here) or a refusal. Anything else
   // refuses the link, and the peer tries again.
-  bool acceptWelcome(const Message& m) {
+  void onFirstAnswer(const Message& m) {
     if (const auto* r = std::get_if<Refuse>(&m)) {
       result_.why = "the host refused: " + r->reason;
-      // A full host is tried again; any other refusal is final.
-      if (!isBusyRefusal(r->reason)) result_.outcome = Outcome::Refused;
+      join_why_ = result_.why;
       peer_->lose(r->reason, true);
-      return false;
+      // A full host is tried again; any other refusal is final.
+      if (!isBusyRefusal(r->reason)) {
+        result_.outcome = Outcome::Refused;
+        joinFailed();
+      }
+      return;
     }
     const auto* w = std::get_if<Welcome>(&m);
     std::string why;
@@ -328,37 +307,47 @@ class OnlineRack {
         peer_->flush(0.5);
         result_.outcome = Outcome::Refused;
         result_.why = "refused the host: " + *r;
-        return false;
+        return joinFailed();
       }
     }
     const auto setup = w ? setupOf(*w, why) : std::nullopt;
-    if (!setup || !replay(*setup, *w, why)) {
+    std::vector<std::uint64_t> hashes;
+    const bool replayed = setup && replay(*setup, *w, hashes, why);
+    if (over_) return;  // Ctrl-C during the replay
+    if (!replayed) {
       send(Refuse{"a bad welcome (" + why + ")"});
       peer_->flush(0.5);
       peer_->lose("it sent a bad welcome", true);
       result_.outcome = Outcome::LinkLost;
       result_.why = "the host sent a bad welcome (" + why + ")";
-      return false;
+      join_why_ = result_.why;
+      return;
     }
+    const bool rejoin = driver_.begun();
     peer_name_ = w->name;
     token_ = w->token;
     peer_->setSeatToken(token_);
     if (o_.on_seat_token) o_.on_seat_token(token_);
     peer_->handshakeDone();
-    if (const auto h = lockstep_->lastHash()) send(*h);
-    return true;
+    driver_.welcomed(*setup, w->turns, hashes);
+    awaiting_ = false;
+    turn_deadline_ = 0.0;
+    if (rejoin) logger("net")->info("rejoined after turn {}", w->turns.size());
   }
 
   Seat localPlayer() const { return o_.script.players[o_.side == Side::Host ? 0 : 1]; }
 
   // The joiner: the rack from its start, the welcome's turns played again. Between turns the
-  // link is kept alive and Ctrl-C heard; a turn after one that left balls moving (the rack
-  // was over there) refuses the welcome.
-  bool replay(const MatchSetup& setup, const Welcome& w, std::string& why) {
+  // link is kept alive and Ctrl-C heard (false with `why` empty: quit); a turn after one that
+  // left balls moving (the rack was over there) refuses the welcome (false, `why`).
+  bool replay(const MatchSetup& setup, const Welcome& w, std::vector<std::uint64_t>& hashes,
+              std::string& why) {
     startRack(setup);
-    std::vector<std::uint64_t> hashes;
     for (std::size_t i = 0; i < w.turns.size(); ++i) {
-      leaveIfAsked();
+      if (o_.quit && o_.quit->load()) {
+        quit();
+        return false;
+      }
       keepAlive();
       if (rackDone()) {
         why = "turns[" + std::to_string(i) + "] comes after the rack was over";
@@ -366,16 +355,14 @@ class OnlineRack {
       }
       const auto input = parseWireTurn(w.turns[i], setup, why);
       if (!input) return false;
-      const CheckedTurn turn{*input, w.turns[i].player};
       try {
-        play(turn);
+        play(CheckedTurn{*input, w.turns[i].player});
       } catch (const IllegalAction& e) {
         why = "turns[" + std::to_string(i) + "] does not replay: " + e.what();
         return false;
       }
       hashes.push_back(snapshotHash(match_->snapshot()));
     }
-    lockstep_->adopt(w.turns, hashes);
     if (!hashes.empty() && hashes.back() != w.hashes.back()) {
       logger("net")->warn("the replayed rack differs from the host's: it will be healed");
     }
@@ -386,16 +373,15 @@ class OnlineRack {
 
   void startRack(const MatchSetup& setup) {
     match_ = std::make_unique<Match>(setup);
-    lockstep_ = std::make_unique<Lockstep>(o_.side, setup);
+    if (o_.side == Side::Host) driver_.newRack(setup);
     records_.clear();
     computer_.clear();
     next_script_turn_ = 0;
     partial_ = false;
-    const rules::Player seat = lockstep_->localSeat();
-    const Seat& mine = o_.script.players[seat == rules::Player::A ? 0 : 1];
+    const rules::Player seat = seatOf(o_.side);
     // A rejoin keeps the computer's stream of cueing errors where it was.
     if (planner_) return;
-    if (const auto level = computerLevel(mine)) {
+    if (const auto level = computerLevel(localPlayer())) {
       planner_ = std::make_unique<ai::Planner>(*level, plannerSeed(setup.seed, seat));
     }
   }
@@ -405,7 +391,7 @@ class OnlineRack {
     computer_.emplace_back();
     if (const auto level = computerLevel(turn.player)) {
       computer_.back() = io::ComputerTurn{*level, turn.input};
-    } else if (records_.back().shooter == lockstep_->localSeat()) {
+    } else if (records_.back().shooter == seatOf(o_.side)) {
       ++next_script_turn_;
     }
   }
@@ -419,25 +405,31 @@ class OnlineRack {
     return false;
   }
 
-  void playRack() {
-    while (true) {
-      try {
-        settle();
-        if (rackDone()) break;
-        if (lockstep_->localToMove(*match_)) {
-          playLocalTurn();
-        } else {
-          playPeerTurn();
-        }
-      } catch (const Dropped&) {
-        recover();
-      }
+  // With the last turn agreed: the rack is played, this side moves, or the peer's turn is
+  // awaited (no longer than turn_s). True when something was done.
+  bool step() {
+    if (!driver_.settled()) return false;
+    if (rackDone()) {
+      send(Bye{"the rack is played", true});
+      end(partial_ ? Outcome::Partial : Outcome::InStep, "the rack is played");
+      return true;
     }
-    send(Bye{"the rack is played", true});
-    end(partial_ ? Outcome::Partial : Outcome::InStep, "the rack is played");
+    if (driver_.localToMove(*match_)) {
+      playLocalTurn();
+      return true;
+    }
+    if (turn_deadline_ == 0.0) {
+      turn_deadline_ = seconds() + o_.turn_s;
+    } else if (seconds() > turn_deadline_) {
+      const std::string why = "no turn within " + std::to_string(static_cast<int>(o_.turn_s)) +
+                              " s: the rack is given up";
+      sayBye(why, false);
+      end(Outcome::LinkLost, "the other player played " + why);
+    }
+    return false;
   }
 
-  // Keeps the link alive (pings out, messages in for later) while this side thinks.
+  // Keeps the link alive (pings out, events in for later) while this side thinks.
   void keepAlive() {
     if (o_.quit && o_.quit->load()) return;  // the plan finishes first; then the rack ends
     poll();
@@ -460,21 +452,19 @@ class OnlineRack {
     const auto choice = localChoice();
     if (!choice) {
       send(Bye{"no turn left in the script", true});
-      end(Outcome::InStep, "this side's script has no turn left");
+      return end(Outcome::InStep, "this side's script has no turn left");
     }
     const Seat player = planner_ ? Seat{ComputerSeat{planner_->level()}} : Seat{HumanSeat{}};
     TurnMessage message;
-    const CheckedTurn turn = lockstep_->localTurn(*choice, player, message);
+    const CheckedTurn turn = driver_.localTurn(*choice, player, message);
     const std::size_t script_turn = next_script_turn_;
     try {
       play(turn);
     } catch (const IllegalAction& e) {
       const std::string why = planner_ ? std::string("the computer's turn was refused: ") + e.what()
                                        : "turns[" + std::to_string(script_turn) + "]: " + e.what();
-      send(Bye{"my turn was refused", false});
-      peer_->flush(0.5);
-      records_.pop_back();
-      end(Outcome::BadTurn, why);
+      sayBye("my turn was refused", false);
+      return end(Outcome::BadTurn, why);
     }
     if (o_.drop_before_turn && o_.drop_before_turn(message.index)) {
       peer_->closeLink("dropped by the test");
@@ -485,92 +475,28 @@ class OnlineRack {
 
   void afterTurn(const WireTurn& turn) {
     if (o_.after_turn) o_.after_turn(*match_, records_.size() - 1);
-    send(lockstep_->played(turn, match_->snapshot()));
+    driver_.played(turn, match_->snapshot());
   }
 
-  void playPeerTurn() {
-    turn_deadline_ = seconds() + o_.turn_s;
-    const Message m = nextOrDrop();
+  void playPeerTurn(const TurnReceived& t) {
     turn_deadline_ = 0.0;
-    const auto* t = std::get_if<TurnMessage>(&m);
-    if (!t) refusePeer("a message other than a turn when its turn was due");
-    std::string why;
-    const auto turn = lockstep_->peerTurn(*t, *match_, why);
-    if (!turn) refusePeer(why);
     try {
-      play(*turn);
+      play(t.turn);
     } catch (const IllegalAction& e) {
-      refusePeer(std::string("a turn the rules refuse (") + e.what() + ")");
+      return refusePeer(std::string("a turn the rules refuse (") + e.what() + ")");
     }
-    afterTurn(t->turn);
-  }
-
-  // Waits until both sides agree on the last turn, healing a difference.
-  void settle() {
-    while (!lockstep_->settled()) {
-      const Message m = nextOrDrop();
-      std::string why;
-      if (const auto* h = std::get_if<HashMessage>(&m)) {
-        const auto verdict = lockstep_->peerHash(*h, why);
-        if (!verdict) refusePeer(why);
-        onVerdict(*verdict, h->index);
-      } else if (const auto* s = std::get_if<StateMessage>(&m)) {
-        heal(*s);
-      } else {
-        refusePeer("a message other than a hash while the last turn was being checked");
-      }
-    }
-  }
-
-  void onVerdict(HashVerdict verdict, std::size_t index) {
-    if (verdict == HashVerdict::Mismatch && o_.side == Side::Host) {
-      if (allowance_.healsSpent(lockstep_->heals())) tooManyHeals(index);
-      logger("net")->warn("out of step after turn {}: sending this side's state whole", index);
-      const MatchSnapshot own = match_->snapshot();
-      send(lockstep_->healMessage(own));
-      match_->restore(own);
-    } else if (verdict == HashVerdict::Mismatch) {
-      logger("net")->warn("out of step after turn {}: waiting for the host's state", index);
-    } else if (verdict == HashVerdict::Unhealed) {
-      send(Bye{"out of step after turn " + std::to_string(index) + ", and the heal did not take",
-               false});
-      peer_->flush(0.5);
-      end(Outcome::OutOfStep, "the peers fell out of step after turn " + std::to_string(index) +
-                                  " and the host's state did not heal it");
-    }
-  }
-
-  [[noreturn]] void tooManyHeals(std::size_t index) {
-    const std::string why = "out of step after turn " + std::to_string(index) + ", healed " +
-                            std::to_string(lockstep_->heals()) + " times in this rack already";
-    send(Bye{why, false});
-    peer_->flush(0.5);
-    end(Outcome::OutOfStep, why);
-  }
-
-  void heal(const StateMessage& s) {
-    if (allowance_.healsSpent(lockstep_->heals())) tooManyHeals(s.index);
-    std::string why;
-    auto snapshot = lockstep_->healState(s, *match_, why);
-    if (!snapshot) refusePeer(why);
-    if (o_.on_heal) o_.on_heal(*snapshot);
-    match_->restore(*snapshot);
-    bool took = false;
-    send(lockstep_->healed(*snapshot, took));
-    logger("net")->warn("took the host's state after turn {}", s.index);
-    if (!took) {
-      peer_->flush(0.5);
-      end(Outcome::OutOfStep, "the peers fell out of step after turn " + std::to_string(s.index) +
-                                  " and the host's state did not heal it");
-    }
+    afterTurn(t.message.turn);
   }
 
   void describeRack() {
-    result_.heals = lockstep_->heals();
+    const Lockstep* l = driver_.lockstep();
+    result_.heals = driver_.heals();
     result_.doc = io::matchResultToJson(records_, match_->rack(), match_->balls(), computer_);
     result_.doc["partial"] = partial_;
     nlohmann::ordered_json hashes = nlohmann::ordered_json::array();
-    for (std::uint64_t h : lockstep_->hashes()) hashes.push_back(hashText(h));
+    if (l) {
+      for (std::uint64_t h : l->hashes()) hashes.push_back(hashText(h));
+    }
     result_.doc["hashes"] = hashes;
   }
 
@@ -579,11 +505,13 @@ class OnlineRack {
   std::unique_ptr<Peer> peer_;    // the link, the gate, the handshake's timing, the rejoin window
   std::deque<PeerEvent> events_;  // what the peer reported, not yet acted on
   std::string lost_;              // why the link was lost (the rejoin's reason)
-  std::string token_;             // the joiner: its seat token
-  RackAllowance allowance_;       // the heals and rejoins this rack may take
-  double turn_deadline_ = 0.0;    // the peer's turn must have come by then (0: not waiting)
+  std::string join_why_ = "nobody answered";  // the joiner: why no welcome came yet
+  std::string token_;                         // the joiner: its seat token
+  LockstepDriver driver_;       // the turns, the hashes, the heal and the rack's allowance
+  bool awaiting_ = true;        // no rack on the link yet: waiting for a (re)join
+  bool over_ = false;           // the rack is over for this side (the result says why)
+  double turn_deadline_ = 0.0;  // the peer's turn must have come by then (0: not waiting)
   std::unique_ptr<Match> match_;
-  std::unique_ptr<Lockstep> lockstep_;
   std::unique_ptr<ai::Planner> planner_;
   std::vector<TurnRecord> records_;
   std::vector<std::optional<io::ComputerTurn>> computer_;

@@ -51,7 +51,8 @@ std::unique_ptr<OnlinePlay> OnlinePlay::start(const OnlineConfig& config, std::s
   return play;
 }
 
-OnlinePlay::OnlinePlay(const OnlineConfig& config) : config_(config) {
+OnlinePlay::OnlinePlay(const OnlineConfig& config)
+    : config_(config), driver_(config.side, [this](const net::Message& m) { send(m); }) {
   peer_name_ = config_.side == net::Side::Host ? "Player 2" : "Player 1";
 }
 
@@ -94,7 +95,7 @@ void OnlinePlay::update(GameSession& session, double seconds) {
     finishTurns(*session_);
   }
   if (stage() == Stage::Playing && local_offer_ && peer_offer_ &&
-      session_->phase() == Phase::GameOver && lockstep_ && lockstep_->settled()) {
+      session_->phase() == Phase::GameOver && driver_.settled()) {
     rematch_now_ = true;
     session_->rematch();
     rematch_now_ = false;
@@ -123,7 +124,10 @@ void OnlinePlay::connectionStep(const GameSession& session) {
                    [&](net::PeerBadMessage& e) {
                      protocolError(peer_name_ + " sent a message this game refuses: " + e.why);
                    },
-                   [&](net::PeerLost& e) { why_ = e.reason; },
+                   [&](net::PeerLost& e) {
+                     why_ = e.reason;
+                     if (const auto ended = driver_.linkLost(e.reason)) onEnded(*ended);
+                   },
                    [&](net::PeerUnreachable& e) { why_ = e.why; },
                    [&](net::PeerTimedOut& e) { timedOut(e.what); },
                },
@@ -177,65 +181,87 @@ void OnlinePlay::protocolError(const std::string& reason) {
 
 // --- the messages ---
 
+// What the peer said, as the lockstep reads it (src/net): the messages themselves are the
+// driver's; the window acts on its events.
 void OnlinePlay::handle(GameSession& session, const net::Message& message) {
   // What arrived before a link dropped is still the rack's (a host that finished and left).
-  const bool playing = lockstep_ && (stage() == Stage::Playing || stage() == Stage::Lost);
-  auto outOfPlace = [&](const char* what) {
-    protocolError(peer_name_ + " sent " + what + " at the wrong time");
-  };
-  std::visit(Overloaded{
-                 [&](const net::Hello& m) {
-                   if (config_.side != net::Side::Host || !peer_->handshaking())
-                     return outOfPlace("a hello");
-                   onHello(session, m);
-                 },
-                 [&](const net::Welcome& m) {
-                   if (config_.side != net::Side::Joiner || !peer_->handshaking()) {
-                     return outOfPlace("a welcome");
-                   }
-                   onWelcome(session, m);
-                 },
-                 [&](const net::Refuse& m) {
-                   if (net::isBusyRefusal(m.reason)) return linkLost(m.reason);  // tried again
-                   end("The other side refused: " + m.reason, true);
-                 },
-                 [&](const net::TurnMessage& m) {
-                   if (!playing) return outOfPlace("a turn");
-                   onTurn(session, m);
-                 },
-                 [&](const net::HashMessage& m) {
-                   if (!playing) return outOfPlace("a state hash");
-                   onHash(session, m);
-                 },
-                 [&](const net::StateMessage& m) {
-                   if (!playing) return outOfPlace("a state");
-                   onState(session, m);
-                 },
-                 [&](const net::Aim& m) {
-                   if (!playing) return outOfPlace("an aim");
-                   if (!ourMove(session) && lockstep_ && lockstep_->settled())
-                     peer_aim_.heard(poseOf(m));
-                 },
-                 [&](const net::Rematch&) {
-                   if (!playing) return outOfPlace("a rematch");
-                   onRematch(session);
-                 },
-                 [&](const net::Bye& m) {
-                   // "Finished" is believed where the peer's rack can end: the rack is over,
-                   // or its script ran out at its move; anywhere else it is a quit.
-                   const bool can_end =
-                       session.match().rack().over() ||
-                       (lockstep_ && lockstep_->settled() &&
-                        session.match().rack().shooter() != net::seatOf(config_.side));
-                   if (m.finished && can_end) {
-                     peer_finished_ = true;
-                     end(peer_name_ + " has played out the rack.", false);
-                   } else {
-                     end(peer_name_ + " left the game (" + m.reason + ").", false);
-                   }
-                 },
-             },
-             message);
+  net::RackTable* table = started() ? this : nullptr;
+  for (const net::LockstepEvent& event : driver_.hear(message, table, peer_->handshaking())) {
+    if (stage() == Stage::Over) return;
+    onEvent(session, event);
+  }
+}
+
+void OnlinePlay::onEvent(GameSession& session, const net::LockstepEvent& event) {
+  std::visit(
+      Overloaded{
+          [&](const net::HelloHeard& e) { onHello(session, e.hello); },
+          [&](const net::WelcomeHeard& e) { onWelcome(session, e.welcome); },
+          [&](const net::RefuseHeard& e) {
+            if (e.busy) return linkLost(e.reason);  // tried again
+            end("The other side refused: " + e.reason, true);
+          },
+          [&](const net::TurnReceived& e) { onTurn(session, e); },
+          [&](const net::TurnAgreed&) { progress_at_ = now(); },
+          [&](const net::HealStarted& e) { onHealStarted(session, e.index); },
+          [&](const net::Healed& e) {
+            progress_at_ = now();
+            logger("online")->warn("healed: the table was set to the host's after turn {}",
+                                   e.index);
+            session.say("The two tables differed: this one was set to " + peer_name_ + "'s.",
+                        render::Tone::Warning);
+          },
+          [&](const net::AimHeard& e) {
+            if (!ourMove(session) && driver_.settled()) peer_aim_.heard(poseOf(e.aim));
+          },
+          [&](const net::RematchHeard&) { onRematch(session); },
+          [&](const net::ByeHeard& e) { onBye(e); },
+          [&](const net::PeerBroke& e) {
+            protocolError(peer_name_ + " sent " +
+                          (e.out_of_place ? e.why : e.what + " this game refuses: " + e.why));
+          },
+          [&](const net::LockstepEnded& e) { onEnded(e); },
+      },
+      event);
+}
+
+void OnlinePlay::onHealStarted(GameSession& session, std::size_t index) {
+  progress_at_ = now();
+  if (config_.side != net::Side::Host) return;  // the host's state is on its way
+  session.say("The two tables differed after turn " + std::to_string(index) + ": " + peer_name_ +
+                  "'s was set to this one.",
+              render::Tone::Warning);
+}
+
+void OnlinePlay::onEnded(const net::LockstepEnded& e) {
+  using Why = net::LockstepEnded::Why;
+  const std::string after = " after turn " + std::to_string(e.index);
+  switch (e.why) {
+    case Why::Unhealed:
+      return end(config_.side == net::Side::Host
+                     ? "Out of step with " + peer_name_ + after +
+                           ": the tables still differ after the heal."
+                     : "Out of step with " + peer_name_ + ": the host's state does not take here.",
+                 true);
+    case Why::HealsSpent:
+      return end("Out of step with " + peer_name_ + after + ": healed " + std::to_string(e.count) +
+                     " times in this rack already.",
+                 true);
+    case Why::RejoinsSpent:
+      return end(peer_name_ + " lost the link more than " + std::to_string(e.count) +
+                     " times in this rack: the game is over.",
+                 true);
+  }
+}
+
+// "Finished" is believed where the peer's rack can end (the lockstep judged it); anywhere
+// else it is a quit.
+void OnlinePlay::onBye(const net::ByeHeard& bye) {
+  if (bye.finished) {
+    peer_finished_ = true;
+    return end(peer_name_ + " has played out the rack.", false);
+  }
+  end(peer_name_ + " left the game (" + bye.reason + ").", false);
 }
 
 void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
@@ -252,33 +278,27 @@ void OnlinePlay::onHello(GameSession& session, const net::Hello& hello) {
   if (peer_name_ == config_.name) peer_name_ = net::cleanName(peer_name_ + " (B)");
   session.setSeatName(1, peer_name_);
   session.setSeatName(0, config_.name);
-  peer_player_ = hello.player;
-  if (!lockstep_) {
+  if (started()) {
+    // Back on a new link while the old one looked alive: that link counts as lost.
+    if (const auto ended = driver_.rejoinHeard()) {
+      peer_->refuseNewcomer("the game is over: " + peer_name_ + " lost the link too often");
+      return onEnded(*ended);
+    }
+  } else {
     session.setFixedSeats(true);
     if (session.bestOf() == 0) session.setBestOf(1);  // the race needs a length: one rack
     newRack(session);
   }
-  lockstep_->setPeerPlayer(hello.player);
   peer_->handshakeDone();
-  send(
-      net::welcomeFrom(config_.name, config_.match, race(session), *lockstep_, peer_->seatToken()));
-  if (!lockstep_->turns().empty() && !allowance_.takeRejoin()) {
-    send(net::Refuse{"rejoined more than " + std::to_string(allowance_.mostRejoins()) +
-                     " times in this rack"});
-    peer_->flush();
-    return end(peer_name_ + " rejoined more than " + std::to_string(allowance_.mostRejoins()) +
-                   " times in this rack: the game is over.",
-               true);
-  }
-  if (!lockstep_->turns().empty()) {
-    // A rejoin: both sides say where they stand before anything more is played.
-    lockstep_->rejoined();
-    if (const auto h = lockstep_->lastHash()) send(*h);
+  driver_.welcome(hello, session.rackSetup(), config_.name, config_.match, race(session),
+                  peer_->seatToken());
+  if (!driver_.lockstep()->turns().empty()) {
     session.say(peer_name_ + " is back: the rack goes on.");
   } else {
     session.say(peer_name_ + " joined. " + session.seatName(session.seatToMove()) + " breaks.");
   }
-  logger("online")->info("{} joined ({} turns so far)", peer_name_, lockstep_->turns().size());
+  logger("online")->info("{} joined ({} turns so far)", peer_name_,
+                         driver_.lockstep()->turns().size());
 }
 
 void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
@@ -336,15 +356,13 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
   session = std::move(fresh);
   replaced_ = true;
   installRelay(session);  // this side's next turn may be played in this very frame
-  lockstep_.emplace(config_.side, session.rackSetup());
-  lockstep_->adopt(welcome.turns, hashes);
   pending_.reset();
   local_offer_ = peer_offer_ = false;
   peer_aim_.reset();
   script_next_ = std::min(own_turns, config_.script.size());
   const bool rejoin = peer_->stage() == Stage::Lost;
   peer_->handshakeDone();
-  if (const auto h = lockstep_->lastHash()) send(*h);
+  driver_.welcomed(session.rackSetup(), welcome.turns, hashes);
   session.say(rejoin ? "Back with " + peer_name_ + ": the rack goes on."
                      : "Playing " + peer_name_ + " online. " +
                            session.seatName(session.seatToMove()) + " breaks.");
@@ -352,17 +370,15 @@ void OnlinePlay::onWelcome(GameSession& session, const net::Welcome& welcome) {
                          welcome.turns.size());
 }
 
-void OnlinePlay::onTurn(GameSession& session, const net::TurnMessage& message) {
-  std::string why;
-  const std::optional<net::CheckedTurn> turn = lockstep_->peerTurn(message, session.match(), why);
-  if (!turn) return protocolError(peer_name_ + " sent a turn this game refuses: " + why);
+void OnlinePlay::onTurn(GameSession& session, const net::TurnReceived& received) {
+  const net::CheckedTurn& turn = received.turn;
   playing_peer_turn_ = true;
   const std::size_t before = session.rackTurns().size();
   try {
-    if (turn->input.kind == TurnInput::Kind::Decision) {
-      session.decide(turn->input.shoot, turn->input.replace);
+    if (turn.input.kind == TurnInput::Kind::Decision) {
+      session.decide(turn.input.shoot, turn.input.replace);
     } else {
-      session.shoot(turn->input);
+      session.shoot(turn.input);
     }
   } catch (const std::exception& e) {
     // The rules refused it here (the turn was checked, so the tables differ): never a crash.
@@ -370,74 +386,14 @@ void OnlinePlay::onTurn(GameSession& session, const net::TurnMessage& message) {
   }
   playing_peer_turn_ = false;
   if (session.rackTurns().size() == before) {
-    end(peer_name_ + "'s turn " + std::to_string(message.index) + " could not be played here (" +
-            session.message() + "): out of step.",
+    end(peer_name_ + "'s turn " + std::to_string(received.message.index) +
+            " could not be played here (" + session.message() + "): out of step.",
         true);
     return;
   }
-  pending_ = message.turn;
+  pending_ = received.message.turn;
   peer_aim_.reset();
   peer_aiming_ = false;
-}
-
-void OnlinePlay::onHash(GameSession& session, const net::HashMessage& message) {
-  std::string why;
-  const std::optional<net::HashVerdict> verdict = lockstep_->peerHash(message, why);
-  if (!verdict) return protocolError(peer_name_ + " sent a hash this game refuses: " + why);
-  progress_at_ = now();
-  const std::string turn = "turn " + std::to_string(message.index + 1);
-  switch (*verdict) {
-    case net::HashVerdict::Waiting:
-    case net::HashVerdict::Agreed:
-      return;
-    case net::HashVerdict::Mismatch:
-      logger("online")->warn("the two tables differ after {}: the host's state is sent whole",
-                             turn);
-      if (allowance_.healsSpent(lockstep_->heals())) {
-        // Disagreeing, dropping and rejoining must not keep a host healing for ever.
-        send(net::Bye{"out of step after " + turn + ", healed " +
-                          std::to_string(lockstep_->heals()) + " times in this rack already",
-                      false});
-        return end("Out of step with " + peer_name_ + " after " + turn + ": healed " +
-                       std::to_string(lockstep_->heals()) + " times in this rack already.",
-                   true);
-      }
-      if (config_.side == net::Side::Host) {
-        const MatchSnapshot own = session.match().snapshot();
-        send(lockstep_->healMessage(own));
-        session.restoreMatch(own);
-        session.say(
-            "The two tables differed after " + turn + ": " + peer_name_ + "'s was set to this one.",
-            render::Tone::Warning);
-      }
-      return;
-    case net::HashVerdict::Unhealed:
-      end("Out of step with " + peer_name_ + " after " + turn +
-              ": the tables still differ after the heal.",
-          true);
-      return;
-  }
-}
-
-void OnlinePlay::onState(GameSession& session, const net::StateMessage& message) {
-  std::string why;
-  const std::optional<MatchSnapshot> state = lockstep_->healState(message, session.match(), why);
-  if (!state) return protocolError(peer_name_ + " sent a state this game refuses: " + why);
-  try {
-    session.restoreMatch(*state);
-  } catch (const std::exception& e) {
-    return protocolError(peer_name_ + " sent a state that does not restore: " + e.what());
-  }
-  bool took = false;
-  send(lockstep_->healed(session.match().snapshot(), took));
-  if (!took) {
-    end("Out of step with " + peer_name_ + ": the host's state does not take here.", true);
-    return;
-  }
-  logger("online")->warn("healed: the table was set to the host's after turn {}",
-                         message.index + 1);
-  session.say("The two tables differed: this one was set to " + peer_name_ + "'s.",
-              render::Tone::Warning);
 }
 
 void OnlinePlay::onRematch(GameSession& session) {
@@ -454,7 +410,7 @@ void OnlinePlay::installRelay(GameSession& session) {
     if (playing_peer_turn_) return turn;
     if (!session_ || !ourMove(*session_)) return std::nullopt;
     net::TurnMessage message;
-    const net::CheckedTurn checked = lockstep_->localTurn(turn, HumanSeat{}, message);
+    const net::CheckedTurn checked = driver_.localTurn(turn, HumanSeat{}, message);
     outgoing_ = message;
     return checked.input;
   };
@@ -480,9 +436,7 @@ void OnlinePlay::installRelay(GameSession& session) {
 }
 
 void OnlinePlay::newRack(GameSession& session) {
-  lockstep_.emplace(config_.side, session.rackSetup());
-  if (peer_player_) lockstep_->setPeerPlayer(*peer_player_);
-  allowance_.newRack();
+  driver_.newRack(session.rackSetup());
   pending_.reset();
   outgoing_.reset();
   local_offer_ = peer_offer_ = false;
@@ -493,10 +447,10 @@ void OnlinePlay::newRack(GameSession& session) {
 }
 
 void OnlinePlay::finishTurns(GameSession& session) {
-  if (!pending_ || !lockstep_ || session.phase() == Phase::Rolling) return;
-  if (session.rackTurns().size() <= lockstep_->turns().size()) return;
+  if (!pending_ || !started() || session.phase() == Phase::Rolling) return;
+  if (session.rackTurns().size() <= driver_.lockstep()->turns().size()) return;
   progress_at_ = now();
-  send(lockstep_->played(*pending_, session.match().snapshot()));
+  driver_.played(*pending_, session.match().snapshot());
   pending_.reset();
 }
 
@@ -553,7 +507,7 @@ void OnlinePlay::sendAim(const GameSession& session) {
 
 void OnlinePlay::showPeerAim(GameSession& session, double seconds) {
   peer_aiming_ = false;
-  if (stage() != Stage::Playing || !lockstep_ || ourMove(session) || !lockstep_->settled() ||
+  if (stage() != Stage::Playing || ourMove(session) || !driver_.settled() ||
       session.phase() != Phase::Aiming) {
     return;
   }
@@ -571,8 +525,8 @@ void OnlinePlay::showPeerAim(GameSession& session, double seconds) {
 }
 
 bool OnlinePlay::ourMove(const GameSession& session) const {
-  return stage() == Stage::Playing && lockstep_ && !pending_ && !outgoing_ &&
-         lockstep_->localToMove(session.match());
+  return stage() == Stage::Playing && !pending_ && !outgoing_ &&
+         driver_.localToMove(session.match());
 }
 
 net::Race OnlinePlay::race(const GameSession& session) const {

@@ -11,9 +11,9 @@
 #include "net/connection.hpp"
 #include "net/host_gate.hpp"
 #include "net/lockstep.hpp"
+#include "net/lockstep_driver.hpp"
 #include "net/peer.hpp"
 #include "net/protocol.hpp"
-#include "net/rack_allowance.hpp"
 #include "net/wire.hpp"
 #include "window/computer_player.hpp"
 #include "window/game_session.hpp"
@@ -22,7 +22,8 @@
 
 // A rack in the window against a player at another computer (issue 35): the host listens,
 // the joiner connects (and reconnects after a lost link), and every turn goes through the
-// lockstep (src/net) as `nineball online` plays it, so a window can play a headless peer.
+// lockstep (net::LockstepDriver) as `nineball online` plays it, so a window can play a
+// headless peer: the driver says what the peer's messages mean, this class what the player sees.
 // The session plays each turn with its usual animation; this side's input is blocked while the
 // other side has the move. SFML's network module only (through src/net); nothing is drawn here.
 namespace nineball::window {
@@ -59,7 +60,7 @@ struct OnlineConfig {
   const net::Clock* clock = &net::steadyClock();
 };
 
-class OnlinePlay : public RemoteControl {
+class OnlinePlay : public RemoteControl, private net::RackTable {
  public:
   /// Waiting, Handshake, Playing, Lost, Over (why()): the peer's.
   using Stage = net::Peer::Stage;
@@ -95,7 +96,7 @@ class OnlinePlay : public RemoteControl {
   /// Host: the line a friend types to join: "nineball --join ADDRESS:PORT --code CODE".
   std::string joinLine() const;
   /// True once the rack with this peer began (the handshake went through once).
-  bool started() const { return lockstep_.has_value(); }
+  bool started() const { return driver_.begun(); }
   /// Rematch offers so far (either side), for the HUD.
   bool rematchOffered() const { return local_offer_; }
 
@@ -107,6 +108,9 @@ class OnlinePlay : public RemoteControl {
 
  private:
   explicit OnlinePlay(const OnlineConfig& config);
+  // net::RackTable: the session's match
+  const Match& match() const override { return session_->match(); }
+  void restore(const MatchSnapshot& state) override { session_->restoreMatch(state); }
   double now() const;
   void installRelay(GameSession& session);
   void connectionStep(const GameSession& session);
@@ -117,11 +121,13 @@ class OnlinePlay : public RemoteControl {
   void protocolError(const std::string& reason);
   void send(const net::Message& message);
   void handle(GameSession& session, const net::Message& message);
+  void onEvent(GameSession& session, const net::LockstepEvent& event);
   void onHello(GameSession& session, const net::Hello& hello);
   void onWelcome(GameSession& session, const net::Welcome& welcome);
-  void onTurn(GameSession& session, const net::TurnMessage& turn);
-  void onHash(GameSession& session, const net::HashMessage& hash);
-  void onState(GameSession& session, const net::StateMessage& state);
+  void onTurn(GameSession& session, const net::TurnReceived& turn);
+  void onHealStarted(GameSession& session, std::size_t index);
+  void onEnded(const net::LockstepEnded& ended);
+  void onBye(const net::ByeHeard& bye);
   void onRematch(GameSession& session);
   void newRack(GameSession& session);
   void finishTurns(GameSession& session);
@@ -138,7 +144,7 @@ class OnlinePlay : public RemoteControl {
   bool failed_ = false;
   double progress_at_ = 0.0;        // the last turn or hash
   std::deque<net::Message> inbox_;  // messages held while a shot rolls
-  std::optional<net::Lockstep> lockstep_;
+  net::LockstepDriver driver_;      // the turns, the hashes, the heal and the rack's allowance
   std::optional<net::WireTurn> pending_;      // the turn rolling, as it went over the wire
   std::optional<net::TurnMessage> outgoing_;  // this side's turn, sent once it has begun
   GameSession* session_ = nullptr;            // the session driven (its relay is cleared)
@@ -151,13 +157,11 @@ class OnlinePlay : public RemoteControl {
   bool replaced_ = false;
   std::size_t script_next_ = 0;
   std::string peer_name_;
-  std::optional<Seat> peer_player_;  // host: who plays the joiner's seat, as its hello said
   AimSmoother peer_aim_;
   bool peer_aiming_ = false;
   double peer_power_ = 0.0;
   AimThrottle throttle_;
   std::size_t rack_turns_seen_ = 0;
-  net::RackAllowance allowance_;  // the heals (and, hosting, the rejoins) this rack may take
 };
 
 /// "m:ss" of a number of seconds (the rejoin's countdown).

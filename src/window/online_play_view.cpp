@@ -62,7 +62,7 @@ std::string OnlinePlay::banner(const GameSession& session) const {
 
 std::string OnlinePlay::status(const GameSession& session) const {
   if (stage() != Stage::Playing) return banner(session);
-  if (pending_ || (lockstep_ && !lockstep_->settled())) {
+  if (pending_ || (driver_.begun() && !driver_.settled())) {
     return "Waiting for " + peer_name_ + "'s table to agree...";
   }
   if (local_finished_) return "Your script is over: the rack ends here.";
@@ -74,7 +74,7 @@ std::string OnlinePlay::status(const GameSession& session) const {
 bool OnlinePlay::finished(const GameSession& session) const {
   if (session.phase() == Phase::Rolling || pending_ || !inbox_.empty()) return false;
   if (local_finished_ || peer_finished_) return true;
-  return lockstep_ && lockstep_->settled() && session.match().rack().over();
+  return driver_.settled() && session.match().rack().over();
 }
 
 }  // namespace nineball::window
