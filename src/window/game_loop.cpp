@@ -103,6 +103,10 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
       keep_rack_(driver_.person() && options.script.empty() &&
                  !(options.host_port || !options.join.empty())),
       input_(session_, ui_, seats_),
+      dialogs_(session_, ui_, seats_, input_.requests(),
+               {[this]() -> const render::ViewTransform& { return painter_->view(); },
+                [this](const sf::Event& event) { tableEvent(event); },
+                [this](sf::RenderTarget& target) { painter_->drawDialog(target, dialog_hud_); }}),
       online_start_(options.host_port || !options.join.empty()) {
   setup_status_ = setUp(start);
 }
@@ -391,6 +395,7 @@ int GameLoop::run() {
     if (waitWhileIdle(screens_.takeChanged() || changed)) continue;
     rolling_ = false;
     screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
+    followDialog();  // the frame's play may have ended the rack or called for a choice
     draw();
     int status = 0;
     const CaptureDriver::Next next =
@@ -424,8 +429,10 @@ bool GameLoop::handleEvents() {
     } else {
       screens_.event(event);
     }
-    // A screen done (a game chosen, the settings closed) leaves before the next event.
+    // A screen done (a game chosen, the settings closed) leaves before the next event, and
+    // the next event finds the dialog the table now calls for.
     if (screens_.removeFinished()) followTable();
+    followDialog();
   }
   return changed;
 }
@@ -479,8 +486,9 @@ void GameLoop::advanceTable(double dt, bool on_top) {
   updateOnline(dt);
   playWatchedTurn(dt);
   // The computer waits while the help, the quit question or the settings are open, as a player
-  // would.
-  if (!ui_.help && !ui_.confirm_quit && on_top && !session_.replaying()) {
+  // would; it plays on under the push-out choice and the rack's end (its choice to make).
+  const bool nothing_over = on_top || dialog_.onTop(screens_);
+  if (!ui_.help && !ui_.confirm_quit && nothing_over && !session_.replaying()) {
     seats_.update(session_, dt);
   }
   rolling_ = session_.phase() == Phase::Rolling;
@@ -522,6 +530,9 @@ void GameLoop::drawTable(sf::RenderTarget& target) {
       picture.hud.status = online_->banner(session_);
     }
   }
+  // The dialog is its own screen's to draw, over this picture (DialogScreen).
+  dialog_hud_ = picture.hud;
+  picture.hud.overlay = render::Overlay::None;
   painter_->draw(target, picture);
 }
 

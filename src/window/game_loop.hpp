@@ -21,7 +21,9 @@
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
 #include "window/online_play.hpp"
+#include "window/screens/dialog_screen.hpp"
 #include "window/screens/screen_stack.hpp"
+#include "window/screens/table_dialogs.hpp"
 #include "window/screens/table_screen.hpp"
 #include "window/seats/seats.hpp"
 #include "window/session_stats.hpp"
@@ -81,6 +83,8 @@ class GameLoop : private Table {
   void advanceTable(double seconds, bool on_top) override;
   void drawTable(sf::RenderTarget& target) override;
   bool tableBusy() const override;
+  // The dialog the table's state calls for, in its place over the table.
+  void followDialog() { dialog_.follow(screens_, dialogs_); }
   void zoomView(const render::Frame& picture);
   void takeRequestedScreenshot();
   void present(bool rolling);
@@ -114,11 +118,15 @@ class GameLoop : private Table {
   UiState ui_;
   std::optional<render::MenuPainter> menu_painter_;
   std::unique_ptr<audio::ImpactSounds> sounds_;
-  ScreenStack screens_;      // the table at the bottom; the start menu or the settings over it
+  // The table at the bottom; a dialog, the start menu or the settings over it.
+  ScreenStack screens_;
   bool rolling_ = false;     // the balls rolled as the frame's play began (its time is counted)
   bool demo_break_ = false;  // --frames on a table with no script: a break to watch
   bool demo_due_ = false;    // --frames' demo break and --replay wait for the start menu's game
   GameInput input_;
+  TableDialogs dialogs_;         // what the dialogs over the table ask of it
+  DialogSlot dialog_;            // the dialog over the table its state calls for
+  render::HudState dialog_hud_;  // the dialog as the table's picture of this frame has it
   FrameTimer moving_;
   sf::Clock frame_clock_;
   sf::Clock display_clock_;
