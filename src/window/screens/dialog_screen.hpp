@@ -13,7 +13,7 @@ namespace nineball::window {
 /// Which of a dialog's buttons lies under the pointer.
 enum class DialogButton { None, Left, Middle, Right };
 
-/// What a dialog over the table asks of it (GameLoop answers): which dialog the game's state
+/// What a dialog over the table asks of it (TableDialogs answers): which dialog the game's state
 /// calls for, where its buttons lie, the answers, and the table's own handling of every event
 /// (its window keys, the pointer and the held keys go on while a dialog is open).
 class DialogTable {
