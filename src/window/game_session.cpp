@@ -66,27 +66,8 @@ GameSession::~GameSession() = default;
 GameSession::GameSession(GameSession&&) noexcept = default;
 GameSession& GameSession::operator=(GameSession&&) noexcept = default;
 
-void GameSession::setSpeed(double mps) {
-  speed_ = std::clamp(mps, kMinSpeed, kMaxSpeed);
-}
-
-void GameSession::setPower(double fraction) {
-  setSpeed(kMinSpeed + std::clamp(fraction, 0.0, 1.0) * (kMaxSpeed - kMinSpeed));
-}
-
 double GameSession::maxTip() const {
   return std::min(kMaxTip, match_->world().physics().miscue_limit);
-}
-
-void GameSession::setTip(Vec2 tip) {
-  const double len = length(tip);
-  // A hair inside the limit: past it the physics calls the shot a miscue.
-  const double limit = maxTip() * (1.0 - 1e-12);
-  tip_ = len > limit ? tip * (limit / len) : tip;
-}
-
-void GameSession::setElevation(double radians) {
-  elevation_ = std::clamp(radians, 0.0, degToRad(kMaxElevationDeg));
 }
 
 bool GameSession::pushOutAvailable() const {
@@ -138,7 +119,7 @@ int GameSession::shooterBall() const {
 }
 
 Vec2 GameSession::cuePosition() const {
-  if (cueInHand() && cue_spot_) return *cue_spot_;
+  if (cueInHand() && cue_.spot()) return *cue_.spot();
   const int cue = shooterBall();
   for (const BallState& b : shot_.current) {
     if (b.id == cue) return b.pos;
@@ -159,21 +140,18 @@ std::optional<std::string> GameSession::placementProblem(Vec2 pos) const {
 
 bool GameSession::placeCue(Vec2 pos) {
   if (auto problem = placementProblem(pos)) {
-    say("The cue ball cannot go there: " + *problem + ".", render::Tone::Warning);
-    placement_refused_ = true;
+    message_.refusePlacement("The cue ball cannot go there: " + *problem + ".");
     return false;
   }
-  cue_spot_ = pos;
-  // A refusal is out of date once the ball stands somewhere it may.
-  if (placement_refused_) say("");
-  placement_refused_ = false;
+  cue_.setSpot(pos);
+  message_.placementTaken();
   return true;
 }
 
 AimGuide GameSession::aimGuide() const {
   const Engine& w = match_->world();
-  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(), heading_,
-                         shooterBall());
+  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(),
+                         cue_.heading(), shooterBall());
 }
 
 void GameSession::startRack() {
@@ -190,9 +168,8 @@ void GameSession::startRack() {
   const bool pool_break =
       match_->rack().isBreak() && gameDef(match_->rack().game()).family == GameFamily::Pool;
   const bool snooker = gameDef(match_->rack().game()).snookers;
-  speed_ = pool_break ? (snooker ? kBreakOffSpeed : kBreakSpeed) : speed_;
-  message_.clear();
-  tone_ = render::Tone::Info;
+  if (pool_break) cue_.setSpeed(snooker ? kBreakOffSpeed : kBreakSpeed);
+  message_.clearPlain();
   startTurn();
   logger("game")->info(
       "rack {}: {} breaks, rules {}, seed {} (--seed {} plays the game's racks again)",
@@ -204,9 +181,7 @@ void GameSession::startTurn() {
   shot_.current_time = shot_.previous_time = match_->world().time();
   phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
   push_out_ = false;
-  tip_ = {};
-  elevation_ = 0.0;
-  cue_spot_.reset();
+  cue_.newTurn();
   call_ball_.reset();
   call_pocket_.reset();
   if (match_->cueInHand()) {
@@ -214,7 +189,7 @@ void GameSession::startTurn() {
     for (const BallState& b : shot_.current) {
       if (b.id == kCueBall && !b.pocket) on_table = b.pos;
     }
-    cue_spot_ = on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot();
+    cue_.setSpot(on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot());
   }
   aimAtBallOn();
 }
@@ -245,13 +220,13 @@ void GameSession::aimAtBallOn() {
   // Snooker has many balls on, and the lowest-numbered red often stands behind the pink.
   if (gameDef(match_->rack().game()).snookers) {
     if (const auto heading = clearHeadingToBallOn(cue)) {
-      heading_ = *heading;
+      cue_.setHeading(*heading);
       return;
     }
   }
   for (const BallState& b : shot_.current) {
     if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
-      heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
+      cue_.setHeading(std::atan2(b.pos.y - cue.y, b.pos.x - cue.x));
     }
   }
 }
@@ -292,10 +267,10 @@ bool GameSession::shoot() {
   if (phase_ != Phase::Aiming) return false;
   TurnInput turn;
   turn.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
-  turn.shot.heading_rad = heading_;
-  turn.shot.speed = speed_;
-  turn.shot.tip = tip_;
-  turn.shot.elevation_rad = elevation_;
+  turn.shot.heading_rad = cue_.heading();
+  turn.shot.speed = cue_.speed();
+  turn.shot.tip = cue_.tip();
+  turn.shot.elevation_rad = cue_.elevation();
   if (turn.kind == TurnInput::Kind::Shot) turn.call = call();
   return shoot(turn);
 }
@@ -323,7 +298,7 @@ bool GameSession::shoot(const TurnInput& given) {
     return false;
   }
   if (match_->cueInHand()) {
-    if (!turn.cue) turn.cue = cue_spot_;
+    if (!turn.cue) turn.cue = cue_.spot();
   } else {
     turn.cue.reset();
   }
@@ -345,12 +320,9 @@ bool GameSession::shoot(const TurnInput& given) {
   if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
   rack_turns_.push_back(turn);
   if (!practice_) match_turns_.push_back(turn);
-  heading_ = turn.shot.heading_rad;
-  setSpeed(turn.shot.speed);
-  tip_ = turn.shot.tip;
-  elevation_ = turn.shot.elevation_rad;
+  cue_.take(turn.shot.heading_rad, turn.shot.speed, turn.shot.tip, turn.shot.elevation_rad);
   push_out_ = turn.kind == TurnInput::Kind::PushOut;
-  if (turn.cue) cue_spot_ = turn.cue;
+  if (turn.cue) cue_.setSpot(turn.cue);
   logger("game")->info(
       "{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}], elevation {:.0f} deg{}",
       seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed, turn.shot.tip.x,
@@ -425,7 +397,7 @@ void GameSession::finishShot() {
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   if (observer_) observer_(seatOf(record.shooter), record, breaking_);
-  if (breaking_) speed_ = kShotSpeed;
+  if (breaking_) cue_.setSpeed(kShotSpeed);
   breaking_ = false;
   for (int b : record.verdict.pocketed) {
     const auto& spot = record.verdict.to_spot;
@@ -521,10 +493,10 @@ std::vector<BallState> GameSession::ballsToDraw() const {
   if (replay_) return replay_->balls();
   if (phase_ == Phase::Rolling) return shot_.between(clock_.alpha());
   std::vector<BallState> out = shot_.current;
-  if (cueInHand() && cue_spot_) {
+  if (cueInHand() && cue_.spot()) {
     for (BallState& b : out) {
       if (b.id == kCueBall) {
-        b.pos = *cue_spot_;
+        b.pos = *cue_.spot();
         b.pocket.reset();
       }
     }
@@ -540,7 +512,7 @@ double GameSession::drawTime() const {
 
 std::optional<GameSession::Strike> GameSession::strike() const {
   if (phase_ != Phase::Rolling || replay_) return std::nullopt;
-  return Strike{strike_from_, heading_, power(), drawTime() - shot_.start};
+  return Strike{strike_from_, cue_.heading(), power(), drawTime() - shot_.start};
 }
 
 std::string GameSession::status() const {
@@ -627,9 +599,7 @@ std::string GameSession::status() const {
 }
 
 void GameSession::say(const std::string& text, render::Tone tone) {
-  message_ = text;
-  tone_ = tone;
-  placement_refused_ = false;
+  message_.say(text, tone);
 }
 
 }  // namespace nineball::window

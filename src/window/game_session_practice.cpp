@@ -55,10 +55,7 @@ void GameSession::toggleBall(int id, Vec2 near) {
 
 void GameSession::restorePracticeShot(const PracticeShot& shot) {
   rebuildPractice();
-  heading_ = shot.heading;
-  setSpeed(shot.speed);
-  tip_ = shot.tip;
-  elevation_ = shot.elevation;
+  cue_.take(shot.heading, shot.speed, shot.tip, shot.elevation);
 }
 
 void GameSession::undoShot() {
