@@ -16,8 +16,7 @@
 #include "window/menu_choice.hpp"
 #include "window/practice_table.hpp"
 #include "window/session_message.hpp"
-#include "window/shot_replay.hpp"
-#include "window/shot_steps.hpp"
+#include "window/shot_playback.hpp"
 
 namespace nineball::window {
 
@@ -224,7 +223,7 @@ class GameSession {
   /// Replays the rack's last shot from the physics, at normal speed or a quarter of it.
   void startReplay(bool slow);
   void stopReplay();
-  bool replaying() const { return replay_ != nullptr; }
+  bool replaying() const { return playback_.replaying(); }
   /// The setup this rack began from (its seed and layout).
   const MatchSetup& rackSetup() const { return rack_setup_; }
 
@@ -233,8 +232,8 @@ class GameSession {
   std::vector<audio::Impact> advance(double frame_seconds);
   /// Fast-forward: the physics runs `rate` times as fast, in the same steps (more of them a
   /// frame), so the shot ends exactly as at normal speed. 1 is normal.
-  void setPlayRate(double rate) { play_rate_ = rate; }
-  double playRate() const { return play_rate_; }
+  void setPlayRate(double rate) { playback_.setPlayRate(rate); }
+  double playRate() const { return playback_.playRate(); }
   /// The balls where the frame should draw them: between the last two steps while rolling,
   /// the cue ball at its spot in hand otherwise.
   std::vector<BallState> ballsToDraw() const;
@@ -281,7 +280,6 @@ class GameSession {
   std::unique_ptr<Match> match_;
   std::vector<TurnInput> rack_turns_;
   std::vector<TurnInput> match_turns_;
-  std::unique_ptr<ShotReplay> replay_;
   std::unique_ptr<PracticeTable> practice_;
   Phase phase_ = Phase::Aiming;
   std::string names_[2] = {"Player 1", "Player 2"};
@@ -301,16 +299,10 @@ class GameSession {
   std::optional<PocketId> call_pocket_;  // the pocket called
   rules::Groups groups_at_shot_;         // the groups before the turn (its message)
   bool breaking_ = false;                // the shot rolling is the break
-  double play_rate_ = 1.0;
-  std::optional<audio::Impact> strike_;  // the cue's strike, heard with the next frame
-  Vec2 strike_from_;          // where the cue ball stood when the rolling shot was struck
-  int shot_ball_ = kCueBall;  // the ball the rolling shot was struck on
-  std::string last_count_;    // carom: the last shot's cushions and point, shown after it
-  FixedStepClock clock_;
-  ShotSteps shot_;
+  std::string last_count_;  // carom: the last shot's cushions and point, shown after it
+  ShotPlayback playback_;   // the shot rolling, its steps, its replay
   std::vector<int> pocketed_;
-  double after_rest_ = 0.0;  // s the picture's clock ran on since the balls stopped
-  SessionMessage message_;   // the HUD's message line
+  SessionMessage message_;  // the HUD's message line
   TurnObserver observer_;
   TurnRelay relay_;
   bool fixed_seats_ = false;
