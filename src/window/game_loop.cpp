@@ -392,7 +392,7 @@ int GameLoop::run() {
     if (next == CaptureDriver::Next::Fail) return status;
     if (next == CaptureDriver::Next::Finish) break;
     takeRequestedScreenshot();
-    present(table_.rolledThisFrame());
+    present(table_.takeRolled());
     if (driver_.benchmarkDone(frame_)) break;
     answerRequests();
     capFrameRate();

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
 #include <vector>
 
 #include "audio/impact_sounds.hpp"
@@ -74,8 +75,9 @@ class TableScreen : public Screen {
   void watch(std::vector<TurnInput> turns) { watched_ = std::move(turns); }
   /// The --script's setup, which F5's save keeps.
   void setScriptSetup(nlohmann::json setup) { script_setup_ = std::move(setup); }
-  /// The balls rolled as the last frame's play began (its time counts in the frame rate).
-  bool rolledThisFrame() const { return rolling_; }
+  /// True once after a frame whose play began with the balls rolling (its time counts in the
+  /// frame rate); false for a frame the table did not play (the menu over it).
+  bool takeRolled() { return std::exchange(rolling_, false); }
   /// The painter (and the pointer) on the session's table, whatever changed it.
   void followTable();
   /// The dialog the table's state calls for, in its place over the table.

@@ -107,5 +107,14 @@ TEST(TableScreen, EscWithARackInPlayAsksAndTheQuestionAnswersN) {
   EXPECT_FALSE(t.table->input().requests().quit);
 }
 
+TEST(TableScreen, AFrameCountsAsRollingOnceAndOnlyWhenTheTablePlayedIt) {
+  TableOnStack t;
+  ASSERT_TRUE(t.table->session().shoot());
+  t.table->update(1.0 / 60.0, true);
+  EXPECT_TRUE(t.table->takeRolled());
+  // The next frame the menu covers the table, which does not play: not a rolling frame.
+  EXPECT_FALSE(t.table->takeRolled());
+}
+
 }  // namespace
 }  // namespace nineball::window
