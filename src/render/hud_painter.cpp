@@ -369,4 +369,11 @@ void HudPainter::draw(sf::RenderTarget& target, const ViewTransform& view, const
   if (hud.overlay != Overlay::None) drawOverlay(target, hud, layout);
 }
 
+void HudPainter::drawDialog(sf::RenderTarget& target, const ViewTransform& view,
+                            const HudState& hud) {
+  if (hud.overlay == Overlay::None) return;
+  drawOverlay(target, hud,
+              HudLayout::of(view, hud.overlay, hud.keep_clear, !hud.button_middle.empty()));
+}
+
 }  // namespace nineball::render

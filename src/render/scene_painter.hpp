@@ -82,6 +82,11 @@ class ScenePainter {
   const ViewTransform& view() const { return zoomed_; }
 
   void draw(sf::RenderTarget& target, const Frame& frame);
+  /// The dialog `hud` names (its overlay), over the picture draw() drew last: a dialog screen
+  /// draws itself so over the table. Its texts join hudTexts().
+  void drawDialog(sf::RenderTarget& target, const HudState& hud) {
+    hud_painter_.drawDialog(target, view_, hud);
+  }
   /// Every line of text the last frame's HUD drew.
   const std::vector<DrawnText>& hudTexts() const { return hud_painter_.drawnTexts(); }
 

@@ -148,15 +148,10 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     if (key.code != Key::F1 && key.code != Key::F12) session_.stopReplay();
     return;
   }
-  if (overlay == Overlay::ConfirmQuit) {
-    if (key.code == Key::Y || key.code == Key::Enter) leave();
-    if (key.code == Key::N || key.code == Key::Escape) ui_.confirm_quit = false;
-    return;
-  }
+  // The help and the quit question answer their own keys (their screens); the game waits.
+  if (overlay == Overlay::ConfirmQuit || overlay == Overlay::Help) return;
   if (key.code == Key::Escape) {
-    if (ui_.help) {
-      ui_.help = false;
-    } else if (ui_.drag == Drag::Power) {
+    if (ui_.drag == Drag::Power) {
       session_.setSpeed(ui_.speed_before_drag);
       ui_.drag = Drag::None;
       ui_.pull = 0.0;
@@ -168,10 +163,9 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     return;
   }
   if (key.code == Key::H) {
-    ui_.help = !ui_.help;
+    ui_.help = true;
     return;
   }
-  if (overlay == Overlay::Help) return;
   if (key.code == Key::O) {
     switchOpponent();
     return;
@@ -184,21 +178,13 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     requests_.cycle_guide = true;
     return;
   }
-  if (key.code == Key::V && overlay != Overlay::ConfirmQuit && ui_.drag == Drag::None) {
+  if (key.code == Key::V && ui_.drag == Drag::None) {
     session_.startReplay(key.shift);
     return;
   }
   if (seats_.controls(session_)) return;
-  if (overlay == Overlay::PushOutChoice) {
-    if (key.code == Key::S) session_.decide(true);
-    if (key.code == Key::P) session_.decide(false);
-    if (key.code == Key::R) session_.decide(false, true);
-    return;
-  }
-  if (overlay == Overlay::GameOver) {
-    if (key.code == Key::R || key.code == Key::Enter) session_.rematch();
-    return;
-  }
+  // The push-out choice and the rack's end answer their own keys (their screens).
+  if (overlay != Overlay::None) return;
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   if (session_.practice() && practiceKey(key)) return;
   switch (key.code) {
@@ -369,59 +355,14 @@ void GameInput::setTipFromIcon(Vec2 px, const render::ViewTransform& view) {
   session_.setTip({d.x, -d.y});
 }
 
-void GameInput::leave() {
-  if (ui_.leave_to_menu) {
-    requests_.menu = true;
-  } else {
-    requests_.quit = true;
-  }
-  ui_.confirm_quit = false;
-}
-
-void GameInput::clickButton(bool left) {
-  switch (activeOverlay(session_, ui_)) {
-    case Overlay::ConfirmQuit:
-      if (left) {
-        leave();
-      } else {
-        ui_.confirm_quit = false;
-      }
-      break;
-    case Overlay::Help:
-      if (!left) ui_.help = false;
-      break;
-    case Overlay::PushOutChoice:
-      session_.decide(left);
-      break;
-    case Overlay::GameOver:
-      if (left) {
-        session_.rematch();
-      } else {
-        requests_.quit = true;
-      }
-      break;
-    case Overlay::None:
-      break;
-  }
-}
-
 void GameInput::mousePressed(Vec2 px, const render::ViewTransform& view) {
   if (session_.replaying()) {
     session_.stopReplay();
     return;
   }
-  const Overlay overlay = activeOverlay(session_, ui_);
+  // A dialog's buttons are its screen's to answer (DialogScreen).
+  if (dialogOpen()) return;
   const bool computer_turn = seats_.controls(session_);
-  if (computer_turn && overlay == Overlay::PushOutChoice) return;
-  if (overlay != Overlay::None) {
-    const bool replace = replaceOffered(session_, ui_);
-    const render::HudLayout layout =
-        render::HudLayout::of(view, overlay, dialogKeepClear(session_), replace);
-    if (inside(layout.button_left, px)) clickButton(true);
-    if (inside(layout.button_right, px)) clickButton(false);
-    if (replace && inside(layout.button_middle, px)) session_.decide(false, true);
-    return;
-  }
   if (session_.phase() != Phase::Aiming || computer_turn) return;
   const render::HudLayout layout = render::HudLayout::of(view);
   if (length(px - layout.spin_centre) <= layout.spin_radius * 1.1) {

@@ -23,7 +23,9 @@ struct WindowRequests {
 
 /// Turns mouse and keyboard into play: the pointer aims, a drag back sets the power and the
 /// release strikes; the paper's keys (arrows, Space, T/B, H) and the rest of the scheme. While
-/// the computer has the turn only the window's keys work (Esc, H, F1, F12, O).
+/// the computer has the turn only the window's keys work (Esc, H, F1, F12, O). Esc and H open
+/// the quit question and the help; the dialogs answer their own keys and buttons
+/// (screens/dialog_screen.hpp): under one, only the window's keys and the pointer work here.
 class GameInput {
  public:
   GameInput(GameSession& session, UiState& ui, Seats& seats)
@@ -45,13 +47,10 @@ class GameInput {
   bool mayAim() const;
   /// Keeps the last aim held still for a moment: the one a click on a pocket keeps.
   void followSettledAim(double seconds);
-  /// Leaves the game as the quit dialog's Yes does: to the menu when there is one.
-  void leave();
   void mousePressed(Vec2 px, const render::ViewTransform& view);
   void mouseMoved(Vec2 px, const render::ViewTransform& view);
   void mouseReleased();
   void setTipFromIcon(Vec2 px, const render::ViewTransform& view);
-  void clickButton(bool left);
   void moveCueBy(Vec2 d);
   bool dialogOpen() const;
   void switchOpponent();

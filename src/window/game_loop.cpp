@@ -81,19 +81,10 @@ void logFrameRate(const FrameTimer& moving, long frames) {
       1.0 / moving.quantile(0.95));
 }
 
-bool keyPressed(const sf::Event& event, sf::Keyboard::Key key) {
-  return event.type == sf::Event::KeyPressed && event.key.code == key;
-}
-
 }  // namespace
 
 GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err)
     : err_(err),
-      session_(start.setup, options.practice),
-      count_([this](int seat, const TurnRecord& record, bool was_break) {
-        stats_.record(seat, record, was_break);
-      }),
-      seats_(start.setup.seed),
       options_(options),
       driver_(CaptureDriver::fromProcess(options)),
       // The start menu, the settings file and the saved rack belong to a game a person starts;
@@ -102,22 +93,30 @@ GameLoop::GameLoop(const app::GameOptions& options, const GameStart& start, std:
                  (options.menu || (driver_.person() && options.script.empty()))),
       keep_rack_(driver_.person() && options.script.empty() &&
                  !(options.host_port || !options.join.empty())),
-      input_(session_, ui_, seats_),
-      online_start_(options.host_port || !options.join.empty()) {
+      online_start_(options.host_port || !options.join.empty()),
+      table_(makeTable(start)) {
   setup_status_ = setUp(start);
 }
 
+TableScreen& GameLoop::makeTable(const GameStart& start) {
+  auto table = std::make_unique<TableScreen>(start.setup, options_.practice, keep_rack_,
+                                             options_.mute, static_cast<TableWindow&>(*this));
+  TableScreen& kept = *table;
+  screens_.push(std::move(table));
+  return kept;
+}
+
 std::optional<int> GameLoop::setUp(const GameStart& start) {
-  session_.setTurnObserver(count_);
-  script_setup_ = start.script_setup;
+  GameSession& session = table_.session();
+  table_.setScriptSetup(start.script_setup);
   if (start.race.race_to > 0) {
-    session_.setBestOf(2 * start.race.race_to - 1);
-    session_.setBreaks(start.race.breaks);
+    session.setBestOf(2 * start.race.race_to - 1);
+    session.setBreaks(start.race.breaks);
   }
-  ui_.leave_to_menu = show_menu_;
-  ui_.rack_kept = keep_rack_;
+  table_.ui().leave_to_menu = show_menu_;
+  table_.ui().rack_kept = keep_rack_;
   if (!options_.practice) {
-    seats_.setOpponent(session_, seatFromName(options_.opponent).value_or(HumanSeat{}));
+    table_.seats().setOpponent(session, seatFromName(options_.opponent).value_or(HumanSeat{}));
   }
   if (!online_start_) {
     if (const auto status = playScript(start)) return status;
@@ -130,7 +129,6 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
     if (const auto status = startOnline(start)) return status;
   }
   openGameWindow();
-  screens_.push(std::make_unique<TableScreen>(static_cast<Table&>(*this)));
   if (const auto status = startMenu()) return status;
   prepareFrames(start);
   return std::nullopt;
@@ -139,12 +137,12 @@ std::optional<int> GameLoop::setUp(const GameStart& start) {
 std::optional<int> GameLoop::playScript(const GameStart& start) {
   if (options_.watch) {
     // Played on screen as the frames go (playWatchedTurn), not before the first one.
-    watched_ = start.turns;
+    table_.watch(start.turns);
     return std::nullopt;
   }
   for (std::size_t i = 0; i < start.turns.size(); ++i) {
     try {
-      session_.playTurn(start.turns[i]);
+      table_.session().playTurn(start.turns[i]);
     } catch (const IllegalAction& e) {
       err_ << "nineball: " << start.script_name << ": turns[" << i << "]: " << e.what() << '\n';
       return 2;
@@ -182,7 +180,7 @@ void GameLoop::openGameWindow() {
   fullscreen_ = options_.fullscreen && !driver_.picture();
   window_.emplace();
   openWindow(*window_, fullscreen_, options_.width, options_.height, driver_.person());
-  painter_.emplace(session_.match().world().table(), *fonts_);
+  painter_.emplace(table_.session().match().world().table(), *fonts_);
   painter_->resize(window_->getSize().x, window_->getSize().y);
   menu_painter_.emplace(*fonts_);
 }
@@ -192,7 +190,7 @@ StartMenuContext GameLoop::menuContext() {
   return {*window_,
           *painter_,
           *menu_painter_,
-          [this] { return buildFrame(session_, ui_, seats_); },
+          [this] { return buildFrame(table_.session(), table_.ui(), table_.seats()); },
           options_.mute,
           drawsFreshSeeds(options_),
           {}};
@@ -215,18 +213,21 @@ std::optional<int> GameLoop::startMenu() {
   // A picture run's choice, made before the first frame.
   menu.typed = *typed;
   MenuModel::Outcome outcome = MenuModel::Outcome::None;
-  if (!chooseByTypedKeys(menu, session_, seats_, settings_, count_, &outcome)) return 0;
+  if (!chooseByTypedKeys(menu, table_.session(), table_.seats(), settings_, table_.turnCounter(),
+                         &outcome)) {
+    return 0;
+  }
   startOnlineFromMenu(outcome);
-  followTable();
+  table_.followTable();
   return std::nullopt;
 }
 
 // The start menu over the table, on the one event loop; menuClosed() once the player chose.
 void GameLoop::showStartMenu() {
   screens_.push(std::make_unique<StartMenuScreen>(
-      menuContext(), session_, seats_, settings_, count_,
+      menuContext(), table_.session(), table_.seats(), settings_, table_.turnCounter(),
       [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); },
-      [this](const sf::Event& event) { input_.handle(event, painter_->view()); }));
+      [this](const sf::Event& event) { table_.input().handle(event, painter_->view()); }));
 }
 
 void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {
@@ -235,7 +236,7 @@ void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {
     return;
   }
   startOnlineFromMenu(outcome);
-  followTable();
+  table_.followTable();
   applySound();
   if (demo_due_) {
     demo_due_ = false;
@@ -253,8 +254,8 @@ void GameLoop::openSettings() {
     settings_ = settings;
     applySound();
   };
-  hooks.let_go = [this](const sf::Event& event) { input_.handle(event, painter_->view()); };
-  hooks.screenshot = [this] { input_.requests().screenshot = true; };
+  hooks.let_go = [this](const sf::Event& event) { table_.input().handle(event, painter_->view()); };
+  hooks.screenshot = [this] { table_.input().requests().screenshot = true; };
   hooks.closed = [this] { saveSettingsNow(); };
   screens_.push(std::make_unique<SettingsScreen>(settings_, options_.mute, *window_, *menu_painter_,
                                                  std::move(hooks)));
@@ -291,13 +292,15 @@ bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
   // The default name on both sides would show both players as "Player 1".
   if (config.side == net::Side::Joiner && config.name == "Player 1") config.name = "Player 2";
   if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
-  online_ = OnlinePlay::start(config, why);
-  if (!online_) return false;
-  seats_.setOpponent(session_, HumanSeat{});
+  std::unique_ptr<OnlinePlay> online = OnlinePlay::start(config, why);
+  if (!online) return false;
+  GameSession& session = table_.session();
+  table_.seats().setOpponent(session, HumanSeat{});
   const int own = config.side == net::Side::Host ? 0 : 1;
-  seats_.setRemote(1 - own, *online_);
-  session_.setSeatName(own, config.name);
-  session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
+  table_.seats().setRemote(1 - own, *online);
+  table_.setOnline(std::move(online));
+  session.setSeatName(own, config.name);
+  session.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
   return true;
 }
 
@@ -309,7 +312,7 @@ void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
   if (outcome == MenuModel::Outcome::Host) {
     config.side = net::Side::Host;
     config.address.port = net::kDefaultPort;
-    config.match = onlineMatchOf(session_.setup());
+    config.match = onlineMatchOf(table_.session().setup());
   } else {
     config.side = net::Side::Joiner;
     config.address = net::parseAddress(settings_.join_address, why).value_or(net::Address{});
@@ -318,29 +321,19 @@ void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
   // The name typed on the menu's main screen (seat 1), as a game at this computer uses it.
   config.name = settings_.last.names[0];
   if (!beginOnline(config, why)) {
-    session_.say("Cannot host: " + why + ". Playing at this computer instead.",
-                 render::Tone::Warning);
-  }
-}
-
-// One frame of the online game; a joiner's session is the host's match once welcomed.
-void GameLoop::updateOnline(double dt) {
-  if (!online_) return;
-  online_->update(session_, dt);
-  if (online_->sessionReplaced()) {
-    session_.setTurnObserver(count_);
-    stats_ = SessionStats{};
-    followTable();
+    table_.session().say("Cannot host: " + why + ". Playing at this computer instead.",
+                         render::Tone::Warning);
   }
 }
 
 // How the online game stands, for a picture run's end: done once this side is done with the
 // rack (or the game ended).
-std::optional<CaptureDriver::OnlineEnd> GameLoop::onlineEnd() const {
-  if (!online_) return std::nullopt;
+std::optional<CaptureDriver::OnlineEnd> GameLoop::onlineEnd() {
+  OnlinePlay* online = table_.online();
+  if (!online) return std::nullopt;
   CaptureDriver::OnlineEnd end;
-  end.done = online_->finished(session_) || online_->stage() == OnlinePlay::Stage::Over;
-  if (online_->failed()) end.failure = online_->why();
+  end.done = online->finished(table_.session()) || online->stage() == OnlinePlay::Stage::Over;
+  if (online->failed()) end.failure = online->why();
   return end;
 }
 
@@ -348,8 +341,8 @@ void GameLoop::prepareFrames(const GameStart& start) {
   sounds_ = options_.mute ? nullptr : audio::ImpactSounds::open();
   applySound();
   // A picture taken after N fixed frames must not depend on how fast the planner was.
-  seats_.computer().setWaitForPlans(driver_.picture());
-  demo_break_ = driver_.breaksForDemo() && start.turns.empty() && !online_;
+  table_.seats().computer().setWaitForPlans(driver_.picture());
+  demo_break_ = driver_.breaksForDemo() && start.turns.empty() && !table_.online();
   // Under a start menu, the game the frames show is the one chosen there.
   if (screens_.size() > 1) {
     demo_due_ = true;
@@ -366,8 +359,8 @@ void GameLoop::prepareFrames(const GameStart& start) {
 
 // --frames' demo break, --replay's shot again: the first frames' play.
 void GameLoop::beginFrames() {
-  if (demo_break_) session_.shoot();
-  if (options_.replay) session_.startReplay(false);
+  if (demo_break_) table_.session().shoot();
+  if (options_.replay) table_.session().startReplay(false);
 }
 
 void GameLoop::applySound() {
@@ -389,8 +382,9 @@ int GameLoop::run() {
     if (!window_->isOpen()) break;
     // A screen that came or went (the menu opened by Esc) is drawn at once.
     if (waitWhileIdle(screens_.takeChanged() || changed)) continue;
-    rolling_ = false;
     screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
+    // The frame's play may have ended the rack or called for a choice.
+    table_.followDialog();
     draw();
     int status = 0;
     const CaptureDriver::Next next =
@@ -398,7 +392,7 @@ int GameLoop::run() {
     if (next == CaptureDriver::Next::Fail) return status;
     if (next == CaptureDriver::Next::Finish) break;
     takeRequestedScreenshot();
-    present(rolling_);
+    present(table_.takeRolled());
     if (driver_.benchmarkDone(frame_)) break;
     answerRequests();
     capFrameRate();
@@ -409,7 +403,7 @@ int GameLoop::run() {
 // True when anything came (or on the first frame): the picture must be drawn again.
 bool GameLoop::handleEvents() {
   // The pointer maps to the table the session plays on, whatever changed it since the last frame.
-  followTable();
+  table_.followTable();
   sf::Event event;
   bool changed = frame_ == 0;
   while (window_->pollEvent(event)) {
@@ -424,33 +418,12 @@ bool GameLoop::handleEvents() {
     } else {
       screens_.event(event);
     }
-    // A screen done (a game chosen, the settings closed) leaves before the next event.
-    if (screens_.removeFinished()) followTable();
+    // A screen done (a game chosen, the settings closed) leaves before the next event, and
+    // the next event finds the dialog the table now calls for.
+    if (screens_.removeFinished()) table_.followTable();
+    table_.followDialog();
   }
   return changed;
-}
-
-void GameLoop::tableEvent(const sf::Event& event) {
-  if (keyPressed(event, sf::Keyboard::F2) && ui_.drag == Drag::None) {
-    openSettings();
-  } else if (keyPressed(event, sf::Keyboard::O) && online_) {
-    session_.say("Online, the other seat is " + online_->peerName() + "'s.");
-  } else if (keyPressed(event, sf::Keyboard::M) && options_.mute) {
-    session_.say("No sound this run: the game was started with --mute.");
-  } else if (keyPressed(event, sf::Keyboard::M)) {
-    settings_.muted = !settings_.muted;
-    applySound();
-    saveSettingsNow();
-    session_.say(settings_.muted ? "Sound off (M turns it on)." : "Sound on (M mutes it).");
-  } else {
-    input_.handle(event, painter_->view());
-    // The menu offers the opponent last played, O's change included.
-    if (keyPressed(event, sf::Keyboard::O) && !session_.practice() &&
-        !(settings_.last.opponent == seats_.opponent())) {
-      settings_.last.opponent = seats_.opponent();
-      saveSettingsNow();
-    }
-  }
 }
 
 // True when the frame is skipped.
@@ -466,76 +439,23 @@ bool GameLoop::waitWhileIdle(bool changed) {
   return false;
 }
 
-bool GameLoop::tableBusy() const {
-  const bool watching = next_watched_ < watched_.size();
-  return online_ || watching || session_.phase() == Phase::Rolling || session_.replaying() ||
-         seats_.controls(session_) || input_.keysHeld() || ui_.drag != Drag::None;
-}
-
-// One frame of play: the held keys, the computer, the balls. Notes whether the balls were
-// rolling as the frame began (its time counts in the frame rate while balls move).
-void GameLoop::advanceTable(double dt, bool on_top) {
-  input_.update(dt);
-  updateOnline(dt);
-  playWatchedTurn(dt);
-  // The computer waits while the help, the quit question or the settings are open, as a player
-  // would.
-  if (!ui_.help && !ui_.confirm_quit && on_top && !session_.replaying()) {
-    seats_.update(session_, dt);
-  }
-  rolling_ = session_.phase() == Phase::Rolling;
-  const auto impacts = session_.advance(dt);
-  if (keep_rack_ && !online_ && session_.phase() == Phase::GameOver &&
-      forgotten_rack_ != session_.rackNumber()) {
-    forgetRack(rackSavePath());  // a finished rack has nothing to resume
-    forgotten_rack_ = session_.rackNumber();
-  }
-  if (sounds_ && !impacts.empty()) sounds_->play(impacts);
-}
-
 void GameLoop::draw() {
   screens_.draw(*window_);
   since_draw_.restart();
   ++frame_;
 }
 
-void GameLoop::drawTable(sf::RenderTarget& target) {
-  render::Frame picture = buildFrame(session_, ui_, seats_);
-  picture.guide_scale = guideLengthFactor(settings_.guide);
-  if (settings_.guide == GuideLength::Off) {
-    picture.guide.reset();
-    picture.guide_foul.clear();
-  }
-  zoomView(picture);
-  if (settings_.bank_line && picture.guide) {
-    picture.bank = bankGuide(session_.match().world().table(), picture.ball_radius, picture.balls,
-                             *picture.guide);
-  }
-  if (picture.hud.overlay == render::Overlay::GameOver) {
-    for (int seat = 0; seat < 2; ++seat) {
-      picture.hud.overlay_lines.push_back(session_.seatName(seat) + ": " + stats_.line(seat));
-    }
-  }
-  if (online_) {
-    picture.hud.mode = online_->started() ? "online vs " + online_->peerName() : "online: waiting";
-    if (online_->stage() != OnlinePlay::Stage::Playing) {
-      picture.hud.status = online_->banner(session_);
-    }
-  }
-  painter_->draw(target, picture);
-}
-
 // F12: the picture as drawn, before it is shown.
 void GameLoop::takeRequestedScreenshot() {
-  WindowRequests& requests = input_.requests();
+  WindowRequests& requests = table_.input().requests();
   if (!requests.screenshot) return;
   requests.screenshot = false;
   const std::string name = timestampedName();
   std::string why;
   if (render::saveWindowPng(*window_, name, why)) {
-    session_.say("Screenshot saved: " + name);
+    table_.session().say("Screenshot saved: " + name);
   } else {
-    session_.say("Screenshot failed: " + why, render::Tone::Warning);
+    table_.session().say("Screenshot failed: " + why, render::Tone::Warning);
   }
 }
 
@@ -547,7 +467,7 @@ void GameLoop::present(bool rolling) {
 
 // Quit and full screen, asked for by a key.
 void GameLoop::answerRequests() {
-  WindowRequests& requests = input_.requests();
+  WindowRequests& requests = table_.input().requests();
   if (requests.quit) window_->close();
   if (requests.menu) {
     requests.menu = false;
@@ -555,14 +475,14 @@ void GameLoop::answerRequests() {
   }
   if (requests.save_rack) {
     requests.save_rack = false;
-    saveRackScript();
+    table_.saveRackScript();
   }
   if (requests.cycle_guide) {
     requests.cycle_guide = false;
     settings_.guide = nextGuide(settings_.guide);
     saveSettingsNow();
-    session_.say(std::string("Aim guide: ") + guideLengthName(settings_.guide) +
-                 " (G changes it; the menu's settings keep it).");
+    table_.session().say(std::string("Aim guide: ") + guideLengthName(settings_.guide) +
+                         " (G changes it; the menu's settings keep it).");
   }
   if (requests.toggle_fullscreen) {
     requests.toggle_fullscreen = false;
@@ -582,13 +502,14 @@ void GameLoop::capFrameRate() {
 }
 
 void GameLoop::saveRackInPlay() {
-  if (!keep_rack_ || session_.practice()) return;
+  const GameSession& session = table_.session();
+  if (!keep_rack_ || session.practice()) return;
   // A rack in play is kept for the next start (a finished one was forgotten as it ended;
   // a rack not yet broken leaves an older save alone).
-  if (session_.phase() == Phase::GameOver || session_.rackTurns().empty()) return;
+  if (session.phase() == Phase::GameOver || session.rackTurns().empty()) return;
   const std::string path = rackSavePath();
   std::string why;
-  if (saveRack(saveOf(session_, seats_.opponent()), path, why)) {
+  if (saveRack(saveOf(session, table_.seats().opponent()), path, why)) {
     logger("game")->info("rack saved to {}", path);
   } else {
     logger("game")->warn("rack not saved: {}", why);
@@ -597,19 +518,12 @@ void GameLoop::saveRackInPlay() {
 
 // Esc: the rack kept as on quitting, then the start menu (its Resume picks the rack up).
 void GameLoop::backToMenu() {
-  if (online_) {
-    online_->leave("the player left to the menu");
-    seats_.clearRemote();
-    online_.reset();
+  if (table_.online()) {
+    table_.leaveOnline("the player left to the menu");
   } else {
     saveRackInPlay();
   }
-  const bool leave_to_menu = ui_.leave_to_menu, rack_kept = ui_.rack_kept;
-  ui_ = UiState{};
-  ui_.leave_to_menu = leave_to_menu;
-  ui_.rack_kept = rack_kept;
-  stats_ = SessionStats{};
-  forgotten_rack_ = 0;
+  table_.leaveForMenu();
   showStartMenu();
 }
 
@@ -617,11 +531,9 @@ int GameLoop::finish() {
   // A screen still open over the table closes as its own way out would (the settings kept).
   screens_.closeDownTo(1);
   logFrameRate(moving_, frame_);
-  if (online_) {
+  if (table_.online()) {
     // An online rack is not a saved rack to resume alone.
-    online_->leave("the player quit");
-    seats_.clearRemote();
-    online_.reset();
+    table_.leaveOnline("the player quit");
   } else {
     saveRackInPlay();
   }

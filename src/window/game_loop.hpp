@@ -21,7 +21,9 @@
 #include "window/game_window.hpp"
 #include "window/menu.hpp"
 #include "window/online_play.hpp"
+#include "window/screens/dialog_screen.hpp"
 #include "window/screens/screen_stack.hpp"
+#include "window/screens/table_dialogs.hpp"
 #include "window/screens/table_screen.hpp"
 #include "window/seats/seats.hpp"
 #include "window/session_stats.hpp"
@@ -33,11 +35,12 @@ namespace nineball::window {
 
 /// The game window from start to end. Construction sets the game up: the script's turns, the
 /// display and the fonts, the window, the start menu. run() is the window's one event loop: it
-/// goes round the frame for the screens on its stack (the table, the start menu and the
-/// settings over it): the events, the shot and the computer, the picture, the screenshots, the
-/// wait when nothing moves; and at the end keeps the rack in play for the next start. It plays
-/// the table screen's part itself (Table).
-class GameLoop : private Table {
+/// goes round the frame for the screens on its stack (the table at the bottom, its dialogs, the
+/// start menu and the settings over it): the events, the screens' frame, the picture, the
+/// screenshots, the wait when nothing moves; and at the end keeps the rack in play for the next
+/// start. The table's state is its screen's (TableScreen); the loop lends it the window
+/// (TableWindow).
+class GameLoop : private TableWindow {
  public:
   GameLoop(const app::GameOptions& options, const GameStart& start, std::ostream& err);
   GameLoop(const GameLoop&) = delete;
@@ -51,6 +54,8 @@ class GameLoop : private Table {
   int run();
 
  private:
+  // The table, made with the loop and put at the bottom of its stack.
+  TableScreen& makeTable(const GameStart& start);
   // The setup, in its order.
   std::optional<int> setUp(const GameStart& start);
   std::optional<int> playScript(const GameStart& start);
@@ -61,44 +66,36 @@ class GameLoop : private Table {
   std::optional<int> startMenu();
   void showStartMenu();
   void menuClosed(MenuModel::Outcome outcome, bool started);
-  void openSettings();
   void beginFrames();
   void prepareFrames(const GameStart& start);
   std::optional<int> startOnline(const GameStart& start);
   bool beginOnline(OnlineConfig config, std::string& why);
   void startOnlineFromMenu(MenuModel::Outcome outcome);
-  void updateOnline(double dt);
-  void playWatchedTurn(double dt);
-  void followTable();
-  std::optional<CaptureDriver::OnlineEnd> onlineEnd() const;
+  std::optional<CaptureDriver::OnlineEnd> onlineEnd();
 
   // The steps of one frame, in their order.
   bool handleEvents();
   bool waitWhileIdle(bool changed);
   void draw();
-  // Table: the table screen's part.
-  void tableEvent(const sf::Event& event) override;
-  void advanceTable(double seconds, bool on_top) override;
-  void drawTable(sf::RenderTarget& target) override;
-  bool tableBusy() const override;
-  void zoomView(const render::Frame& picture);
   void takeRequestedScreenshot();
   void present(bool rolling);
   void answerRequests();
   void capFrameRate();
-  void saveRackScript();
   void saveRackInPlay();
   void backToMenu();
   int finish();
 
-  void applySound();
-  void saveSettingsNow();
+  // TableWindow: what the loop lends the table.
+  render::ScenePainter& painter() override { return *painter_; }
+  const render::ViewTransform& pointerView() override { return painter_->view(); }
+  Settings& settings() override { return settings_; }
+  ScreenStack& screens() override { return screens_; }
+  audio::ImpactSounds* sounds() override { return sounds_.get(); }
+  void openSettings() override;
+  void applySound() override;
+  void saveSettingsNow() override;
 
   std::ostream& err_;
-  GameSession session_;
-  SessionStats stats_;
-  const GameSession::TurnObserver count_;
-  Seats seats_;  // who plays each seat: a person here, the computer, a player online
   // Made in the setup's order, once the steps before them went through.
   std::optional<DisplayConnection> display_;
   std::optional<render::Fonts> fonts_;
@@ -107,32 +104,24 @@ class GameLoop : private Table {
   const CaptureDriver driver_;  // a person, a picture run or a benchmark runs the frames
   const bool show_menu_;
   const bool keep_rack_;
+  const bool online_start_;  // --host or --join
   Settings settings_;
   bool fullscreen_ = false;
   std::optional<sf::RenderWindow> window_;
   std::optional<render::ScenePainter> painter_;
-  UiState ui_;
   std::optional<render::MenuPainter> menu_painter_;
   std::unique_ptr<audio::ImpactSounds> sounds_;
-  ScreenStack screens_;      // the table at the bottom; the start menu or the settings over it
-  bool rolling_ = false;     // the balls rolled as the frame's play began (its time is counted)
+  // The table at the bottom; a dialog, the start menu or the settings over it.
+  ScreenStack screens_;
+  TableScreen& table_;       // the match on the table, its state and its play
   bool demo_break_ = false;  // --frames on a table with no script: a break to watch
   bool demo_due_ = false;    // --frames' demo break and --replay wait for the start menu's game
-  GameInput input_;
   FrameTimer moving_;
   sf::Clock frame_clock_;
   sf::Clock display_clock_;
   sf::Clock since_draw_;
-  int forgotten_rack_ = 0;
   long frame_ = 0;
-  // --watch: the script's turns still to play on screen, and how long the balls have rested.
-  std::vector<TurnInput> watched_;
-  nlohmann::json script_setup_;  // the --script's setup, which F5's save keeps
-  std::size_t next_watched_ = 0;
-  double rested_ = 0.0;
   std::optional<int> setup_status_;
-  const bool online_start_;             // --host or --join
-  std::unique_ptr<OnlinePlay> online_;  // the game against a player at another computer
 };
 
 }  // namespace nineball::window

@@ -19,9 +19,6 @@
 namespace nineball::window {
 namespace {
 
-// The picture's clock runs on this long (s) after the balls stop: a ball that dropped as the
-// shot ended finishes sinking into its pocket (the balls at rest turn no further).
-constexpr double kAfterRest = 1.0;
 // Search step (m) for a free spot for the cue ball in hand.
 constexpr double kSpotSearchStep = 0.01;
 
@@ -34,7 +31,7 @@ std::string formatSpeed(double mps) {
 }  // namespace
 
 GameSession::GameSession(const MatchSetup& setup, bool practice)
-    : setup_(setup), clock_(FixedStepClock::forPlay(setup.step.dt(), setup.step.hz)) {
+    : setup_(setup), playback_(FixedStepClock::forPlay(setup.step.dt(), setup.step.hz)) {
   if (practice) {
     const Match racked(setup);
     practice_ = std::make_unique<PracticeTable>(
@@ -53,8 +50,7 @@ void GameSession::rebuildPractice() {
   MatchSetup s = setup_;
   s.balls = practice_->layout();
   match_ = std::make_unique<Match>(s);
-  shot_.current = shot_.previous = match_->balls();
-  shot_.current_time = shot_.previous_time = match_->world().time();
+  playback_.settle(*match_);
   pocketed_.clear();
   for (int id = 1; id <= 9; ++id) {
     if (!practice_->has(id)) pocketed_.push_back(id);
@@ -66,27 +62,8 @@ GameSession::~GameSession() = default;
 GameSession::GameSession(GameSession&&) noexcept = default;
 GameSession& GameSession::operator=(GameSession&&) noexcept = default;
 
-void GameSession::setSpeed(double mps) {
-  speed_ = std::clamp(mps, kMinSpeed, kMaxSpeed);
-}
-
-void GameSession::setPower(double fraction) {
-  setSpeed(kMinSpeed + std::clamp(fraction, 0.0, 1.0) * (kMaxSpeed - kMinSpeed));
-}
-
 double GameSession::maxTip() const {
   return std::min(kMaxTip, match_->world().physics().miscue_limit);
-}
-
-void GameSession::setTip(Vec2 tip) {
-  const double len = length(tip);
-  // A hair inside the limit: past it the physics calls the shot a miscue.
-  const double limit = maxTip() * (1.0 - 1e-12);
-  tip_ = len > limit ? tip * (limit / len) : tip;
-}
-
-void GameSession::setElevation(double radians) {
-  elevation_ = std::clamp(radians, 0.0, degToRad(kMaxElevationDeg));
 }
 
 bool GameSession::pushOutAvailable() const {
@@ -114,7 +91,8 @@ bool GameSession::cueInHand() const {
 }
 
 std::optional<std::string> GameSession::caromCount() const {
-  if (practice_ || replay_ || gameDef(match_->rack().game()).family != GameFamily::Carom) {
+  if (practice_ || playback_.replaying() ||
+      gameDef(match_->rack().game()).family != GameFamily::Carom) {
     return std::nullopt;
   }
   if (phase_ != Phase::Rolling && !last_count_.empty()) return last_count_;
@@ -125,9 +103,10 @@ std::optional<std::string> GameSession::caromCount() const {
   for (const Event& e : match_->world().events()) {
     if (e.t <= now) seen.push_back(e);
   }
-  const rules::ShotSummary summary = play::summarize(seen, shot_ball_);
+  const rules::ShotSummary summary = play::summarize(seen, playback_.shotBall());
   bool both = false;
-  const int cushions = rules::ThreeCushionRules::cushionsBeforeSecond(summary, shot_ball_, both);
+  const int cushions =
+      rules::ThreeCushionRules::cushionsBeforeSecond(summary, playback_.shotBall(), both);
   std::string text = "Cushions: " + std::to_string(cushions);
   if (both) text += cushions >= 3 ? "   POINT" : "   no point";
   return text;
@@ -138,9 +117,9 @@ int GameSession::shooterBall() const {
 }
 
 Vec2 GameSession::cuePosition() const {
-  if (cueInHand() && cue_spot_) return *cue_spot_;
+  if (cueInHand() && cue_.spot()) return *cue_.spot();
   const int cue = shooterBall();
-  for (const BallState& b : shot_.current) {
+  for (const BallState& b : playback_.balls()) {
     if (b.id == cue) return b.pos;
   }
   return {};
@@ -159,21 +138,18 @@ std::optional<std::string> GameSession::placementProblem(Vec2 pos) const {
 
 bool GameSession::placeCue(Vec2 pos) {
   if (auto problem = placementProblem(pos)) {
-    say("The cue ball cannot go there: " + *problem + ".", render::Tone::Warning);
-    placement_refused_ = true;
+    message_.refusePlacement("The cue ball cannot go there: " + *problem + ".");
     return false;
   }
-  cue_spot_ = pos;
-  // A refusal is out of date once the ball stands somewhere it may.
-  if (placement_refused_) say("");
-  placement_refused_ = false;
+  cue_.setSpot(pos);
+  message_.placementTaken();
   return true;
 }
 
 AimGuide GameSession::aimGuide() const {
   const Engine& w = match_->world();
-  return computeAimGuide(w.table(), w.physics().ball_radius, shot_.current, cuePosition(), heading_,
-                         shooterBall());
+  return computeAimGuide(w.table(), w.physics().ball_radius, playback_.balls(), cuePosition(),
+                         cue_.heading(), shooterBall());
 }
 
 void GameSession::startRack() {
@@ -184,15 +160,14 @@ void GameSession::startRack() {
   match_ = std::make_unique<Match>(s);
   rack_setup_ = s;
   rack_turns_.clear();
-  replay_.reset();
+  playback_.stopReplay();
   pocketed_.clear();
   // Carom's opening is an ordinary stroke, not a break.
   const bool pool_break =
       match_->rack().isBreak() && gameDef(match_->rack().game()).family == GameFamily::Pool;
   const bool snooker = gameDef(match_->rack().game()).snookers;
-  speed_ = pool_break ? (snooker ? kBreakOffSpeed : kBreakSpeed) : speed_;
-  message_.clear();
-  tone_ = render::Tone::Info;
+  if (pool_break) cue_.setSpeed(snooker ? kBreakOffSpeed : kBreakSpeed);
+  message_.clearPlain();
   startTurn();
   logger("game")->info(
       "rack {}: {} breaks, rules {}, seed {} (--seed {} plays the game's racks again)",
@@ -200,21 +175,18 @@ void GameSession::startRack() {
 }
 
 void GameSession::startTurn() {
-  shot_.current = shot_.previous = match_->balls();
-  shot_.current_time = shot_.previous_time = match_->world().time();
+  playback_.settle(*match_);
   phase_ = match_->rack().awaitingDecision() ? Phase::PushOutChoice : Phase::Aiming;
   push_out_ = false;
-  tip_ = {};
-  elevation_ = 0.0;
-  cue_spot_.reset();
+  cue_.newTurn();
   call_ball_.reset();
   call_pocket_.reset();
   if (match_->cueInHand()) {
     std::optional<Vec2> on_table;
-    for (const BallState& b : shot_.current) {
+    for (const BallState& b : playback_.balls()) {
       if (b.id == kCueBall && !b.pocket) on_table = b.pos;
     }
-    cue_spot_ = on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot();
+    cue_.setSpot(on_table && !match_->cuePlacementProblem(*on_table) ? *on_table : freeCueSpot());
   }
   aimAtBallOn();
 }
@@ -245,13 +217,13 @@ void GameSession::aimAtBallOn() {
   // Snooker has many balls on, and the lowest-numbered red often stands behind the pink.
   if (gameDef(match_->rack().game()).snookers) {
     if (const auto heading = clearHeadingToBallOn(cue)) {
-      heading_ = *heading;
+      cue_.setHeading(*heading);
       return;
     }
   }
-  for (const BallState& b : shot_.current) {
+  for (const BallState& b : playback_.balls()) {
     if (b.id == on && !b.pocket && length(b.pos - cue) > 0.0) {
-      heading_ = std::atan2(b.pos.y - cue.y, b.pos.x - cue.x);
+      cue_.setHeading(std::atan2(b.pos.y - cue.y, b.pos.x - cue.x));
     }
   }
 }
@@ -263,8 +235,8 @@ std::optional<double> GameSession::clearHeadingToBallOn(Vec2 cue) const {
   // guide's own trace.
   auto reaches = [&](int on, Vec2 aim) {
     if (length(aim - cue) <= 0.0) return false;
-    const AimGuide guide =
-        computeAimGuide(w.table(), r, shot_.current, cue, std::atan2(aim.y - cue.y, aim.x - cue.x));
+    const AimGuide guide = computeAimGuide(w.table(), r, playback_.balls(), cue,
+                                           std::atan2(aim.y - cue.y, aim.x - cue.x));
     return guide.target == AimTarget::Ball && guide.ball == on;
   };
   // The nearest ball on straight at its centre, else the nearest a thin contact reaches (snooker's
@@ -273,7 +245,7 @@ std::optional<double> GameSession::clearHeadingToBallOn(Vec2 cue) const {
     std::optional<double> best;
     double best_distance = 0.0;
     for (int on : match_->rack().legalFirstBalls()) {
-      for (const BallState& b : shot_.current) {
+      for (const BallState& b : playback_.balls()) {
         if (b.id != on || b.pocket) continue;
         const double d = length(b.pos - cue);
         if (d <= 0.0 || (best && d >= best_distance)) continue;
@@ -292,10 +264,10 @@ bool GameSession::shoot() {
   if (phase_ != Phase::Aiming) return false;
   TurnInput turn;
   turn.kind = push_out_ ? TurnInput::Kind::PushOut : TurnInput::Kind::Shot;
-  turn.shot.heading_rad = heading_;
-  turn.shot.speed = speed_;
-  turn.shot.tip = tip_;
-  turn.shot.elevation_rad = elevation_;
+  turn.shot.heading_rad = cue_.heading();
+  turn.shot.speed = cue_.speed();
+  turn.shot.tip = cue_.tip();
+  turn.shot.elevation_rad = cue_.elevation();
   if (turn.kind == TurnInput::Kind::Shot) turn.call = call();
   return shoot(turn);
 }
@@ -323,7 +295,7 @@ bool GameSession::shoot(const TurnInput& given) {
     return false;
   }
   if (match_->cueInHand()) {
-    if (!turn.cue) turn.cue = cue_spot_;
+    if (!turn.cue) turn.cue = cue_.spot();
   } else {
     turn.cue.reset();
   }
@@ -345,27 +317,17 @@ bool GameSession::shoot(const TurnInput& given) {
   if (practice_) rack_turns_.clear();  // each practice shot is a rack of its own
   rack_turns_.push_back(turn);
   if (!practice_) match_turns_.push_back(turn);
-  heading_ = turn.shot.heading_rad;
-  setSpeed(turn.shot.speed);
-  tip_ = turn.shot.tip;
-  elevation_ = turn.shot.elevation_rad;
+  cue_.take(turn.shot.heading_rad, turn.shot.speed, turn.shot.tip, turn.shot.elevation_rad);
   push_out_ = turn.kind == TurnInput::Kind::PushOut;
-  if (turn.cue) cue_spot_ = turn.cue;
+  if (turn.cue) cue_.setSpot(turn.cue);
   logger("game")->info(
       "{} shoots: heading {:.2f} deg, {:.2f} m/s, tip [{:.2f}, {:.2f}], elevation {:.0f} deg{}",
       seatName(seatToMove()), radToDeg(turn.shot.heading_rad), turn.shot.speed, turn.shot.tip.x,
       turn.shot.tip.y, radToDeg(turn.shot.elevation_rad), push_out_ ? ", push-out" : "");
   phase_ = Phase::Rolling;
-  clock_.reset();
-  after_rest_ = 0.0;
-  shot_ball_ = shooterBall();
-  shot_.begin(*match_);
-  strike_from_ = cuePosition();
-  for (const BallState& b : shot_.current) {
-    if (b.id == shot_ball_) strike_from_ = b.pos;
-  }
+  playback_.begin(*match_, shooterBall(), turn.shot.speed);
+  playback_.strikeFrom(cuePosition());
   message_.clear();
-  strike_ = audio::cueStrike(turn.shot.speed);
   return true;
 }
 
@@ -379,39 +341,28 @@ void GameSession::startReplay(bool slow) {
     return;
   }
   try {
-    replay_ = std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0);
+    playback_.startReplay(
+        std::make_unique<ShotReplay>(rack_setup_, rack_turns_, slow ? kSlowReplay : 1.0));
   } catch (const std::exception& e) {
     // The rack played again should always rebuild; if it ever does not, the game goes on.
-    replay_.reset();
+    playback_.stopReplay();
     logger("game")->warn("the replay could not be rebuilt: {}", e.what());
     say(std::string("The replay could not be rebuilt: ") + e.what() + ".", render::Tone::Warning);
   }
 }
 
 void GameSession::stopReplay() {
-  replay_.reset();
+  playback_.stopReplay();
 }
 
 std::vector<audio::Impact> GameSession::advance(double frame_seconds) {
-  const double seconds = frame_seconds * play_rate_;
   std::vector<audio::Impact> impacts;
-  // The strike is heard with the first frame of the shot.
-  if (strike_) impacts.push_back(*std::exchange(strike_, std::nullopt));
-  if (replay_) {
-    for (const audio::Impact& i : replay_->advance(seconds)) impacts.push_back(i);
-    if (replay_->finished()) replay_.reset();
-    return impacts;
-  }
-  if (phase_ != Phase::Rolling) {
-    after_rest_ = std::min(kAfterRest, after_rest_ + seconds);
-    return impacts;
-  }
-  if (shot_.take(*match_, clock_.advance(seconds), impacts)) finishShot();
+  if (playback_.advance(frame_seconds, phase_ == Phase::Rolling, *match_, impacts)) finishShot();
   return impacts;
 }
 
 double GameSession::shotTime() const {
-  return match_->world().time() - shot_.start;
+  return match_->world().time() - playback_.start();
 }
 
 void GameSession::finishShot() {
@@ -425,14 +376,14 @@ void GameSession::finishShot() {
 
 void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
   if (observer_) observer_(seatOf(record.shooter), record, breaking_);
-  if (breaking_) speed_ = kShotSpeed;
+  if (breaking_) cue_.setSpeed(kShotSpeed);
   breaking_ = false;
   for (int b : record.verdict.pocketed) {
     const auto& spot = record.verdict.to_spot;
     if (std::find(spot.begin(), spot.end(), b) == spot.end()) pocketed_.push_back(b);
   }
   const auto& events = match_->world().events();
-  const rules::ShotSummary summary = play::summarize(events, shot_ball_);
+  const rules::ShotSummary summary = play::summarize(events, playback_.shotBall());
   if (record.kind != TurnInput::Kind::Decision) {
     const bool point = record.verdict.points[0] + record.verdict.points[1] > 0;
     last_count_ = "Cushions: " + std::to_string(record.verdict.cushions) +
@@ -457,8 +408,7 @@ void GameSession::afterTurn(const TurnRecord& record, int ball_on_before) {
       ++racks_won_[seatOf(*winner)];
       last_winner_seat_ = seatOf(*winner);
     }
-    shot_.current = shot_.previous = match_->balls();
-    shot_.current_time = shot_.previous_time = match_->world().time();
+    playback_.settle(*match_);
     phase_ = Phase::GameOver;
     return;
   }
@@ -509,8 +459,7 @@ void GameSession::restoreMatch(const MatchSnapshot& snapshot) {
   if (phase_ == Phase::Rolling) return;
   match_->restore(snapshot);
   if (match_->rack().over()) {
-    shot_.current = shot_.previous = match_->balls();
-    shot_.current_time = shot_.previous_time = match_->world().time();
+    playback_.settle(*match_);
     phase_ = Phase::GameOver;
     return;
   }
@@ -518,13 +467,14 @@ void GameSession::restoreMatch(const MatchSnapshot& snapshot) {
 }
 
 std::vector<BallState> GameSession::ballsToDraw() const {
-  if (replay_) return replay_->balls();
-  if (phase_ == Phase::Rolling) return shot_.between(clock_.alpha());
-  std::vector<BallState> out = shot_.current;
-  if (cueInHand() && cue_spot_) {
+  if (playback_.replaying() || phase_ == Phase::Rolling) {
+    return playback_.ballsToDraw(phase_ == Phase::Rolling);
+  }
+  std::vector<BallState> out = playback_.balls();
+  if (cueInHand() && cue_.spot()) {
     for (BallState& b : out) {
       if (b.id == kCueBall) {
-        b.pos = *cue_spot_;
+        b.pos = *cue_.spot();
         b.pocket.reset();
       }
     }
@@ -533,20 +483,18 @@ std::vector<BallState> GameSession::ballsToDraw() const {
 }
 
 double GameSession::drawTime() const {
-  if (replay_) return replay_->time();
-  if (phase_ == Phase::Rolling) return shot_.timeBetween(clock_.alpha());
-  return shot_.current_time + after_rest_;
+  return playback_.drawTime(phase_ == Phase::Rolling);
 }
 
 std::optional<GameSession::Strike> GameSession::strike() const {
-  if (phase_ != Phase::Rolling || replay_) return std::nullopt;
-  return Strike{strike_from_, heading_, power(), drawTime() - shot_.start};
+  if (phase_ != Phase::Rolling || playback_.replaying()) return std::nullopt;
+  return Strike{playback_.struckFrom(), cue_.heading(), power(), drawTime() - playback_.start()};
 }
 
 std::string GameSession::status() const {
   const std::string name = seatName(seatToMove());
-  if (replay_) {
-    return std::string(replay_->rate() < 1.0 ? "Slow replay" : "Replay") +
+  if (const ShotReplay* replay = playback_.replay()) {
+    return std::string(replay->rate() < 1.0 ? "Slow replay" : "Replay") +
            " of the last shot: any key returns";
   }
   if (practice_) {
@@ -627,9 +575,7 @@ std::string GameSession::status() const {
 }
 
 void GameSession::say(const std::string& text, render::Tone tone) {
-  message_ = text;
-  tone_ = tone;
-  placement_refused_ = false;
+  message_.say(text, tone);
 }
 
 }  // namespace nineball::window

@@ -11,11 +11,12 @@
 #include "nineball/race.hpp"
 #include "play/aim_guide.hpp"
 #include "render/hud_state.hpp"
+#include "window/cue_setup.hpp"
 #include "window/fixed_step_clock.hpp"
 #include "window/menu_choice.hpp"
 #include "window/practice_table.hpp"
-#include "window/shot_replay.hpp"
-#include "window/shot_steps.hpp"
+#include "window/session_message.hpp"
+#include "window/shot_playback.hpp"
 
 namespace nineball::window {
 
@@ -33,11 +34,11 @@ enum class Phase {
 /// window, and the messages about each turn. No SFML: the window drives it.
 class GameSession {
  public:
-  static constexpr double kMaxSpeed = 12.0;         ///< m/s at full power (a hard break)
-  static constexpr double kMinSpeed = 0.1;          ///< m/s at the bottom of the gauge
-  static constexpr double kMaxTip = 0.5;            ///< the tip's useful range, fraction of R
-  static constexpr double kMaxElevationDeg = 60.0;  ///< the cue's tilt: swerve up to a masse
-  static constexpr double kBreakSpeed = 10.0;       ///< m/s the break starts with
+  static constexpr double kMaxSpeed = CueSetup::kMaxSpeed;
+  static constexpr double kMinSpeed = CueSetup::kMinSpeed;
+  static constexpr double kMaxTip = 0.5;  ///< the tip's useful range, fraction of R
+  static constexpr double kMaxElevationDeg = CueSetup::kMaxElevationDeg;
+  static constexpr double kBreakSpeed = 10.0;  ///< m/s the break starts with
   /// m/s snooker's break-off starts with: a thin contact on the reds that brings the cue ball
   /// back to baulk, not a pool break.
   static constexpr double kBreakOffSpeed = 4.0;
@@ -132,22 +133,23 @@ class GameSession {
   /// The seat that has won the match of bestOf() frames, once one has.
   std::optional<int> matchWinner() const;
 
-  double heading() const { return heading_; }
-  void setHeading(double radians) { heading_ = radians; }
-  double speed() const { return speed_; }
-  void setSpeed(double mps);
+  // The cue being set (CueSetup).
+  double heading() const { return cue_.heading(); }
+  void setHeading(double radians) { cue_.setHeading(radians); }
+  double speed() const { return cue_.speed(); }
+  void setSpeed(double mps) { cue_.setSpeed(mps); }
   /// The gauge, 0 to 1, linear in speed from kMinSpeed to kMaxSpeed.
-  double power() const { return (speed_ - kMinSpeed) / (kMaxSpeed - kMinSpeed); }
-  void setPower(double fraction);
-  Vec2 tip() const { return tip_; }
+  double power() const { return cue_.power(); }
+  void setPower(double fraction) { cue_.setPower(fraction); }
+  Vec2 tip() const { return cue_.tip(); }
   /// The largest tip offset allowed: the useful range, within the physics' miscue limit.
   double maxTip() const;
   /// Sets the tip, pulled in to the useful range.
-  void setTip(Vec2 tip);
+  void setTip(Vec2 tip) { cue_.setTip(tip, maxTip()); }
   /// The cue's tilt above the table, radians: an elevated cue curves the ball (swerve).
-  double elevation() const { return elevation_; }
+  double elevation() const { return cue_.elevation(); }
   /// Sets the tilt, held within 0 to kMaxElevationDeg.
-  void setElevation(double radians);
+  void setElevation(double radians) { cue_.setElevation(radians); }
 
   /// The object balls pocketed this rack (and not spotted), in the order they dropped.
   const std::vector<int>& pocketedThisRack() const { return pocketed_; }
@@ -221,7 +223,7 @@ class GameSession {
   /// Replays the rack's last shot from the physics, at normal speed or a quarter of it.
   void startReplay(bool slow);
   void stopReplay();
-  bool replaying() const { return replay_ != nullptr; }
+  bool replaying() const { return playback_.replaying(); }
   /// The setup this rack began from (its seed and layout).
   const MatchSetup& rackSetup() const { return rack_setup_; }
 
@@ -230,8 +232,8 @@ class GameSession {
   std::vector<audio::Impact> advance(double frame_seconds);
   /// Fast-forward: the physics runs `rate` times as fast, in the same steps (more of them a
   /// frame), so the shot ends exactly as at normal speed. 1 is normal.
-  void setPlayRate(double rate) { play_rate_ = rate; }
-  double playRate() const { return play_rate_; }
+  void setPlayRate(double rate) { playback_.setPlayRate(rate); }
+  double playRate() const { return playback_.playRate(); }
   /// The balls where the frame should draw them: between the last two steps while rolling,
   /// the cue ball at its spot in hand otherwise.
   std::vector<BallState> ballsToDraw() const;
@@ -253,8 +255,8 @@ class GameSession {
 
   /// What the player to move should do now.
   std::string status() const;
-  const std::string& message() const { return message_; }
-  render::Tone tone() const { return tone_; }
+  const std::string& message() const { return message_.text(); }
+  render::Tone tone() const { return message_.tone(); }
   /// Replaces the message line (a refusal, a saved screenshot...).
   void say(const std::string& text, render::Tone tone = render::Tone::Info);
 
@@ -278,7 +280,6 @@ class GameSession {
   std::unique_ptr<Match> match_;
   std::vector<TurnInput> rack_turns_;
   std::vector<TurnInput> match_turns_;
-  std::unique_ptr<ShotReplay> replay_;
   std::unique_ptr<PracticeTable> practice_;
   Phase phase_ = Phase::Aiming;
   std::string names_[2] = {"Player 1", "Player 2"};
@@ -291,29 +292,17 @@ class GameSession {
   std::optional<int> last_winner_seat_;  // the seat that won the rack before, in this match
   bool match_known_ = true;              // match_turns_ hold the whole match
   std::optional<int> resumed_breaker_;   // the breaker of the rack resumeRack() racks
-  double heading_ = 0.0;
-  double speed_ = kShotSpeed;
-  Vec2 tip_;
-  double elevation_ = 0.0;
+  CueSetup cue_{kShotSpeed};  // the aim, power, spin and tilt, the cue ball's spot in hand
   bool push_out_ = false;
-  std::optional<Vec2> cue_spot_;  // the cue ball's spot while in hand
   int ball_on_at_shot_ = 0;
   std::optional<int> call_ball_;         // the ball picked to call (GameDef::call_any_ball)
   std::optional<PocketId> call_pocket_;  // the pocket called
   rules::Groups groups_at_shot_;         // the groups before the turn (its message)
   bool breaking_ = false;                // the shot rolling is the break
-  bool placement_refused_ = false;       // the message is a refused cue-ball placement
-  double play_rate_ = 1.0;
-  std::optional<audio::Impact> strike_;  // the cue's strike, heard with the next frame
-  Vec2 strike_from_;          // where the cue ball stood when the rolling shot was struck
-  int shot_ball_ = kCueBall;  // the ball the rolling shot was struck on
-  std::string last_count_;    // carom: the last shot's cushions and point, shown after it
-  FixedStepClock clock_;
-  ShotSteps shot_;
+  std::string last_count_;  // carom: the last shot's cushions and point, shown after it
+  ShotPlayback playback_;   // the shot rolling, its steps, its replay
   std::vector<int> pocketed_;
-  double after_rest_ = 0.0;  // s the picture's clock ran on since the balls stopped
-  std::string message_;
-  render::Tone tone_ = render::Tone::Info;
+  SessionMessage message_;  // the HUD's message line
   TurnObserver observer_;
   TurnRelay relay_;
   bool fixed_seats_ = false;

@@ -53,7 +53,7 @@ void GameSession::callObvious() {
   // is the ball on's (ten-ball calls any ball, but a pot of one hit first illegally is a foul).
   const std::vector<int> callable = rack.legalFirstBalls();
   const auto c =
-      obviousCall(match_->world().table(), shot_.current, aimGuide(), callBall(), callable);
+      obviousCall(match_->world().table(), playback_.balls(), aimGuide(), callBall(), callable);
   if (!c) return;
   call_ball_ = c->ball;
   call_pocket_ = c->pocket;

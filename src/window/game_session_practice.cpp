@@ -10,7 +10,7 @@ std::optional<int> GameSession::ballAt(Vec2 pos) const {
   const double r = match_->world().physics().ball_radius;
   std::optional<int> best;
   double best_d = 1.2 * r;
-  for (const BallState& b : shot_.current) {
+  for (const BallState& b : playback_.balls()) {
     if (b.pocket) continue;
     const double d = length(b.pos - pos);
     if (d <= best_d) {
@@ -55,10 +55,7 @@ void GameSession::toggleBall(int id, Vec2 near) {
 
 void GameSession::restorePracticeShot(const PracticeShot& shot) {
   rebuildPractice();
-  heading_ = shot.heading;
-  setSpeed(shot.speed);
-  tip_ = shot.tip;
-  elevation_ = shot.elevation;
+  cue_.take(shot.heading, shot.speed, shot.tip, shot.elevation);
 }
 
 void GameSession::undoShot() {

@@ -1,5 +1,6 @@
 // Window events made by hand, and a game's window pieces as the loop holds them, for the tests
-// that drive GameInput without a window.
+// that drive GameInput (and the dialogs over the table, as the window routes events) without a
+// window.
 #pragma once
 
 #include <SFML/Window/Event.hpp>
@@ -8,6 +9,7 @@
 #include "render/view_transform.hpp"
 #include "window/game_input.hpp"
 #include "window/game_session.hpp"
+#include "window/screens/table_dialogs.hpp"
 #include "window/seats/seats.hpp"
 #include "window/ui_state.hpp"
 
@@ -57,16 +59,31 @@ struct InputTable {
   Seats seats{1};
   GameInput input{s, ui, seats};
   render::ViewTransform view{s.match().world().table().def, 1280, 800};
+  TableDialogs dialogs{
+      s,
+      ui,
+      seats,
+      input.requests(),
+      {[this]() -> const render::ViewTransform& { return view; },
+       [this](const sf::Event& e) { input.handle(e, view); }, [](sf::RenderTarget&) {}}};
+  /// The event as the window routes it: to the dialog the table calls for, else to the input.
+  void send(const sf::Event& e) {
+    if (const auto dialog = makeDialog(dialogs.dialogWanted(), dialogs)) {
+      dialog->event(e);
+    } else {
+      input.handle(e, view);
+    }
+  }
   void tap(sf::Keyboard::Key k, bool shift = false) {
-    input.handle(key(k, shift), view);
-    input.handle(release(k), view);
+    send(key(k, shift));
+    send(release(k));
   }
   void mouseTo(Vec2 m) { input.handle(mouse(sf::Event::MouseMoved, view.toPixels(m)), view); }
   void pointerAt(Vec2 px) { input.handle(mouse(sf::Event::MouseMoved, px), view); }
   void click(Vec2 m, Vec2 release_at) {
-    input.handle(mouse(sf::Event::MouseButtonPressed, view.toPixels(m)), view);
-    input.handle(mouse(sf::Event::MouseMoved, view.toPixels(release_at)), view);
-    input.handle(mouse(sf::Event::MouseButtonReleased, view.toPixels(release_at)), view);
+    send(mouse(sf::Event::MouseButtonPressed, view.toPixels(m)));
+    send(mouse(sf::Event::MouseMoved, view.toPixels(release_at)));
+    send(mouse(sf::Event::MouseButtonReleased, view.toPixels(release_at)));
   }
 };
 

@@ -1,5 +1,7 @@
 #include "window/screens/screen_stack.hpp"
 
+#include <algorithm>
+
 namespace nineball::window {
 
 std::size_t ScreenStack::lowestInSight() const {
@@ -50,6 +52,28 @@ bool ScreenStack::removeFinished() {
     removed = true;
   }
   return removed;
+}
+
+void ScreenStack::insert(std::size_t at, std::unique_ptr<Screen> screen) {
+  screens_.insert(screens_.begin() + static_cast<std::ptrdiff_t>(std::min(at, screens_.size())),
+                  std::move(screen));
+  changed_ = true;
+}
+
+bool ScreenStack::holds(const Screen& screen) const {
+  return std::any_of(screens_.begin(), screens_.end(),
+                     [&](const std::unique_ptr<Screen>& s) { return s.get() == &screen; });
+}
+
+void ScreenStack::remove(const Screen& screen) {
+  const auto it =
+      std::find_if(screens_.begin(), screens_.end(),
+                   [&](const std::unique_ptr<Screen>& s) { return s.get() == &screen; });
+  if (it == screens_.end()) return;
+  std::unique_ptr<Screen> done = std::move(*it);
+  screens_.erase(it);
+  done->closed();
+  changed_ = true;
 }
 
 void ScreenStack::closeDownTo(std::size_t keep) {

@@ -17,6 +17,13 @@ class ScreenStack {
     screens_.push_back(std::move(screen));
     changed_ = true;
   }
+  /// Puts a screen at `at` from the bottom (1: just above the table), beneath the ones there.
+  void insert(std::size_t at, std::unique_ptr<Screen> screen);
+  /// True while `screen` lies on the stack.
+  bool holds(const Screen& screen) const;
+  /// Takes `screen` off wherever it lies and tells it closed (a dialog the table no longer
+  /// calls for, beneath the settings).
+  void remove(const Screen& screen);
   bool empty() const { return screens_.empty(); }
   std::size_t size() const { return screens_.size(); }
   /// The screen on top (the stack must not be empty).
