@@ -1,13 +1,12 @@
 #include "rules/eight_ball.hpp"
 
 #include "rules/ball_list.hpp"
+#include "rules/wpa_break.hpp"
 
 namespace nineball::rules {
 namespace {
 
 constexpr int kEight = 8;
-// The fewest object balls a legal break drives to a cushion when none is pocketed.
-constexpr int kBreakBallsToRail = 4;
 
 bool onTheEight(const std::vector<int>& first_balls) {
   return first_balls.size() == 1 && first_balls.front() == kEight;

@@ -3,12 +3,11 @@
 #include <algorithm>
 
 #include "rules/ball_list.hpp"
+#include "rules/wpa_break.hpp"
 
 namespace nineball::rules {
 namespace {
 
-// The fewest object balls a legal WPA break drives to a cushion when none is pocketed.
-constexpr int kBreakBallsToRail = 4;
 constexpr int kFoulsToLose = 3;
 
 }  // namespace
