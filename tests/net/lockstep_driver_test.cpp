@@ -12,16 +12,10 @@
 
 #include "net/handshake.hpp"
 #include "nineball/match.hpp"
+#include "support/turn_input.hpp"
 
 namespace nineball::net {
 namespace {
-
-TurnInput driverShot(double heading_rad, double speed) {
-  TurnInput t;
-  t.shot.heading_rad = heading_rad;
-  t.shot.speed = speed;
-  return t;
-}
 
 // One side: its table, its driver, and what it sent (not yet delivered).
 struct DriverSide final : RackTable {
@@ -113,7 +107,7 @@ const T* firstEvent(const std::vector<LockstepEvent>& events) {
 TEST_F(LockstepDriverTest, TurnsArePlayedOnBothTablesAndAgreed) {
   begin();
   for (double heading : {0.0, 2.0, -1.0}) {
-    DriverSide& mover = playLocal(driverShot(heading, 4.0));
+    DriverSide& mover = playLocal(test::strokeTurn(heading, 4.0));
     DriverSide& peer = other(mover);
     playReceived(peer, deliver(mover, peer, 1));
     EXPECT_TRUE(sawEvent<TurnAgreed>(deliver(peer, mover)));
@@ -126,7 +120,7 @@ TEST_F(LockstepDriverTest, TurnsArePlayedOnBothTablesAndAgreed) {
 
 TEST_F(LockstepDriverTest, AMismatchIsHealedByTheHostsStateAndReportedOnBothSides) {
   begin();
-  DriverSide& mover = playLocal(driverShot(0.0, 5.0));
+  DriverSide& mover = playLocal(test::strokeTurn(0.0, 5.0));
   ASSERT_EQ(&mover, host_.get());
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   const auto at_host = deliver(*joiner_, *host_);  // the joiner's differing hash
@@ -143,7 +137,7 @@ TEST_F(LockstepDriverTest, AMismatchIsHealedByTheHostsStateAndReportedOnBothSide
 
 TEST_F(LockstepDriverTest, OneMismatchMoreThanTheRackMayHealEndsItWithABye) {
   begin(/*most_heals=*/0);
-  playLocal(driverShot(0.0, 5.0));
+  playLocal(test::strokeTurn(0.0, 5.0));
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   const auto at_host = deliver(*joiner_, *host_);
   const auto* ended = firstEvent<LockstepEnded>(at_host);
@@ -164,7 +158,7 @@ TEST_F(LockstepDriverTest, OneMismatchMoreThanTheRackMayHealEndsItWithABye) {
 TEST_F(LockstepDriverTest, AHealThatDoesNotTakeEndsBothSides) {
   begin();
   joiner_->driver.setOnHeal([](MatchSnapshot& s) { s.balls.front().pos.x += 1e-9; });
-  playLocal(driverShot(0.0, 5.0));
+  playLocal(test::strokeTurn(0.0, 5.0));
   playReceived(*joiner_, deliver(*host_, *joiner_, 1), 1e-9);
   deliver(*joiner_, *host_);
   const auto at_joiner = deliver(*host_, *joiner_);
@@ -213,7 +207,7 @@ TEST_F(LockstepDriverTest, AFinishedByeIsBelievedOnlyWhereThePeersRackCanEnd) {
   ASSERT_NE(firstEvent<ByeHeard>(early), nullptr);
   EXPECT_FALSE(firstEvent<ByeHeard>(early)->finished);
   // After an agreed turn at the joiner's move, its script may have run out.
-  DriverSide& mover = playLocal(driverShot(0.0, 2.0));
+  DriverSide& mover = playLocal(test::strokeTurn(0.0, 2.0));
   playReceived(other(mover), deliver(mover, other(mover), 1));
   deliver(other(mover), mover);
   deliver(mover, other(mover));

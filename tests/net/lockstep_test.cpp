@@ -9,16 +9,10 @@
 
 #include "io/snapshot_json.hpp"
 #include "nineball/match.hpp"
+#include "support/turn_input.hpp"
 
 namespace nineball::net {
 namespace {
-
-TurnInput aShot(double heading_rad, double speed) {
-  TurnInput t;
-  t.shot.heading_rad = heading_rad;
-  t.shot.speed = speed;
-  return t;
-}
 
 // Both sides of one rack: each side's Match and Lockstep.
 struct Table {
@@ -72,7 +66,7 @@ TEST(Lockstep, TheHostBreaksAndBothSidesAgreeOnEachTurn) {
   EXPECT_EQ(t.mover(), Side::Host);
   for (double heading : {0.0, 2.0, -1.0}) {
     const Side mover = t.mover();
-    const auto [mine, theirs] = playBoth(t, aShot(heading, 4.0));
+    const auto [mine, theirs] = playBoth(t, test::strokeTurn(heading, 4.0));
     EXPECT_EQ(mine.hash, theirs.hash);
     EXPECT_EQ(mine.index, theirs.index);
     EXPECT_FALSE(t.host.settled());
@@ -89,7 +83,7 @@ TEST(Lockstep, ATurnOutOfTurnIsRefused) {
   Table t;
   // The host is to break; the joiner sends a turn anyway.
   TurnMessage message;
-  t.joiner.localTurn(aShot(0.0, 4.0), HumanSeat{}, message);
+  t.joiner.localTurn(test::strokeTurn(0.0, 4.0), HumanSeat{}, message);
   std::string why;
   EXPECT_FALSE(t.host.peerTurn(message, t.host_match, why).has_value());
   EXPECT_NE(why.find("out of turn"), std::string::npos) << why;
@@ -98,7 +92,7 @@ TEST(Lockstep, ATurnOutOfTurnIsRefused) {
 TEST(Lockstep, ATurnOfAnotherIndexIsRefused) {
   Table t;
   TurnMessage message;
-  t.host.localTurn(aShot(0.0, 4.0), HumanSeat{}, message);
+  t.host.localTurn(test::strokeTurn(0.0, 4.0), HumanSeat{}, message);
   for (std::size_t index : {1u, 2u, 500u}) {
     message.index = index;
     std::string why;
@@ -112,11 +106,11 @@ TEST(Lockstep, ATurnOfAnotherIndexIsRefused) {
 
 TEST(Lockstep, ATurnBeforeTheLastIsAgreedIsRefused) {
   Table t;
-  const auto hashes = playBoth(t, aShot(0.0, 4.0));
+  const auto hashes = playBoth(t, test::strokeTurn(0.0, 4.0));
   (void)hashes;
   const Side mover = t.mover();
   TurnMessage next;
-  t.stepOf(mover).localTurn(aShot(1.0, 2.0), HumanSeat{}, next);
+  t.stepOf(mover).localTurn(test::strokeTurn(1.0, 2.0), HumanSeat{}, next);
   std::string why;
   EXPECT_FALSE(t.stepOf(mover).localToMove(t.matchOf(mover)));
   EXPECT_FALSE(t.stepOf(other(mover)).peerTurn(next, t.matchOf(other(mover)), why).has_value());
@@ -128,7 +122,7 @@ TEST(Lockstep, AHashOfATurnNotPlayedOrASecondHashIsRefused) {
   std::string why;
   EXPECT_FALSE(t.host.peerHash({0, 1}, why).has_value());
   EXPECT_NE(why.find("not the last played"), std::string::npos) << why;
-  const auto [mine, theirs] = playBoth(t, aShot(0.0, 4.0));
+  const auto [mine, theirs] = playBoth(t, test::strokeTurn(0.0, 4.0));
   EXPECT_FALSE(t.host.peerHash({1, theirs.hash}, why).has_value());
   EXPECT_FALSE(t.host.peerHash({500, theirs.hash}, why).has_value());
   const Side mover = Side::Host;
@@ -147,7 +141,7 @@ struct OutOfStep {
 
 void breakOutOfStep(OutOfStep& o) {
   TurnMessage message;
-  const CheckedTurn mine = o.t.host.localTurn(aShot(0.0, 5.0), HumanSeat{}, message);
+  const CheckedTurn mine = o.t.host.localTurn(test::strokeTurn(0.0, 5.0), HumanSeat{}, message);
   o.t.host_match.play(mine.input);
   o.host_hash = o.t.host.played(message.turn, o.t.host_match.snapshot());
   std::string why;
@@ -190,7 +184,7 @@ TEST(Lockstep, AMismatchIsHealedWithTheHostsStateOnBothSides) {
   EXPECT_EQ(t.joiner.heals(), 1);
 
   // Healed, both play the next turn to the same state.
-  const auto [mine, theirs] = playBoth(t, aShot(2.5, 3.0));
+  const auto [mine, theirs] = playBoth(t, test::strokeTurn(2.5, 3.0));
   EXPECT_EQ(mine.hash, theirs.hash);
 }
 
@@ -298,7 +292,7 @@ TEST(Lockstep, AHealedStateIsCheckedAsASceneAndAgainstTheRules) {
 TEST(Lockstep, ARejoinAsksForTheLastTurnsHashAgain) {
   Table t;
   EXPECT_FALSE(t.host.lastHash().has_value());
-  const auto [mine, theirs] = playBoth(t, aShot(0.0, 4.0));
+  const auto [mine, theirs] = playBoth(t, test::strokeTurn(0.0, 4.0));
   EXPECT_EQ(verdict(t.host, theirs), HashVerdict::Agreed);
   t.host.rejoined();
   EXPECT_FALSE(t.host.settled());
