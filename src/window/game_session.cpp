@@ -33,9 +33,7 @@ std::string formatSpeed(double mps) {
 GameSession::GameSession(const MatchSetup& setup, bool practice)
     : setup_(setup), playback_(FixedStepClock::forPlay(setup.step.dt(), setup.step.hz)) {
   if (practice) {
-    const Match racked(setup);
-    practice_ = std::make_unique<PracticeTable>(
-        racked.world().table(), racked.world().physics().ball_radius, racked.balls());
+    practice_ = std::make_unique<PracticeMode>(Match(setup));
     names_[0] = "Practice";
     names_[1] = "";
     rebuildPractice();
@@ -48,13 +46,10 @@ GameSession::GameSession(const MatchSetup& setup, bool practice)
 void GameSession::rebuildPractice() {
   // A fresh world of the position: no rules are judged, so none carry over.
   MatchSetup s = setup_;
-  s.balls = practice_->layout();
+  s.balls = practice_->table().layout();
   match_ = std::make_unique<Match>(s);
   playback_.settle(*match_);
-  pocketed_.clear();
-  for (int id = 1; id <= 9; ++id) {
-    if (!practice_->has(id)) pocketed_.push_back(id);
-  }
+  pocketed_ = practice_->offTable();
   phase_ = Phase::Aiming;
 }
 
@@ -278,12 +273,11 @@ bool GameSession::shoot(const TurnInput& given) {
   if (practice_) {
     turn.kind = TurnInput::Kind::Shot;
     turn.cue.reset();
-    practice_->recordShot({practice_->layout(), turn.shot.heading_rad, turn.shot.speed,
-                           turn.shot.tip, turn.shot.elevation_rad});
+    practice_->recordShot(turn.shot);
     rebuildPractice();
     // The replay starts from this position: each practice shot is a rack of its own.
     rack_setup_ = setup_;
-    rack_setup_.balls = practice_->layout();
+    rack_setup_.balls = practice_->table().layout();
   }
   if (!practice_ && turn.kind == TurnInput::Kind::Shot && match_->rack().callRequired() &&
       !turn.call) {
@@ -367,7 +361,7 @@ double GameSession::shotTime() const {
 
 void GameSession::finishShot() {
   if (practice_) {
-    finishPracticeShot();
+    practice_->finishShot(*this, match_->balls());
     return;
   }
   const TurnRecord record = match_->finishShot();

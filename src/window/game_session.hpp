@@ -14,7 +14,7 @@
 #include "window/cue_setup.hpp"
 #include "window/fixed_step_clock.hpp"
 #include "window/menu_choice.hpp"
-#include "window/practice_table.hpp"
+#include "window/practice_mode.hpp"
 #include "window/session_message.hpp"
 #include "window/shot_playback.hpp"
 
@@ -32,7 +32,7 @@ enum class Phase {
 /// Two players at one table, rack after rack: the match, whose turn it is, the aim, power
 /// and spin being set, the cue ball in hand, the physics stepped in fixed steps for the
 /// window, and the messages about each turn. No SFML: the window drives it.
-class GameSession {
+class GameSession : private PracticeHost {
  public:
   static constexpr double kMaxSpeed = CueSetup::kMaxSpeed;
   static constexpr double kMinSpeed = CueSetup::kMinSpeed;
@@ -55,7 +55,7 @@ class GameSession {
   /// last shot undone or retried.
   bool practice() const { return practice_ != nullptr; }
   /// Practice: the steps (shots, balls moved by hand) that undo can take back.
-  std::size_t practiceSteps() const { return practice_ ? practice_->stepsRemembered() : 0; }
+  std::size_t practiceSteps() const { return practice_ ? practice_->table().stepsRemembered() : 0; }
   /// The ball under a point on the table (practice: the balls that may be moved), or nothing.
   std::optional<int> ballAt(Vec2 pos) const;
   /// Why ball `id` may not stand at `pos` now, or nothing (practice).
@@ -258,15 +258,16 @@ class GameSession {
   const std::string& message() const { return message_.text(); }
   render::Tone tone() const { return message_.tone(); }
   /// Replaces the message line (a refusal, a saved screenshot...).
-  void say(const std::string& text, render::Tone tone = render::Tone::Info);
+  void say(const std::string& text, render::Tone tone = render::Tone::Info) override;
 
  private:
   void startRack();
   void startTurn();
   void finishShot();
-  void finishPracticeShot();
-  void rebuildPractice();
-  void restorePracticeShot(const PracticeShot& shot);
+  // What the practice part asks of the session (PracticeHost).
+  bool aiming() const override { return phase_ == Phase::Aiming; }
+  void rebuildPractice() override;
+  void takeCue(const PracticeShot& shot) override;
   void afterTurn(const TurnRecord& record, int ball_on_before);
   /// The seat that breaks the rack being racked (the match's break order, or a resumed rack's).
   int breakerOfRack();
@@ -280,7 +281,7 @@ class GameSession {
   std::unique_ptr<Match> match_;
   std::vector<TurnInput> rack_turns_;
   std::vector<TurnInput> match_turns_;
-  std::unique_ptr<PracticeTable> practice_;
+  std::unique_ptr<PracticeMode> practice_;
   Phase phase_ = Phase::Aiming;
   std::string names_[2] = {"Player 1", "Player 2"};
   int racks_won_[2] = {0, 0};

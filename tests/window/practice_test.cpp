@@ -5,6 +5,7 @@
 
 #include "window/game_rolling.hpp"
 #include "window/game_session.hpp"
+#include "window/practice_mode.hpp"
 #include "window/practice_table.hpp"
 
 namespace nineball::window {
@@ -149,6 +150,28 @@ TEST(Practice, BallsComeAndGoWithTheirNumbers) {
       EXPECT_EQ(r->pos, b.pos) << b.id;
     }
   }
+}
+
+TEST(Practice, TheTrayHoldsEveryBallOfTheGamesRackThatIsOffTheTable) {
+  // Eight-ball's rack has fifteen balls: one beyond the 9 taken off is in the tray too.
+  MatchSetup eight;
+  eight.game = rules::Game::EightBall;
+  GameSession s(eight, true);
+  EXPECT_TRUE(s.pocketedThisRack().empty());
+  PracticeMode practice{Match(eight)};
+  ASSERT_TRUE(practice.table().has(15));
+  EXPECT_TRUE(practice.offTable().empty());
+  struct QuietHost : PracticeHost {
+    bool aiming() const override { return true; }
+    void rebuildPractice() override { ++rebuilt; }
+    void takeCue(const PracticeShot&) override {}
+    void say(const std::string&, render::Tone) override {}
+    int rebuilt = 0;
+  } host;
+  practice.toggleBall(host, 15, {});
+  practice.toggleBall(host, 12, {});
+  EXPECT_EQ(practice.offTable(), (std::vector<int>{12, 15}));
+  EXPECT_EQ(host.rebuilt, 2);
 }
 
 }  // namespace
