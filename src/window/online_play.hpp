@@ -147,7 +147,7 @@ class OnlinePlay : public RemoteControl, private net::RackTable {
   net::LockstepDriver driver_;      // the turns, the hashes, the heal and the rack's allowance
   std::optional<net::WireTurn> pending_;      // the turn rolling, as it went over the wire
   std::optional<net::TurnMessage> outgoing_;  // this side's turn, sent once it has begun
-  GameSession* session_ = nullptr;            // the session driven (its relay is cleared)
+  GameSession* session_ = nullptr;  // the session driven (its relay is cleared): must outlive this
   bool playing_peer_turn_ = false;
   bool rematch_now_ = false;
   bool local_offer_ = false;

@@ -337,9 +337,10 @@ TEST(OnlineJoiner, AHostWhoseMatchIsNonsenseIsRefused) {
   config.side = net::Side::Joiner;
   config.address = {"127.0.0.1", port};
   config.name = "Bob";
+  // The session outlives the online game, which lets go of it when it ends (as in TableScreen).
+  GameSession session(nineBall());
   auto play = OnlinePlay::start(config, why);
   ASSERT_TRUE(play) << why;
-  GameSession session(nineBall());
   FakePeer host;
   ASSERT_TRUE(runUntil(*play, session, host, [&] {
     if (!host.link) {
