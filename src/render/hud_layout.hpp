@@ -40,16 +40,16 @@ struct HudLayout {
   /// and a little.
   static constexpr double kKeepClearReach = 0.03;
 
-  /// The layout for a view (its size and scale) and the dialog shown. The push-out choice and
-  /// the rack's end are strips across the table that leave the balls in sight: along a long
+  /// The layout for a view (its size and scale) and the dialog shown. A strip (the push-out
+  /// choice, the rack's end) lies across the table and leaves the balls in sight: along a long
   /// cushion when that hides none of `keep_clear` (the balls, m), else the place across the
-  /// table (or, failing that, over a HUD band) that hides the fewest. Help is wide.
-  static HudLayout of(const ViewTransform& zoomed_view, Overlay overlay = Overlay::None,
+  /// table (or, failing that, over a HUD band) that hides the fewest.
+  static HudLayout of(const ViewTransform& zoomed_view,
+                      const std::optional<DialogLook>& dialog = std::nullopt,
                       const std::vector<Vec2>& keep_clear = {}, bool three_buttons = false) {
     // The HUD does not zoom with the table.
     const ViewTransform view = zoomed_view.hud();
-    const bool strip = overlay == Overlay::PushOutChoice || overlay == Overlay::GameOver;
-    const bool wide = overlay == Overlay::Help;
+    const DialogLook look = dialog.value_or(DialogLook{});
     HudLayout h;
     const double s = view.scale();
     const PixelRect band = view.bottomBand();
@@ -70,14 +70,10 @@ struct HudLayout {
     h.message = {msg_left, band.top + 0.01 * s, msg_right - msg_left,
                  std::clamp(below, band.height - 0.02 * s, 2.0 * band.height)};
     const Vec2 c = view.toPixels({0.0, 0.0});
-    const double pw = (wide ? 2.0 : strip ? 1.5 : 1.3) * s;
-    const double ph = (overlay == Overlay::PushOutChoice ? 0.36
-                       : overlay == Overlay::GameOver    ? 0.5
-                       : wide                            ? 1.02
-                                                         : 0.6) *
-                      s;
+    const double pw = look.width * s;
+    const double ph = look.height * s;
     h.panel = {c.x - pw / 2.0, c.y - ph / 2.0, pw, ph};
-    if (strip) h.panel.top = stripTop(view, h.panel, keep_clear);
+    if (look.strip) h.panel.top = stripTop(view, h.panel, keep_clear);
     const double bh = 0.085 * s, gap = 0.08 * s;
     const double by = h.panel.top + ph - bh - 0.04 * s;
     if (three_buttons) {

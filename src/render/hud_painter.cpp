@@ -312,7 +312,7 @@ void HudPainter::drawBottom(sf::RenderTarget& target, const HudState& hud,
 void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
                              const HudLayout& layout) {
   const PixelRect p = layout.panel;
-  const bool big = hud.overlay == Overlay::Help;
+  const DialogLook look = hud.dialog.value_or(DialogLook{});
   batch_.clear();
   batch_.roundedRect(p.left, p.top, p.width, p.height, layout.text_px, kPanel);
   const bool buttons = !hud.button_left.empty() || !hud.button_right.empty();
@@ -331,7 +331,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
                        bottom - p.top - pad * 0.5};
   const double x = room.left;
   double title_size = layout.text_px * 1.3;
-  double line_size = big ? layout.text_px * 0.9 : layout.text_px;
+  double line_size = look.small_print ? layout.text_px * 0.9 : layout.text_px;
   // Lines that would not fit the room's height all shrink together.
   const double need = title_size * 1.7 + line_size * 1.45 * hud.overlay_lines.size();
   if (need > room.height) {
@@ -340,7 +340,7 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
     line_size *= k;
   }
   double y = room.top + title_size * 0.2;
-  const sf::Color title = hud.overlay == Overlay::GameOver ? kWin : kAccent;
+  const sf::Color title = look.win ? kWin : kAccent;
   text(target, hud.overlay_title, {x, y}, title_size, title, room, Align::Left, true);
   y += title_size * 1.7;
   for (const std::string& line : hud.overlay_lines) {
@@ -363,17 +363,17 @@ void HudPainter::drawOverlay(sf::RenderTarget& target, const HudState& hud,
 void HudPainter::draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud) {
   drawn_.clear();
   const HudLayout layout =
-      HudLayout::of(view, hud.overlay, hud.keep_clear, !hud.button_middle.empty());
+      HudLayout::of(view, hud.dialog, hud.keep_clear, !hud.button_middle.empty());
   drawPlayers(target, view, hud, layout);
   drawBottom(target, hud, layout);
-  if (hud.overlay != Overlay::None) drawOverlay(target, hud, layout);
+  if (hud.dialog) drawOverlay(target, hud, layout);
 }
 
 void HudPainter::drawDialog(sf::RenderTarget& target, const ViewTransform& view,
                             const HudState& hud) {
-  if (hud.overlay == Overlay::None) return;
+  if (!hud.dialog) return;
   drawOverlay(target, hud,
-              HudLayout::of(view, hud.overlay, hud.keep_clear, !hud.button_middle.empty()));
+              HudLayout::of(view, hud.dialog, hud.keep_clear, !hud.button_middle.empty()));
 }
 
 }  // namespace nineball::render

@@ -32,7 +32,7 @@ class HudPainter {
   }
 
   void draw(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
-  /// Only the dialog `hud.overlay` names, laid out as draw() would, its texts added to the
+  /// Only the dialog of `hud` (its `dialog`), laid out as draw() would, its texts added to the
   /// last draw's.
   void drawDialog(sf::RenderTarget& target, const ViewTransform& view, const HudState& hud);
   /// Every line of text and tray ball the last draw put on screen, for checks that nothing

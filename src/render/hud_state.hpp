@@ -20,8 +20,24 @@ struct PlayerPanel {
 /// How a message reads: plain, a foul, a win, a refusal.
 enum class Tone { Info, Foul, Win, Warning };
 
-/// A dialog over the table.
-enum class Overlay { None, Help, ConfirmQuit, PushOutChoice, GameOver };
+/// How a dialog over the table is laid out and lettered: a box in the middle of the table, or
+/// a strip across it that leaves the balls in HudState::keep_clear in sight. Sizes are metres
+/// at the table's scale (the HUD does not zoom). The window's dialogs choose their own look, so
+/// a new dialog adds nothing here.
+struct DialogLook {
+  double width = 1.3;
+  double height = 0.6;
+  bool strip = false;        ///< across the table, clear of the balls
+  bool small_print = false;  ///< many lines: a smaller type
+  bool win = false;          ///< the title in the win colour
+
+  /// A box in the middle (a question).
+  static DialogLook box() { return {}; }
+  /// A wide box of many lines (the help).
+  static DialogLook wide() { return {2.0, 1.02, false, true, false}; }
+  /// A strip `height` m high across the table, clear of the balls (a choice about them).
+  static DialogLook across(double height) { return {1.5, height, true, false, false}; }
+};
 
 /// Everything the HUD shows, filled by the game each frame. No SFML.
 struct HudState {
@@ -42,7 +58,7 @@ struct HudState {
   double elevation_deg = 0.0;  ///< the cue's tilt above the table
   double max_elevation_deg = 60.0;
   bool push_out_declared = false;
-  Overlay overlay = Overlay::None;
+  std::optional<DialogLook> dialog;  ///< the dialog over the table (none: none)
   /// The points on the table (m) a dialog should not cover: the balls the choice is about.
   std::vector<Vec2> keep_clear;
   std::string keys = "H help   Esc quit";  ///< the keys named under the power gauge

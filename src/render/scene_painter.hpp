@@ -82,7 +82,7 @@ class ScenePainter {
   const ViewTransform& view() const { return zoomed_; }
 
   void draw(sf::RenderTarget& target, const Frame& frame);
-  /// The dialog `hud` names (its overlay), over the picture draw() drew last: a dialog screen
+  /// The dialog of `hud` (its `dialog`), over the picture draw() drew last: a dialog screen
   /// draws itself so over the table. Its texts join hudTexts().
   void drawDialog(sf::RenderTarget& target, const HudState& hud) {
     hud_painter_.drawDialog(target, view_, hud);

@@ -27,11 +27,4 @@ bool leavingLosesNothing(const GameSession& session, const UiState& ui);
 /// "vs computer (medium)   O: opponent": who plays, as the HUD's top band says it.
 std::string opponentModeLabel(const Seat& opponent);
 
-/// The dialog on screen, if any (the same rule the input uses to route keys and clicks).
-render::Overlay activeOverlay(const GameSession& session, const UiState& ui);
-
-/// The dialog on screen offers snooker's third answer after a miss, the balls replaced (its
-/// middle button).
-bool replaceOffered(const GameSession& session, const UiState& ui);
-
 }  // namespace nineball::window

@@ -7,12 +7,12 @@
 #include "render/cue_stick_shape.hpp"
 #include "render/hud_layout.hpp"
 #include "window/frame_builder.hpp"
+#include "window/screens/dialog_contents.hpp"
 
 namespace nineball::window {
 namespace {
 
 using Key = sf::Keyboard::Key;
-using render::Overlay;
 
 // One tap of an arrow turns the aim this far (deg) or changes the speed this much (m/s); with
 // Ctrl or Alt, and a notch of the mouse wheel, turn it a tenth as far: a thin cut at the far
@@ -71,7 +71,7 @@ double heldRate(double held, double slow, double fast) {
 }  // namespace
 
 bool GameInput::dialogOpen() const {
-  return activeOverlay(session_, ui_) != Overlay::None;
+  return dialogCalledFor(session_, ui_) != DialogKind::None;
 }
 
 void GameInput::trackModifiers(const sf::Event::KeyEvent& key, bool pressed) {
@@ -140,7 +140,7 @@ void GameInput::handle(const sf::Event& event, const render::ViewTransform& view
 }
 
 void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
-  const Overlay overlay = activeOverlay(session_, ui_);
+  const DialogKind dialog = dialogCalledFor(session_, ui_);
   if (key.code == Key::F1) requests_.toggle_fullscreen = true;
   if (key.code == Key::F12) requests_.screenshot = true;
   if (key.code == Key::F5) requests_.save_rack = true;
@@ -149,7 +149,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
     return;
   }
   // The help and the quit question answer their own keys (their screens); the game waits.
-  if (overlay == Overlay::ConfirmQuit || overlay == Overlay::Help) return;
+  if (dialog == DialogKind::ConfirmQuit || dialog == DialogKind::Help) return;
   if (key.code == Key::Escape) {
     if (ui_.drag == Drag::Power) {
       session_.setSpeed(ui_.speed_before_drag);
@@ -184,7 +184,7 @@ void GameInput::keyPressed(const sf::Event::KeyEvent& key) {
   }
   if (seats_.controls(session_)) return;
   // The push-out choice and the rack's end answer their own keys (their screens).
-  if (overlay != Overlay::None) return;
+  if (dialog != DialogKind::None) return;
   if (session_.phase() != Phase::Aiming || ui_.drag != Drag::None) return;
   if (session_.practice() && practiceKey(key)) return;
   switch (key.code) {

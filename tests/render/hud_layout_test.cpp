@@ -15,11 +15,11 @@ TEST(HudLayout, ChoiceDialogsNeverCoverTheCueBall) {
                              {3840.0, 2160.0},
                              {500.0, 700.0}}) {
     const ViewTransform view(table, w, h);
-    for (Overlay overlay : {Overlay::PushOutChoice, Overlay::GameOver}) {
+    for (const DialogLook& look : {DialogLook::across(0.36), DialogLook::across(0.5)}) {
       // Every spot a cue ball can rest on, on a 2 cm grid.
       for (double x = -table.length / 2 + kR; x <= table.length / 2 - kR; x += 0.02) {
         for (double y = -table.width / 2 + kR; y <= table.width / 2 - kR; y += 0.02) {
-          const HudLayout layout = HudLayout::of(view, overlay, {Vec2{x, y}});
+          const HudLayout layout = HudLayout::of(view, look, {Vec2{x, y}});
           const PixelRect p = layout.panel;
           const Vec2 c = view.toPixels({x, y});
           const double r = view.px(kR);
@@ -34,9 +34,9 @@ TEST(HudLayout, ChoiceDialogsNeverCoverTheCueBall) {
 
 TEST(HudLayout, TheDialogsButtonsAreInsideItsPanel) {
   const ViewTransform view(TableDef{}, 1280, 800);
-  for (Overlay overlay :
-       {Overlay::Help, Overlay::ConfirmQuit, Overlay::PushOutChoice, Overlay::GameOver}) {
-    const HudLayout l = HudLayout::of(view, overlay, {Vec2{0.3, 0.2}});
+  for (const DialogLook& look :
+       {DialogLook::wide(), DialogLook::box(), DialogLook::across(0.36), DialogLook::across(0.5)}) {
+    const HudLayout l = HudLayout::of(view, look, {Vec2{0.3, 0.2}});
     for (const PixelRect& b : {l.button_left, l.button_right}) {
       EXPECT_GE(b.left, l.panel.left);
       EXPECT_LE(b.left + b.width, l.panel.left + l.panel.width);
@@ -54,8 +54,8 @@ TEST(HudLayout, TheChoiceStripHidesNoBallWhereItCanBePlacedSo) {
                                    {-0.6, -0.5}, {0.0, 0.4},   {0.1, -0.4}};
   for (const auto& [w, h] : {std::pair{1280.0, 800.0}, {640.0, 480.0}, {3840.0, 2160.0}}) {
     const ViewTransform view(table, w, h);
-    for (Overlay overlay : {Overlay::PushOutChoice, Overlay::GameOver}) {
-      const HudLayout layout = HudLayout::of(view, overlay, balls);
+    for (const DialogLook& look : {DialogLook::across(0.36), DialogLook::across(0.5)}) {
+      const HudLayout layout = HudLayout::of(view, look, balls);
       EXPECT_EQ(HudLayout::hiddenBy(view, layout.panel, balls), 0) << w << "x" << h;
     }
   }
@@ -68,7 +68,7 @@ TEST(HudLayout, WhenEveryPlaceHidesABallTheStripHidesTheFewest) {
   std::vector<Vec2> balls;
   for (double y = -0.6; y <= 0.6; y += 0.1) balls.push_back({0.0, y});
   const ViewTransform view(table, 1280, 800);
-  const HudLayout layout = HudLayout::of(view, Overlay::PushOutChoice, balls);
+  const HudLayout layout = HudLayout::of(view, DialogLook::across(0.36), balls);
   PixelRect along_cushion = layout.panel;
   along_cushion.top = view.toPixels({0.0, table.width / 2.0 - 0.04}).y;
   EXPECT_LT(HudLayout::hiddenBy(view, layout.panel, balls),
@@ -96,7 +96,7 @@ TEST(HudLayout, TheSpinLabelsLeaveRoomForTheCuesMarkerOnTheRing) {
 TEST(HudLayout, ThreeButtonsSitSideBySideInsideTheStrip) {
   for (const auto& [w, h] : {std::pair{640.0, 480.0}, {1280.0, 800.0}}) {
     const HudLayout l =
-        HudLayout::of(ViewTransform(TableDef{}, w, h), Overlay::PushOutChoice, {}, true);
+        HudLayout::of(ViewTransform(TableDef{}, w, h), DialogLook::across(0.36), {}, true);
     EXPECT_GE(l.button_left.left, l.panel.left);
     EXPECT_LT(l.button_left.left + l.button_left.width, l.button_middle.left);
     EXPECT_LT(l.button_middle.left + l.button_middle.width, l.button_right.left);

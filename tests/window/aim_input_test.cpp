@@ -122,7 +122,7 @@ TEST(DialogButtons, SnookersReplaceAfterAMissHasAButtonOfItsOwn) {
   const render::Frame f = buildFrame(t.s, t.ui, t.seats);
   EXPECT_EQ(f.hud.button_middle, "Replace (R)");
   const render::HudLayout layout =
-      render::HudLayout::of(t.view, f.hud.overlay, dialogKeepClear(t.s), true);
+      render::HudLayout::of(t.view, f.hud.dialog, dialogKeepClear(t.s), true);
   // Three buttons side by side inside the dialog.
   EXPECT_LT(layout.button_left.left + layout.button_left.width, layout.button_middle.left);
   EXPECT_LT(layout.button_middle.left + layout.button_middle.width, layout.button_right.left);

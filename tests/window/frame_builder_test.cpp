@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "window/game_rolling.hpp"
+#include "window/screens/dialog_contents.hpp"
 
 namespace nineball::window {
 namespace {
@@ -13,7 +14,8 @@ std::string leaveLine(const GameSession& s, const UiState& ui) {
   UiState open = ui;
   open.confirm_quit = true;
   const render::Frame f = buildFrame(s, open, Seats(1));
-  EXPECT_EQ(f.hud.overlay, render::Overlay::ConfirmQuit);
+  EXPECT_EQ(dialogCalledFor(s, open), DialogKind::ConfirmQuit);
+  EXPECT_TRUE(f.hud.dialog.has_value());
   return f.hud.overlay_lines.empty() ? "" : f.hud.overlay_lines.front();
 }
 
@@ -80,7 +82,9 @@ TEST(FrameBuilder, TheRacksEndSaysHowItEndedOnceAndTheHelpNamesTheLevels) {
   ASSERT_EQ(s.phase(), Phase::GameOver);
   UiState ui;
   const render::Frame over = buildFrame(s, ui, Seats(1));
-  ASSERT_EQ(over.hud.overlay, render::Overlay::GameOver);
+  ASSERT_EQ(dialogCalledFor(s, ui), DialogKind::GameOver);
+  ASSERT_TRUE(over.hud.dialog.has_value());
+  EXPECT_TRUE(over.hud.dialog->win);  // the rack's end titled in the win colour
   EXPECT_EQ(over.hud.message, s.message());
   for (const std::string& line : over.hud.overlay_lines) EXPECT_NE(line, s.message());
   // The help names the computer's seven levels, not the old three.

@@ -58,17 +58,17 @@ void RackEndScreen::click(DialogButton button) {
   if (button == DialogButton::Right) table().quit();
 }
 
-std::unique_ptr<DialogScreen> makeDialog(render::Overlay kind, DialogTable& table) {
+std::unique_ptr<DialogScreen> makeDialog(DialogKind kind, DialogTable& table) {
   switch (kind) {
-    case render::Overlay::Help:
+    case DialogKind::Help:
       return std::make_unique<HelpScreen>(table);
-    case render::Overlay::ConfirmQuit:
+    case DialogKind::ConfirmQuit:
       return std::make_unique<QuitScreen>(table);
-    case render::Overlay::PushOutChoice:
+    case DialogKind::PushOutChoice:
       return std::make_unique<PushOutScreen>(table);
-    case render::Overlay::GameOver:
+    case DialogKind::GameOver:
       return std::make_unique<RackEndScreen>(table);
-    case render::Overlay::None:
+    case DialogKind::None:
       break;
   }
   return nullptr;
@@ -77,7 +77,7 @@ std::unique_ptr<DialogScreen> makeDialog(render::Overlay kind, DialogTable& tabl
 void DialogSlot::follow(ScreenStack& screens, DialogTable& table) {
   // A dialog finished on top may already have left with the loop's other finished screens.
   if (shown_ && !screens.holds(*shown_)) shown_ = nullptr;
-  const render::Overlay wanted = table.dialogWanted();
+  const DialogKind wanted = table.dialogWanted();
   if (shown_ && shown_->kind() == wanted) return;
   if (shown_) screens.remove(*shown_);
   shown_ = nullptr;

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "nineball/vec2.hpp"
-#include "render/hud_state.hpp"
+#include "window/screens/dialog_contents.hpp"
 #include "window/screens/screen.hpp"
 #include "window/screens/screen_stack.hpp"
 
@@ -19,8 +19,8 @@ enum class DialogButton { None, Left, Middle, Right };
 class DialogTable {
  public:
   virtual ~DialogTable() = default;
-  /// The dialog the table's state calls for now (render::Overlay::None: none).
-  virtual render::Overlay dialogWanted() const = 0;
+  /// The dialog the table's state calls for now (DialogKind::None: none).
+  virtual DialogKind dialogWanted() const = 0;
   /// True while the computer or the player online has the table: theirs is the choice.
   virtual bool othersDecide() const = 0;
   virtual DialogButton buttonAt(Vec2 px) const = 0;
@@ -42,9 +42,9 @@ class DialogTable {
 /// state no longer calls for it (the table's DialogSlot swaps it for the next).
 class DialogScreen : public Screen {
  public:
-  DialogScreen(DialogTable& table, render::Overlay kind) : table_(table), kind_(kind) {}
+  DialogScreen(DialogTable& table, DialogKind kind) : table_(table), kind_(kind) {}
 
-  render::Overlay kind() const { return kind_; }
+  DialogKind kind() const { return kind_; }
   void event(const sf::Event& event) override;
   void update(double, bool) override {}
   void draw(sf::RenderTarget& target) override { table_.drawDialog(target); }
@@ -60,13 +60,13 @@ class DialogScreen : public Screen {
 
  private:
   DialogTable& table_;
-  const render::Overlay kind_;
+  const DialogKind kind_;
 };
 
 /// H: the keys and what they do. H, Esc or its button close it.
 class HelpScreen : public DialogScreen {
  public:
-  explicit HelpScreen(DialogTable& table) : DialogScreen(table, render::Overlay::Help) {}
+  explicit HelpScreen(DialogTable& table) : DialogScreen(table, DialogKind::Help) {}
 
  private:
   void key(sf::Keyboard::Key code) override;
@@ -76,7 +76,7 @@ class HelpScreen : public DialogScreen {
 /// Esc when leaving would lose the rack: Y or Enter leaves, N or Esc plays on.
 class QuitScreen : public DialogScreen {
  public:
-  explicit QuitScreen(DialogTable& table) : DialogScreen(table, render::Overlay::ConfirmQuit) {}
+  explicit QuitScreen(DialogTable& table) : DialogScreen(table, DialogKind::ConfirmQuit) {}
 
  private:
   void key(sf::Keyboard::Key code) override;
@@ -87,8 +87,7 @@ class QuitScreen : public DialogScreen {
 /// who chooses plays on (S), passes it back (P) or has the balls replaced (R, snooker).
 class PushOutScreen : public DialogScreen {
  public:
-  explicit PushOutScreen(DialogTable& table)
-      : DialogScreen(table, render::Overlay::PushOutChoice) {}
+  explicit PushOutScreen(DialogTable& table) : DialogScreen(table, DialogKind::PushOutChoice) {}
 
  private:
   void key(sf::Keyboard::Key code) override;
@@ -98,7 +97,7 @@ class PushOutScreen : public DialogScreen {
 /// The rack's (frame's, match's) end: R or Enter plays the next, its right button quits.
 class RackEndScreen : public DialogScreen {
  public:
-  explicit RackEndScreen(DialogTable& table) : DialogScreen(table, render::Overlay::GameOver) {}
+  explicit RackEndScreen(DialogTable& table) : DialogScreen(table, DialogKind::GameOver) {}
 
  private:
   void key(sf::Keyboard::Key code) override;
@@ -119,7 +118,7 @@ class DialogSlot {
   const DialogScreen* shown_ = nullptr;
 };
 
-/// The dialog screen of a kind (none for render::Overlay::None).
-std::unique_ptr<DialogScreen> makeDialog(render::Overlay kind, DialogTable& table);
+/// The dialog screen of a kind (none for DialogKind::None).
+std::unique_ptr<DialogScreen> makeDialog(DialogKind kind, DialogTable& table);
 
 }  // namespace nineball::window

@@ -2,17 +2,18 @@
 
 #include "render/hud_layout.hpp"
 #include "window/frame_builder.hpp"
+#include "window/screens/dialog_contents.hpp"
 
 namespace nineball::window {
 
-render::Overlay TableDialogs::dialogWanted() const {
-  return activeOverlay(session_, ui_);
+DialogKind TableDialogs::dialogWanted() const {
+  return dialogCalledFor(session_, ui_);
 }
 
 DialogButton TableDialogs::buttonAt(Vec2 px) const {
   const bool replace = replaceOffered(session_, ui_);
   const render::HudLayout layout = render::HudLayout::of(
-      hooks_.view(), activeOverlay(session_, ui_), dialogKeepClear(session_), replace);
+      hooks_.view(), lookOf(dialogCalledFor(session_, ui_)), dialogKeepClear(session_), replace);
   if (layout.button_left.contains(px)) return DialogButton::Left;
   if (layout.button_right.contains(px)) return DialogButton::Right;
   if (replace && layout.button_middle.contains(px)) return DialogButton::Middle;

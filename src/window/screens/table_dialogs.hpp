@@ -13,7 +13,7 @@
 
 namespace nineball::window {
 
-/// The table as its dialogs see it: its state calls for them (activeOverlay), their buttons lie
+/// The table as its dialogs see it: its state calls for them (dialogCalledFor), their buttons lie
 /// where the HUD lays them out, their answers go to the session, the window's flags and
 /// requests.
 class TableDialogs : public DialogTable {
@@ -30,7 +30,7 @@ class TableDialogs : public DialogTable {
                Hooks hooks)
       : session_(session), ui_(ui), seats_(seats), requests_(requests), hooks_(std::move(hooks)) {}
 
-  render::Overlay dialogWanted() const override;
+  DialogKind dialogWanted() const override;
   bool othersDecide() const override { return seats_.controls(session_); }
   DialogButton buttonAt(Vec2 px) const override;
   void passDown(const sf::Event& event) override { hooks_.pass_down(event); }

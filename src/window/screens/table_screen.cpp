@@ -8,6 +8,7 @@
 #include "window/frame_builder.hpp"
 #include "window/rack_save.hpp"
 #include "window/rack_script.hpp"
+#include "window/screens/dialog_contents.hpp"
 
 namespace nineball::window {
 namespace {
@@ -111,7 +112,7 @@ void TableScreen::draw(sf::RenderTarget& target) {
     picture.bank = bankGuide(session_.match().world().table(), picture.ball_radius, picture.balls,
                              *picture.guide);
   }
-  if (picture.hud.overlay == render::Overlay::GameOver) {
+  if (dialogCalledFor(session_, ui_) == DialogKind::GameOver) {
     for (int seat = 0; seat < 2; ++seat) {
       picture.hud.overlay_lines.push_back(session_.seatName(seat) + ": " + stats_.line(seat));
     }
@@ -124,7 +125,7 @@ void TableScreen::draw(sf::RenderTarget& target) {
   }
   // The dialog is its own screen's to draw, over this picture (DialogScreen).
   dialog_hud_ = picture.hud;
-  picture.hud.overlay = render::Overlay::None;
+  picture.hud.dialog.reset();
   painter.draw(target, picture);
 }
 
@@ -163,7 +164,7 @@ void TableScreen::followTable() {
 // The table seen as close as the player asked, round the cue ball (following it as it rolls) or
 // the point the wheel zoomed at; a dialog shows the whole table.
 void TableScreen::zoomView(const render::Frame& picture) {
-  const bool dialog = picture.hud.overlay != render::Overlay::None;
+  const bool dialog = picture.hud.dialog.has_value();
   Vec2 focus = session_.cuePosition();
   const int shooter = session_.practice() ? kCueBall : session_.shooterBall();
   for (const BallState& b : picture.balls) {

@@ -14,12 +14,10 @@
 namespace nineball::window {
 namespace {
 
-using render::Overlay;
-
 // Writes down what the dialogs ask of it; `wanted` is the dialog its state calls for.
 class RecordingTable : public DialogTable {
  public:
-  Overlay dialogWanted() const override { return wanted; }
+  DialogKind dialogWanted() const override { return wanted; }
   bool othersDecide() const override { return others_decide; }
   DialogButton buttonAt(Vec2 px) const override {
     return px.x < 100   ? DialogButton::Left
@@ -33,11 +31,11 @@ class RecordingTable : public DialogTable {
   void drawDialog(sf::RenderTarget&) override { calls.push_back("dialog drawn"); }
   void closeHelp() override {
     calls.push_back("help closed");
-    wanted = Overlay::None;
+    wanted = DialogKind::None;
   }
   void closeQuestion() override {
     calls.push_back("question closed");
-    wanted = Overlay::None;
+    wanted = DialogKind::None;
   }
   void leave() override { calls.push_back("leave"); }
   void decide(bool shoot_now, bool replace) override {
@@ -47,9 +45,9 @@ class RecordingTable : public DialogTable {
   void rematch() override { calls.push_back("rematch"); }
   void quit() override { calls.push_back("quit"); }
 
-  Overlay wanted = Overlay::None;
+  DialogKind wanted = DialogKind::None;
   bool others_decide = false;
-  std::optional<Overlay> after_pass_down;  // the dialog the table's own handling calls for
+  std::optional<DialogKind> after_pass_down;  // the dialog the table's own handling calls for
   std::vector<std::string> calls;
 };
 
@@ -101,7 +99,7 @@ struct DialogStack {
     screens.push(std::move(screen));
   }
   // The table's state calls for `kind`: the slot follows it.
-  void want(Overlay kind) {
+  void want(DialogKind kind) {
     table.wanted = kind;
     slot.follow(screens, table);
   }
@@ -113,22 +111,22 @@ struct DialogStack {
     slot.follow(screens, table);
     return table.calls;
   }
-  Overlay topKind() {
+  DialogKind topKind() {
     const auto* dialog = dynamic_cast<const DialogScreen*>(&screens.top());
-    return dialog ? dialog->kind() : Overlay::None;
+    return dialog ? dialog->kind() : DialogKind::None;
   }
 };
 
 TEST(DialogScreens, TheDialogTheTableCallsForLiesOverItAndLeavesWhenTheStateMovesOn) {
   DialogStack s;
-  s.want(Overlay::GameOver);
+  s.want(DialogKind::GameOver);
   ASSERT_EQ(s.screens.size(), 2u);
-  EXPECT_EQ(s.topKind(), Overlay::GameOver);
+  EXPECT_EQ(s.topKind(), DialogKind::GameOver);
   EXPECT_FALSE(s.screens.top().covers());  // the table shows beneath, as it did
-  s.want(Overlay::Help);                   // H over the rack's end: one dialog at a time
+  s.want(DialogKind::Help);                // H over the rack's end: one dialog at a time
   EXPECT_EQ(s.screens.size(), 2u);
-  EXPECT_EQ(s.topKind(), Overlay::Help);
-  s.want(Overlay::None);
+  EXPECT_EQ(s.topKind(), DialogKind::Help);
+  s.want(DialogKind::None);
   EXPECT_EQ(s.screens.size(), 1u);
   EXPECT_EQ(&s.screens.top(), s.bottom);
 }
@@ -138,30 +136,30 @@ TEST(DialogScreens, ADialogCalledForUnderTheSettingsLiesBeneathThem) {
   auto settings = std::make_unique<PlainScreen>(false);
   PlainScreen& over = *settings;
   s.screens.push(std::move(settings));
-  s.want(Overlay::GameOver);  // the rack ended as the balls rolled on beneath the settings
+  s.want(DialogKind::GameOver);  // the rack ended as the balls rolled on beneath the settings
   ASSERT_EQ(s.screens.size(), 3u);
   EXPECT_EQ(&s.screens.top(), &over);
   EXPECT_FALSE(s.slot.onTop(s.screens));
   s.screens.event(pressOf(sf::Keyboard::R));  // the settings' key, not the dialog's
   EXPECT_EQ(over.events, 1);
   EXPECT_TRUE(s.table.calls.empty());
-  s.want(Overlay::None);  // gone from beneath the settings, which stay
+  s.want(DialogKind::None);  // gone from beneath the settings, which stay
   EXPECT_EQ(s.screens.size(), 2u);
   EXPECT_EQ(&s.screens.top(), &over);
 }
 
 TEST(DialogScreens, TheHelpClosesOnHOrEscOrItsButtonAndLeavesOtherKeysToTheTable) {
   DialogStack s;
-  s.want(Overlay::Help);
+  s.want(DialogKind::Help);
   EXPECT_TRUE(s.slot.onTop(s.screens));
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::F12)), std::vector<std::string>{"table key"});
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::H)),
             (std::vector<std::string>{"table key", "help closed"}));
   EXPECT_EQ(s.screens.size(), 1u);
-  s.want(Overlay::Help);
+  s.want(DialogKind::Help);
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Escape)),
             (std::vector<std::string>{"table key", "help closed"}));
-  s.want(Overlay::Help);
+  s.want(DialogKind::Help);
   EXPECT_EQ(s.send(leftPressAt(50)), std::vector<std::string>{"table event"});
   EXPECT_EQ(s.send(leftPressAt(250)), (std::vector<std::string>{"table event", "help closed"}));
   EXPECT_EQ(s.screens.size(), 1u);
@@ -169,7 +167,7 @@ TEST(DialogScreens, TheHelpClosesOnHOrEscOrItsButtonAndLeavesOtherKeysToTheTable
 
 TEST(DialogScreens, TheQuitQuestionLeavesOnYOrEnterAndPlaysOnOnNOrEsc) {
   DialogStack s;
-  s.want(Overlay::ConfirmQuit);
+  s.want(DialogKind::ConfirmQuit);
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Space)), std::vector<std::string>{"table key"});
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Y)), (std::vector<std::string>{"table key", "leave"}));
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Enter)), (std::vector<std::string>{"table key", "leave"}));
@@ -177,13 +175,13 @@ TEST(DialogScreens, TheQuitQuestionLeavesOnYOrEnterAndPlaysOnOnNOrEsc) {
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::N)),
             (std::vector<std::string>{"table key", "question closed"}));
   EXPECT_EQ(s.screens.size(), 1u);
-  s.want(Overlay::ConfirmQuit);
+  s.want(DialogKind::ConfirmQuit);
   EXPECT_EQ(s.send(leftPressAt(250)), (std::vector<std::string>{"table event", "question closed"}));
 }
 
 TEST(DialogScreens, ThePushOutChoiceIsThePlayersOnlyWhenTheComputerDoesNotHaveIt) {
   DialogStack s;
-  s.want(Overlay::PushOutChoice);
+  s.want(DialogKind::PushOutChoice);
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::S)),
             (std::vector<std::string>{"table key", "decide shoot"}));
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::P)),
@@ -199,7 +197,7 @@ TEST(DialogScreens, ThePushOutChoiceIsThePlayersOnlyWhenTheComputerDoesNotHaveIt
 
 TEST(DialogScreens, TheRacksEndPlaysTheNextOnROrEnterAndItsRightButtonQuits) {
   DialogStack s;
-  s.want(Overlay::GameOver);
+  s.want(DialogKind::GameOver);
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Enter)),
             (std::vector<std::string>{"table key", "rematch"}));
   EXPECT_EQ(s.send(leftPressAt(250)), (std::vector<std::string>{"table event", "quit"}));
@@ -210,18 +208,18 @@ TEST(DialogScreens, TheRacksEndPlaysTheNextOnROrEnterAndItsRightButtonQuits) {
 
 TEST(DialogScreens, AKeyThatCalledAnotherDialogIsNotAnsweredByTheOneItLeft) {
   DialogStack s;
-  s.want(Overlay::GameOver);
+  s.want(DialogKind::GameOver);
   // The table, hearing the key first, calls for the quit question instead: the rack's end
   // no longer answers (no rematch), and the question takes its place.
-  s.table.after_pass_down = Overlay::ConfirmQuit;
+  s.table.after_pass_down = DialogKind::ConfirmQuit;
   EXPECT_EQ(s.send(pressOf(sf::Keyboard::Enter)), std::vector<std::string>{"table key"});
-  EXPECT_EQ(s.topKind(), Overlay::ConfirmQuit);
+  EXPECT_EQ(s.topKind(), DialogKind::ConfirmQuit);
   EXPECT_EQ(s.screens.size(), 2u);
 }
 
 TEST(DialogScreens, TheDialogIsDrawnByTheTableOverItsPicture) {
   DialogStack s;
-  s.want(Overlay::PushOutChoice);
+  s.want(DialogKind::PushOutChoice);
   NoDialogTarget target;
   s.screens.draw(target);
   EXPECT_EQ(s.table.calls, std::vector<std::string>{"dialog drawn"});

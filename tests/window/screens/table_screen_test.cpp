@@ -55,9 +55,9 @@ struct TableOnStack {
       table->followDialog();
     }
   }
-  render::Overlay topDialog() {
+  DialogKind topDialog() {
     const auto* dialog = dynamic_cast<const DialogScreen*>(&window.screens().top());
-    return dialog ? dialog->kind() : render::Overlay::None;
+    return dialog ? dialog->kind() : DialogKind::None;
   }
   WindowStandIn window;
   TableScreen* table = nullptr;
@@ -87,7 +87,7 @@ TEST(TableScreen, HOpensTheHelpOverTheTableAndTheHelpOnTopTakesTheNextH) {
   TableOnStack t;
   t.press(sf::Keyboard::H);
   EXPECT_EQ(t.window.screens().size(), 2u);
-  EXPECT_EQ(t.topDialog(), render::Overlay::Help);
+  EXPECT_EQ(t.topDialog(), DialogKind::Help);
   t.press(sf::Keyboard::H);  // the help's key now, not the table's
   EXPECT_EQ(t.window.screens().size(), 1u);
   EXPECT_FALSE(t.table->ui().help);
@@ -98,9 +98,9 @@ TEST(TableScreen, EscWithARackInPlayAsksAndTheQuestionAnswersN) {
   ASSERT_TRUE(t.table->session().shoot());
   ASSERT_TRUE(roll(t.table->session()));
   t.press(sf::Keyboard::Escape);
-  EXPECT_EQ(t.topDialog(), render::Overlay::ConfirmQuit);
+  EXPECT_EQ(t.topDialog(), DialogKind::ConfirmQuit);
   t.press(sf::Keyboard::Space);  // not the question's answer: the rack is not shot meanwhile
-  EXPECT_EQ(t.topDialog(), render::Overlay::ConfirmQuit);
+  EXPECT_EQ(t.topDialog(), DialogKind::ConfirmQuit);
   EXPECT_EQ(t.table->session().phase(), Phase::Aiming);
   t.press(sf::Keyboard::N);
   EXPECT_EQ(t.window.screens().size(), 1u);
