@@ -224,6 +224,7 @@ std::optional<int> GameLoop::startMenu() {
 
 // The start menu over the table, on the one event loop; menuClosed() once the player chose.
 void GameLoop::showStartMenu() {
+  menu_open_ = true;
   screens_.push(std::make_unique<StartMenuScreen>(
       menuContext(), table_.session(), table_.seats(), settings_, table_.turnCounter(),
       [this](MenuModel::Outcome outcome, bool started) { menuClosed(outcome, started); },
@@ -231,6 +232,7 @@ void GameLoop::showStartMenu() {
 }
 
 void GameLoop::menuClosed(MenuModel::Outcome outcome, bool started) {
+  menu_open_ = false;
   if (!started) {
     window_->close();
     return;
@@ -344,7 +346,7 @@ void GameLoop::prepareFrames(const GameStart& start) {
   table_.seats().computer().setWaitForPlans(driver_.picture());
   demo_break_ = driver_.breaksForDemo() && start.turns.empty() && !table_.online();
   // Under a start menu, the game the frames show is the one chosen there.
-  if (screens_.size() > 1) {
+  if (menu_open_) {
     demo_due_ = true;
   } else {
     beginFrames();
@@ -383,6 +385,8 @@ int GameLoop::run() {
     // A screen that came or went (the menu opened by Esc) is drawn at once.
     if (waitWhileIdle(screens_.takeChanged() || changed)) continue;
     screens_.update(driver_.frameSeconds(frame_clock_.restart().asSeconds()));
+    // A screen the frame ended (the online lobby once the friend came) leaves at once.
+    if (screens_.removeFinished()) table_.followTable();
     // The frame's play may have ended the rack or called for a choice.
     table_.followDialog();
     draw();

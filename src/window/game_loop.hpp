@@ -115,6 +115,7 @@ class GameLoop : private TableWindow {
   ScreenStack screens_;
   TableScreen& table_;       // the match on the table, its state and its play
   bool demo_break_ = false;  // --frames on a table with no script: a break to watch
+  bool menu_open_ = false;   // the start menu lies over the table
   bool demo_due_ = false;    // --frames' demo break and --replay wait for the start menu's game
   FrameTimer moving_;
   sf::Clock frame_clock_;

@@ -83,13 +83,16 @@ class OnlinePlay : public RemoteControl, private net::RackTable {
   /// True once the out-of-step or refusal was final (exit status for tests).
   bool failed() const { return failed_; }
   /// The line the HUD shows while not playing: waiting, connecting, lost, over; else empty.
-  std::string banner(const GameSession& session) const;
+  std::string banner() const;
   /// This side is done with the rack (it is over and settled, this side's script ran out, or
   /// the other side's did): a --screenshot run takes its picture.
   bool finished(const GameSession& session) const;
   /// Leaves: Bye with `reason`.
   void leave(const std::string& reason);
   const std::string& peerName() const { return peer_name_; }
+  net::Side side() const { return config_.side; }
+  /// Host: the port it listens on. Joiner: the host's.
+  unsigned short port() const { return config_.address.port; }
   /// Host: the join code. Joiner: the seat token the host handed out (empty before).
   const std::string& joinCode() const { return config_.code; }
   const std::string& seatToken() const { return config_.seat_token; }

@@ -35,7 +35,7 @@ double OnlinePlay::pull() const {
   return std::clamp(peer_power_, 0.0, 1.0) * render::CueStickShape::kMaxPull;
 }
 
-std::string OnlinePlay::banner(const GameSession& session) const {
+std::string OnlinePlay::banner() const {
   switch (stage()) {
     case Stage::Waiting:
       if (config_.side == net::Side::Host) {
@@ -56,12 +56,13 @@ std::string OnlinePlay::banner(const GameSession& session) const {
     case Stage::Playing:
       break;
   }
-  (void)session;
   return "";
 }
 
 std::string OnlinePlay::status(const GameSession& session) const {
-  if (stage() != Stage::Playing) return banner(session);
+  // Before the game began, the lobby over the table says how the link stands.
+  if (!started() && stage() != Stage::Over) return "Waiting for the online game to begin...";
+  if (stage() != Stage::Playing) return banner();
   if (pending_ || (driver_.begun() && !driver_.settled())) {
     return "Waiting for " + peer_name_ + "'s table to agree...";
   }

@@ -243,9 +243,9 @@ TEST_F(OnlineHost, ALostLinkPausesTheGameAndCountsDown) {
   peer_.link.reset();  // the friend's cable pulled
   ASSERT_TRUE(
       runUntil(*play_, session_, peer_, [&] { return play_->stage() == OnlinePlay::Stage::Lost; }));
-  EXPECT_NE(play_->banner(session_).find("Connection lost - waiting for Bob to rejoin (1:00)"),
+  EXPECT_NE(play_->banner().find("Connection lost - waiting for Bob to rejoin (1:00)"),
             std::string::npos)
-      << play_->banner(session_);
+      << play_->banner();
   // The break under way rolls on; then nobody plays until the friend is back.
   ASSERT_TRUE(
       runUntil(*play_, session_, peer_, [&] { return session_.phase() != Phase::Rolling; }));
@@ -256,8 +256,7 @@ TEST_F(OnlineHost, ALostLinkPausesTheGameAndCountsDown) {
 // Issue 46: the window's host lets in only a friend with the code, and nobody else into a
 // taken seat; it shows the code beside its address.
 TEST_F(OnlineHost, AStrangerWithoutTheCodeIsRefusedAndTheHostWaitsOn) {
-  EXPECT_NE(play_->banner(session_).find("--code 7KQ4-ZP2M"), std::string::npos)
-      << play_->banner(session_);
+  EXPECT_NE(play_->banner().find("--code 7KQ4-ZP2M"), std::string::npos) << play_->banner();
   peer_.send(net::helloFrom("Eve", "AAAA-BBBB"));
   std::optional<net::Refuse> refused;
   ASSERT_TRUE(runUntil(*play_, session_, peer_,

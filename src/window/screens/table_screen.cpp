@@ -9,6 +9,7 @@
 #include "window/rack_save.hpp"
 #include "window/rack_script.hpp"
 #include "window/screens/dialog_contents.hpp"
+#include "window/screens/online_lobby_screen.hpp"
 
 namespace nineball::window {
 namespace {
@@ -119,8 +120,9 @@ void TableScreen::draw(sf::RenderTarget& target) {
   }
   if (online_) {
     picture.hud.mode = online_->started() ? "online vs " + online_->peerName() : "online: waiting";
-    if (online_->stage() != OnlinePlay::Stage::Playing) {
-      picture.hud.status = online_->banner(session_);
+    // Before the game began, its lobby says how the link stands.
+    if (online_->started() && online_->stage() != OnlinePlay::Stage::Playing) {
+      picture.hud.status = online_->banner();
     }
   }
   // The dialog is its own screen's to draw, over this picture (DialogScreen).
@@ -138,6 +140,22 @@ void TableScreen::updateOnline(double dt) {
     stats_ = SessionStats{};
     followTable();
   }
+}
+
+void TableScreen::setOnline(std::unique_ptr<OnlinePlay> online) {
+  online_ = std::move(online);
+  OnlineLobbyScreen::Hooks hooks;
+  hooks.online = [this]() -> const OnlinePlay* { return online_.get(); };
+  hooks.view = [this]() -> const render::ViewTransform& { return window_.pointerView(); };
+  // Leaving the lobby leaves as Esc's question would: to the menu, or out of the program.
+  hooks.cancel = [this] {
+    WindowRequests& requests = input_.requests();
+    (ui_.leave_to_menu ? requests.menu : requests.quit) = true;
+  };
+  hooks.draw = [this](sf::RenderTarget& target, const render::HudState& hud) {
+    window_.painter().drawDialog(target, hud);
+  };
+  window_.screens().push(std::make_unique<OnlineLobbyScreen>(std::move(hooks)));
 }
 
 void TableScreen::leaveOnline(const std::string& why) {

@@ -68,7 +68,8 @@ class TableScreen : public Screen {
   const GameSession::TurnObserver& turnCounter() const { return count_; }
   /// The game against a player at another computer (nullptr: none).
   OnlinePlay* online() { return online_.get(); }
-  void setOnline(std::unique_ptr<OnlinePlay> online) { online_ = std::move(online); }
+  /// The online game begun: its lobby over the table until the two sides have greeted.
+  void setOnline(std::unique_ptr<OnlinePlay> online);
   /// The online game left (`why` told to the other side), the remote seat cleared.
   void leaveOnline(const std::string& why);
   /// --watch: the script's turns to play on screen, one after another.

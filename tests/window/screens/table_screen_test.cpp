@@ -11,33 +11,10 @@
 
 #include "window/game_rolling.hpp"
 #include "window/input_events.hpp"
+#include "window/screens/window_stand_in.hpp"
 
 namespace nineball::window {
 namespace {
-
-// The window as the table sees it: a view for the pointer (no painter: nothing is drawn, and
-// there is no display), the settings, the stack, and what the table asked of it written down.
-class WindowStandIn : public TableWindow {
- public:
-  render::ScenePainter& painter() override {
-    ADD_FAILURE() << "the table's keys need no painter";
-    std::abort();
-  }
-  const render::ViewTransform& pointerView() override { return view_; }
-  Settings& settings() override { return settings_; }
-  ScreenStack& screens() override { return screens_; }
-  audio::ImpactSounds* sounds() override { return nullptr; }
-  void openSettings() override { ++settings_opened; }
-  void applySound() override { ++sound_applied; }
-  void saveSettingsNow() override { ++settings_saved; }
-
-  int settings_opened = 0, sound_applied = 0, settings_saved = 0;
-
- private:
-  render::ViewTransform view_{TableDef{}, 1280, 800};
-  Settings settings_;
-  ScreenStack screens_;
-};
 
 // A table at the bottom of the stand-in window's stack.
 struct TableOnStack {
@@ -59,7 +36,7 @@ struct TableOnStack {
     const auto* dialog = dynamic_cast<const DialogScreen*>(&window.screens().top());
     return dialog ? dialog->kind() : DialogKind::None;
   }
-  WindowStandIn window;
+  test::WindowStandIn window;
   TableScreen* table = nullptr;
 };
 
