@@ -16,11 +16,11 @@
 #include "render/png_capture.hpp"
 #include "window/frame_builder.hpp"
 #include "window/menu_screen.hpp"
+#include "window/online_start.hpp"
 #include "window/rack_save.hpp"
 #include "window/rack_seed.hpp"
 #include "window/screens/settings_screen.hpp"
 #include "window/screens/start_menu_screen.hpp"
-#include "window/seat_token_file.hpp"
 #include "window/start_menu.hpp"
 #include "window/window_icon.hpp"
 #include "window/window_placement.hpp"
@@ -265,64 +265,22 @@ void GameLoop::openSettings() {
 
 // --host / --join: the link, and this side's seat named. Nothing when the game goes on.
 std::optional<int> GameLoop::startOnline(const GameStart& start) {
-  OnlineConfig config;
-  config.side = options_.host_port ? net::Side::Host : net::Side::Joiner;
-  std::string why;
-  if (config.side == net::Side::Host) {
-    config.address.port = *options_.host_port;
-  } else {
-    config.address = *net::parseAddress(options_.join, why);  // checked with the options
-  }
-  config.name = options_.name;
-  config.code = options_.code;
-  config.match = start.online_match;
-  config.scripted = !options_.script.empty();
-  config.script = start.turns;
+  OnlineConfig config = onlineConfigFromOptions(options_, start);
   driver_.boundOnlineWaits(config);
-  if (!beginOnline(config, why)) {
+  std::string why;
+  if (!table_.beginOnline(config, settings_.last.names[0], why)) {
     err_ << "nineball: --host " << config.address.port << ": " << why << '\n';
     return 1;
   }
   return std::nullopt;
 }
 
-// The link opened (the host's port) and the seats named; false, with `why`, when the port is
-// taken.
-bool GameLoop::beginOnline(OnlineConfig config, std::string& why) {
-  const std::string remembered = settings_.last.names[0];
-  if (config.name.empty()) config.name = remembered;
-  // The default name on both sides would show both players as "Player 1".
-  if (config.side == net::Side::Joiner && config.name == "Player 1") config.name = "Player 2";
-  if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
-  std::unique_ptr<OnlinePlay> online = OnlinePlay::start(config, why);
-  if (!online) return false;
-  GameSession& session = table_.session();
-  table_.seats().setOpponent(session, HumanSeat{});
-  const int own = config.side == net::Side::Host ? 0 : 1;
-  table_.seats().setRemote(1 - own, *online);
-  table_.setOnline(std::move(online));
-  session.setSeatName(own, config.name);
-  session.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
-  return true;
-}
-
-// The start menu's "Play online": host on the default port, or join the address typed there.
+// The start menu's "Play online": the table hosts or joins as the menu asked.
 void GameLoop::startOnlineFromMenu(MenuModel::Outcome outcome) {
-  if (outcome != MenuModel::Outcome::Host && outcome != MenuModel::Outcome::Join) return;
-  OnlineConfig config;
+  const std::optional<OnlineConfig> config =
+      onlineConfigFromMenu(outcome, settings_, table_.session().setup());
   std::string why;
-  if (outcome == MenuModel::Outcome::Host) {
-    config.side = net::Side::Host;
-    config.address.port = net::kDefaultPort;
-    config.match = onlineMatchOf(table_.session().setup());
-  } else {
-    config.side = net::Side::Joiner;
-    config.address = net::parseAddress(settings_.join_address, why).value_or(net::Address{});
-    config.code = settings_.join_code;
-  }
-  // The name typed on the menu's main screen (seat 1), as a game at this computer uses it.
-  config.name = settings_.last.names[0];
-  if (!beginOnline(config, why)) {
+  if (config && !table_.beginOnline(*config, settings_.last.names[0], why)) {
     table_.session().say("Cannot host: " + why + ". Playing at this computer instead.",
                          render::Tone::Warning);
   }
@@ -505,28 +463,9 @@ void GameLoop::capFrameRate() {
   }
 }
 
-void GameLoop::saveRackInPlay() {
-  const GameSession& session = table_.session();
-  if (!keep_rack_ || session.practice()) return;
-  // A rack in play is kept for the next start (a finished one was forgotten as it ended;
-  // a rack not yet broken leaves an older save alone).
-  if (session.phase() == Phase::GameOver || session.rackTurns().empty()) return;
-  const std::string path = rackSavePath();
-  std::string why;
-  if (saveRack(saveOf(session, table_.seats().opponent()), path, why)) {
-    logger("game")->info("rack saved to {}", path);
-  } else {
-    logger("game")->warn("rack not saved: {}", why);
-  }
-}
-
 // Esc: the rack kept as on quitting, then the start menu (its Resume picks the rack up).
 void GameLoop::backToMenu() {
-  if (table_.online()) {
-    table_.leaveOnline("the player left to the menu");
-  } else {
-    saveRackInPlay();
-  }
+  table_.leave("the player left to the menu");
   table_.leaveForMenu();
   showStartMenu();
 }
@@ -535,12 +474,7 @@ int GameLoop::finish() {
   // A screen still open over the table closes as its own way out would (the settings kept).
   screens_.closeDownTo(1);
   logFrameRate(moving_, frame_);
-  if (table_.online()) {
-    // An online rack is not a saved rack to resume alone.
-    table_.leaveOnline("the player quit");
-  } else {
-    saveRackInPlay();
-  }
+  table_.leave("the player quit");
   return 0;
 }
 

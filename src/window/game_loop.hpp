@@ -69,7 +69,6 @@ class GameLoop : private TableWindow {
   void beginFrames();
   void prepareFrames(const GameStart& start);
   std::optional<int> startOnline(const GameStart& start);
-  bool beginOnline(OnlineConfig config, std::string& why);
   void startOnlineFromMenu(MenuModel::Outcome outcome);
   std::optional<CaptureDriver::OnlineEnd> onlineEnd();
 
@@ -81,7 +80,6 @@ class GameLoop : private TableWindow {
   void present(bool rolling);
   void answerRequests();
   void capFrameRate();
-  void saveRackInPlay();
   void backToMenu();
   int finish();
 

@@ -10,6 +10,7 @@
 #include "window/rack_script.hpp"
 #include "window/screens/dialog_contents.hpp"
 #include "window/screens/online_lobby_screen.hpp"
+#include "window/seat_token_file.hpp"
 
 namespace nineball::window {
 namespace {
@@ -142,6 +143,23 @@ void TableScreen::updateOnline(double dt) {
   }
 }
 
+bool TableScreen::beginOnline(OnlineConfig config, const std::string& remembered_name,
+                              std::string& why) {
+  if (config.name.empty()) config.name = remembered_name;
+  // The default name on both sides would show both players as "Player 1".
+  if (config.side == net::Side::Joiner && config.name == "Player 1") config.name = "Player 2";
+  if (config.side == net::Side::Joiner) config.seat_file = seatTokenPath();
+  std::unique_ptr<OnlinePlay> online = OnlinePlay::start(config, why);
+  if (!online) return false;
+  seats_.setOpponent(session_, HumanSeat{});
+  const int own = config.side == net::Side::Host ? 0 : 1;
+  seats_.setRemote(1 - own, *online);
+  setOnline(std::move(online));
+  session_.setSeatName(own, config.name);
+  session_.setSeatName(1 - own, config.side == net::Side::Host ? "Your friend" : "Host");
+  return true;
+}
+
 void TableScreen::setOnline(std::unique_ptr<OnlinePlay> online) {
   online_ = std::move(online);
   OnlineLobbyScreen::Hooks hooks;
@@ -163,6 +181,29 @@ void TableScreen::leaveOnline(const std::string& why) {
   online_->leave(why);
   seats_.clearRemote();
   online_.reset();
+}
+
+void TableScreen::leave(const std::string& why) {
+  if (online_) {
+    // An online rack is not a saved rack to resume alone.
+    leaveOnline(why);
+  } else {
+    saveRackInPlay();
+  }
+}
+
+void TableScreen::saveRackInPlay() {
+  if (!keep_rack_ || session_.practice()) return;
+  // A rack in play is kept for the next start (a finished one was forgotten as it ended;
+  // a rack not yet broken leaves an older save alone).
+  if (session_.phase() == Phase::GameOver || session_.rackTurns().empty()) return;
+  const std::string path = rackSavePath();
+  std::string why;
+  if (saveRack(saveOf(session_, seats_.opponent()), path, why)) {
+    logger("game")->info("rack saved to {}", path);
+  } else {
+    logger("game")->warn("rack not saved: {}", why);
+  }
 }
 
 void TableScreen::leaveForMenu() {

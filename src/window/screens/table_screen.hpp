@@ -68,8 +68,10 @@ class TableScreen : public Screen {
   const GameSession::TurnObserver& turnCounter() const { return count_; }
   /// The game against a player at another computer (nullptr: none).
   OnlinePlay* online() { return online_.get(); }
-  /// The online game begun: its lobby over the table until the two sides have greeted.
-  void setOnline(std::unique_ptr<OnlinePlay> online);
+  /// The online game begun (the host's port opened, the seats named; `remembered_name` when
+  /// the config has none), in its lobby over the table until the two sides have greeted; false,
+  /// with `why`, when the host's port is taken.
+  bool beginOnline(OnlineConfig config, const std::string& remembered_name, std::string& why);
   /// The online game left (`why` told to the other side), the remote seat cleared.
   void leaveOnline(const std::string& why);
   /// --watch: the script's turns to play on screen, one after another.
@@ -83,12 +85,17 @@ class TableScreen : public Screen {
   void followTable();
   /// The dialog the table's state calls for, in its place over the table.
   void followDialog() { dialog_.follow(window_.screens(), dialogs_); }
+  /// Leaving the table (Esc's menu, the window closing): the online game left with `why`, else
+  /// a person's rack in play kept for the next start.
+  void leave(const std::string& why);
   /// Esc's menu: the dialogs, the statistics and the rack's memory start afresh.
   void leaveForMenu();
   /// F5: the match (or the rack) as a match script in the current directory.
   void saveRackScript();
 
  private:
+  void setOnline(std::unique_ptr<OnlinePlay> online);
+  void saveRackInPlay();
   void updateOnline(double seconds);
   void playWatchedTurn(double seconds);
   void zoomView(const render::Frame& picture);

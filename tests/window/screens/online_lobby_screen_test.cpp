@@ -42,9 +42,7 @@ struct HostingTable {
     config.code = kLobbyCode;
     config.match = onlineMatchOf(MatchSetup{});
     std::string why;
-    auto online = OnlinePlay::start(config, why);
-    EXPECT_TRUE(online) << why;
-    if (online) table->setOnline(std::move(online));
+    EXPECT_TRUE(table->beginOnline(config, "Ann", why)) << why;
   }
   OnlineLobbyScreen* lobby() { return dynamic_cast<OnlineLobbyScreen*>(&window.screens().top()); }
 
