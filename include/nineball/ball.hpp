@@ -20,6 +20,8 @@ struct BallState {
   std::optional<double> mass;      ///< kg; the physics' ball_mass when empty
   std::optional<PocketId> pocket;  ///< set once the ball has dropped
   Vec3 w;                          ///< rad/s, z up; rolling along +x at speed v has w = (0, v/R, 0)
+  double z = 0.0;   ///< m, the height of the centre above where it rests on the cloth
+  double vz = 0.0;  ///< m/s, its vertical speed (up positive)
 
   /// Ball `id` at `pos`, moving at `vel` (at rest by default), no spin.
   static BallState at(int id, Vec2 pos, Vec2 vel = {}) {

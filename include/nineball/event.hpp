@@ -5,7 +5,9 @@
 
 namespace nineball {
 
-enum class EventType { BallBall, Cushion, Pocket, AllAtRest, Miscue };
+/// Airborne: a ball leaves the cloth (a jump, a hop, a bounce that lifts it again); Land: it
+/// meets the slate again; OffTable: it leaves the table over a rail.
+enum class EventType { BallBall, Cushion, Pocket, AllAtRest, Miscue, Airborne, Land, OffTable };
 
 /// Something that happened during a step, with its simulated time.
 struct Event {

@@ -145,6 +145,12 @@ struct PhysicsParams {
   /// leather and rubber over wood); read by "pocket": "fall" only. An estimate: see
   /// docs/physics.md, "Pockets".
   double pocket_restitution = 0.5;
+  /// The slate's restitution for a ball landing on it or driven into it by the cue (a bounce's
+  /// height falls by its square). pooltool's default, 0.5; docs/physics.md, "Balls in the air".
+  double table_restitution = 0.5;
+  /// m, the least height a bounce must lift the ball's bottom for it to leave the cloth; a
+  /// lower one ends the bouncing (pooltool's 5 mm).
+  double min_bounce_height = 0.005;
   double miscue_limit = 0.5;           ///< largest tip offset (fraction of R) that is a hit
   double cue_end_mass = 0.170 / 30.0;  ///< kg, the shaft's effective end mass (squirt; 0: none)
 

@@ -84,6 +84,8 @@ struct ShotSummary {
   std::vector<int> pocketed;         ///< object balls pocketed, in the order they dropped
   std::vector<PocketId> pockets;     ///< pockets[i]: where pocketed[i] dropped (may be short)
   bool cue_pocketed = false;
+  /// Balls that left the table over a rail (the cue ball among them), in the order they left.
+  std::vector<int> off_table;
   bool rail_after_contact = false;  ///< some ball (cue included) met a cushion after contact
   int object_balls_to_rail = 0;     ///< distinct object balls that met a cushion
   std::optional<Call> call;         ///< the shooter's call, when one was made

@@ -17,9 +17,9 @@ struct TraceRequest {
 };
 
 /// What the cloth is doing to a ball at a sample, or that it has dropped.
-enum class TracePhase { Sliding, Rolling, Spinning, Rest, Pocketed };
+enum class TracePhase { Sliding, Rolling, Spinning, Rest, Pocketed, Airborne };
 
-/// "sliding", "rolling", "spinning", "rest" or "pocketed".
+/// "sliding", "rolling", "spinning", "rest", "pocketed" or "airborne".
 const char* tracePhaseName(TracePhase p);
 
 /// One ball's samples, index by index. At an instant where the motion changes (an event),

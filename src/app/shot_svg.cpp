@@ -212,6 +212,19 @@ std::string marker(EventType type, Vec2 at) {
         << " d=\"M0,-6 L5.5,4 L-5.5,4 Z\" fill=\"#ff9f1c\" stroke=\"#5a2d00\""
            " stroke-width=\"1.2\"/>";
       break;
+    case EventType::Airborne:
+      m << "<path class=\"event airborne\"" << move
+        << " d=\"M0,-6 L4,2 L-4,2 Z\" fill=\"none\" stroke=\"#facc15\" stroke-width=\"1.6\"/>";
+      break;
+    case EventType::Land:
+      m << "<circle class=\"event land\"" << move
+        << " r=\"3.5\" fill=\"none\" stroke=\"#facc15\" stroke-width=\"1.6\"/>";
+      break;
+    case EventType::OffTable:
+      m << "<path class=\"event off_table\"" << move
+        << " d=\"M-6,-6 L6,6 M-6,6 L6,-6\" stroke=\"#ef4444\" stroke-width=\"3.2\""
+           " stroke-linecap=\"round\"/>";
+      break;
     case EventType::AllAtRest:
       break;
   }

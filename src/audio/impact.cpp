@@ -34,6 +34,11 @@ std::vector<Impact> impactsFromEvents(const std::vector<Event>& events,
         break;
       case EventType::AllAtRest:
       case EventType::Miscue:  // the tip slips off: no ball moves
+      case EventType::Airborne:
+      case EventType::OffTable:
+        break;
+      case EventType::Land:  // the slate sounds as a cushion does, by the speed it took away
+        out.push_back({ImpactKind::Cushion, 0.0});
         break;
     }
   }

@@ -53,6 +53,13 @@ ordered_json eventToJson(const Event& event) {
       j["type"] = "miscue";
       j["ball"] = event.a;
       break;
+    case EventType::Airborne:
+    case EventType::Land:
+    case EventType::OffTable:
+      j["type"] = eventTypeName(event.type);  // "airborne", "land", "off_table"
+      j["ball"] = event.a;
+      j["v"] = pair(event.va);
+      break;
   }
   return j;
 }

@@ -30,6 +30,12 @@ const char* eventTypeName(EventType t) {
       return "rest";
     case EventType::Miscue:
       return "miscue";
+    case EventType::Airborne:
+      return "airborne";
+    case EventType::Land:
+      return "land";
+    case EventType::OffTable:
+      return "off_table";
   }
   return "?";
 }

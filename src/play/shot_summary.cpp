@@ -37,6 +37,11 @@ rules::ShotSummary summarize(const std::vector<Event>& events, int cue) {
         s.miscue = true;
         break;
       case EventType::AllAtRest:
+      case EventType::Airborne:  // a flight is no contact: a jump is a legal stroke
+      case EventType::Land:
+        break;
+      case EventType::OffTable:
+        s.off_table.push_back(e.a);
         break;
     }
   }

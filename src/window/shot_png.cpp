@@ -91,6 +91,9 @@ void drawEvents(render::TriangleBatch& batch, const render::ViewTransform& view,
         break;
       case EventType::Miscue:
       case EventType::AllAtRest:
+      case EventType::Airborne:
+      case EventType::Land:
+      case EventType::OffTable:
         break;
     }
   }

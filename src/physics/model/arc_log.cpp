@@ -20,6 +20,8 @@ const char* tracePhaseName(TracePhase p) {
       return "rest";
     case TracePhase::Pocketed:
       return "pocketed";
+    case TracePhase::Airborne:
+      return "airborne";
   }
   return "?";
 }
@@ -34,6 +36,8 @@ TracePhase tracePhase(Phase p) {
       return TracePhase::Rolling;
     case Phase::Spinning:
       return TracePhase::Spinning;
+    case Phase::Airborne:
+      return TracePhase::Airborne;
     case Phase::Rest:
       break;
   }

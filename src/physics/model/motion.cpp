@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/model/slate.hpp"
+
 namespace nineball::physics {
 namespace {
 
@@ -50,6 +52,8 @@ const char* phaseName(Phase p) {
       return "spinning";
     case Phase::Rest:
       return "rest";
+    case Phase::Airborne:
+      return "airborne";
   }
   return "?";
 }
@@ -62,6 +66,13 @@ Arc beginArc(double t0, const Kinematics& k, const PhysicsParams& p) {
   Arc arc;
   arc.t0 = t0;
   arc.start = k;
+  if (k.flying() && airborneAllowed(p)) {
+    arc.phase = Phase::Airborne;
+    arc.duration = landingTime(k.z, k.vz, p.gravity);
+    return arc;
+  }
+  arc.start.z = 0.0;
+  arc.start.vz = 0.0;
   const double speed = length(k.v);
   switch (p.cloth) {
     case ClothModel::Spin: {
@@ -114,6 +125,11 @@ Kinematics stateAt(const Arc& arc, double t, const PhysicsParams& p) {
     case Phase::Spinning:
       out.w.z = decaySpin(k.w.z, p.spin_decay, tau);
       return out;
+    case Phase::Airborne:
+      out.p = k.p + k.v * tau;
+      out.z = k.z + k.vz * tau - 0.5 * p.gravity * tau * tau;
+      out.vz = k.vz - p.gravity * tau;
+      return out;
     case Phase::Sliding:
     case Phase::Rolling:
       break;
@@ -141,6 +157,12 @@ Kinematics stateAt(const Arc& arc, double t, const PhysicsParams& p) {
 Arc nextArc(const Arc& arc, const PhysicsParams& p) {
   Kinematics k = stateAt(arc, arc.end(), p);
   switch (arc.phase) {
+    case Phase::Airborne: {
+      // The ball meets the slate: it lands exactly on it, at the speed of the closed form.
+      k.z = 0.0;
+      k.vz = -std::sqrt(arc.start.vz * arc.start.vz + 2.0 * p.gravity * arc.start.z);
+      return beginArc(arc.end(), bounceOffSlate(k, p), p);
+    }
     case Phase::Sliding: {
       // The slip has just vanished: the ball rolls from here.
       Arc next = beginArc(arc.end(), k, p);
@@ -208,12 +230,13 @@ Box boxOf(const Path& path, double span) {
 Path pathFrom(const Arc& arc, double t, const PhysicsParams& p) {
   const Kinematics k = stateAt(arc, t, p);
   if (!arc.translating()) return {k.p, {}, {}};
+  if (arc.phase == Phase::Airborne) return {k.p, k.v, {}};
   return {k.p, k.v, p.cloth == ClothModel::Damping ? Vec2{} : arc.accel};
 }
 
 double kineticEnergy(const Kinematics& k, double mass, double radius) {
   const double inertia = 0.4 * mass * radius * radius;
-  return 0.5 * mass * dot(k.v, k.v) +
+  return 0.5 * mass * (dot(k.v, k.v) + k.vz * k.vz) +
          0.5 * inertia * (k.w.x * k.w.x + k.w.y * k.w.y + k.w.z * k.w.z);
 }
 

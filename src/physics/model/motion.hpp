@@ -14,15 +14,24 @@ enum class Phase {
   Rolling,   ///< rolling without slip (spin cloth), or the paper's and the damping cloth's motion
   Spinning,  ///< still on the cloth, turning about the vertical only
   Rest,
+  /// In the air: a parabola under gravity alone, the spin carried (air drag neglected:
+  /// docs/physics.md, "Balls in the air"); it ends as the ball meets the slate.
+  Airborne,
 };
 
 const char* phaseName(Phase p);
 
-/// A ball's position, velocity and angular velocity at one instant.
+/// A ball's position, velocity and angular velocity at one instant, and its height: z the height
+/// of its centre above where it rests on the cloth (0 on the cloth), vz its vertical speed.
 struct Kinematics {
   Vec2 p;
   Vec2 v;
   Vec3 w;
+  double z = 0.0;
+  double vz = 0.0;
+
+  /// Off the cloth, or leaving it.
+  bool flying() const { return z > 0.0 || vz > 0.0; }
 };
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -37,8 +46,10 @@ struct Arc {
   double duration = kNever;  ///< s until the phase ends by itself
 
   double end() const { return t0 + duration; }
-  /// Sliding or rolling: the ball travels.
-  bool translating() const { return phase == Phase::Sliding || phase == Phase::Rolling; }
+  /// Sliding, rolling or in the air: the ball travels.
+  bool translating() const {
+    return phase == Phase::Sliding || phase == Phase::Rolling || phase == Phase::Airborne;
+  }
 };
 
 /// The phase that starts at t0 from `k` under the cloth of `p`, with its closed form.

@@ -37,7 +37,7 @@ void Resolver::resolve(const NextEvent& e, EngineBalls& balls) {
     case NextEvent::Kind::Sensor:  // the engine's own business
       return;
     case NextEvent::Kind::PhaseEnd:
-      balls.nextPhase(e.i);
+      phaseEnd(e.t, balls, e.i);
       return;
     case NextEvent::Kind::Ball:
       ballContact(e.t, balls, e.i, e.j);
@@ -208,6 +208,27 @@ void Resolver::settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kine
   setOutOfCushion(k, predicted, table_, p_.ball_radius);
   balls.restart(i, k);
   cushionEvent(t, balls, i, k.v);
+}
+
+// A ball in the air meets the slate (Land, and Airborne again when it bounces up).
+void Resolver::phaseEnd(double t, EngineBalls& balls, std::size_t i) {
+  const bool flying = balls.arc(i).phase == Phase::Airborne;
+  balls.nextPhase(i);
+  if (!flying) return;
+  const Arc& after = balls.arc(i);
+  ballEventOf(EventType::Land, t, balls, i, after.start.v);
+  if (after.phase == Phase::Airborne) ballEventOf(EventType::Airborne, t, balls, i, after.start.v);
+}
+
+void Resolver::ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i,
+                           Vec2 v) {
+  Event e;
+  e.type = type;
+  e.t = t;
+  e.a = balls.id(i);
+  e.va = v;
+  events_.push_back(e);
+  logger("physics")->trace("t={:.6f} ball {} {}", t, e.a, eventTypeName(type));
 }
 
 void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v) {

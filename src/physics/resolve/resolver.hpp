@@ -36,6 +36,8 @@ class EngineBalls {
   virtual Vec2 centre(std::size_t i) const = 0;
   /// The ball's state now (its centre as centre() gives it).
   virtual Kinematics now(std::size_t i) const = 0;
+  /// The closed form the ball follows now.
+  virtual const Arc& arc(std::size_t i) const = 0;
   /// From now on the ball follows `k`, moved to k.p first where that is not its centre.
   virtual void restart(std::size_t i, const Kinematics& k) = 0;
   /// The ball's motion passes into its next phase (slide to roll, roll to rest, spin dying).
@@ -77,6 +79,8 @@ class Resolver {
   bool cornerContact(double t, EngineBalls& balls, std::size_t i, const Kinematics& k,
                      Vec2 predicted);
   void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v);
+  void phaseEnd(double t, EngineBalls& balls, std::size_t i);
+  void ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted);
   void settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k, Vec2 normal,

@@ -265,6 +265,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
   double mass(std::size_t i) const override { return balls[i].mass; }
   Vec2 centre(std::size_t i) const override { return position(balls[i]); }
   Kinematics now(std::size_t i) const override { return now(balls[i]); }
+  const Arc& arc(std::size_t i) const override { return balls[i].arc; }
 
   void restart(std::size_t i, const Kinematics& s) override { restart(balls[i], s); }
 
@@ -508,7 +509,7 @@ void World::addBall(const BallState& ball) {
   b.id = ball.id;
   b.mass = ball.mass.value_or(w.phys.ball_mass);
   b.pos = ball.pos;
-  b.arc = physics::beginArc(w.time, {ball.pos, ball.vel, ball.w}, w.phys);
+  b.arc = physics::beginArc(w.time, {ball.pos, ball.vel, ball.w, ball.z, ball.vz}, w.phys);
   w.balls.push_back(b);
   w.recorder.resize(w.balls.size());
   if (w.arc_log) w.arc_log->addBall(ball.id);
@@ -525,17 +526,10 @@ bool World::strike(int ball_id, const Shot& shot) {
   Impl& w = *impl_;
   Impl::Ball& b = w.balls[w.indexOf(ball_id)];
   if (!b.body) throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
-  const PhysicsParams& p = w.phys;
-  if (length(shot.tip) > p.miscue_limit) {
-    Event e;
-    e.type = EventType::Miscue;
-    e.t = w.time;
-    e.a = ball_id;
-    w.events.push_back(e);
-    return false;
-  }
-  const physics::Strike s = physics::cueStrike(shot, b.mass, p);
-  w.restart(b, {w.position(b), s.v, s.w});
+  const auto k =
+      physics::strokeBall(ball_id, w.time, w.position(b), shot, b.mass, w.phys, w.events);
+  if (!k) return false;
+  w.restart(b, *k);
   return true;
 }
 
@@ -630,6 +624,8 @@ std::vector<BallState> World::balls() const {
       const Kinematics k = physics::stateAt(b.arc, w.time, w.phys);
       s.vel = k.v;
       s.w = k.w;
+      s.z = k.z;
+      s.vz = k.vz;
     }
     s.mass = b.mass;
     s.pocket = b.pocket;

@@ -40,7 +40,7 @@ class ReferenceEngine final : public Engine,
     ball.state = b;
     ball.state.mass = b.mass.value_or(p_.ball_mass);
     ball.on_table = !b.pocket;
-    ball.arc = physics::beginArc(run_.time, {b.pos, b.vel, b.w}, p_);
+    ball.arc = physics::beginArc(run_.time, {b.pos, b.vel, b.w, b.z, b.vz}, p_);
     balls_.push_back(ball);
     if (!logging_) return;
     log_.addBall(b.id);
@@ -55,18 +55,11 @@ class ReferenceEngine final : public Engine,
     Ball& b = balls_[indexOf(ball_id)];
     if (!b.on_table)
       throw std::invalid_argument("ball " + std::to_string(ball_id) + " is pocketed");
-    if (length(shot.tip) > p_.miscue_limit) {
-      Event e;
-      e.type = EventType::Miscue;
-      e.t = run_.time;
-      e.a = ball_id;
-      events_.push_back(e);
-      return false;
-    }
-    const physics::Strike s = physics::cueStrike(shot, *b.state.mass, p_);
     // At the arc's own start its centre is the one it was given, to the bit.
     const Vec2 at = b.arc.t0 == run_.time ? b.arc.start.p : now(b).p;
-    b.arc = physics::beginArc(run_.time, {at, s.v, s.w}, p_);
+    const auto k = physics::strokeBall(ball_id, run_.time, at, shot, *b.state.mass, p_, events_);
+    if (!k) return false;
+    b.arc = physics::beginArc(run_.time, *k, p_);
     logArc(b);
     changed(b);
     return true;
@@ -77,7 +70,7 @@ class ReferenceEngine final : public Engine,
     b.on_table = true;
     b.state.pocket.reset();
     b.state.pos = pos;
-    restart(b, {pos, {}, {}});
+    restart(b, physics::Kinematics{pos, {}, {}});
   }
 
   void step() override {
@@ -116,9 +109,13 @@ class ReferenceEngine final : public Engine,
         s.pos = k.p;
         s.vel = k.v;
         s.w = k.w;
+        s.z = k.z;
+        s.vz = k.vz;
       } else {
         s.vel = {};
         s.w = {};
+        s.z = 0.0;
+        s.vz = 0.0;
       }
       out.push_back(s);
     }
@@ -210,6 +207,7 @@ class ReferenceEngine final : public Engine,
   double mass(std::size_t i) const override { return *balls_[i].state.mass; }
   Vec2 centre(std::size_t i) const override { return now(balls_[i]).p; }
   physics::Kinematics now(std::size_t i) const override { return now(balls_[i]); }
+  const physics::Arc& arc(std::size_t i) const override { return balls_[i].arc; }
   void restart(std::size_t i, const physics::Kinematics& k) override { restart(balls_[i], k); }
 
   void nextPhase(std::size_t i) override {
