@@ -199,6 +199,23 @@ std::optional<double> ballContact(const Path& a, const Path& b, double distance,
   return meet(b.p - a.p, b.v - a.v, b.a - a.a, distance, horizon, true);
 }
 
+std::optional<double> ballContactInAir(const Path& a, Height za, const Path& b, Height zb,
+                                       double distance, double horizon) {
+  const Vec2 d = b.p - a.p, e = b.v - a.v, g = b.a - a.a;
+  const double z0 = zb.z0 - za.z0, z1 = zb.vz - za.vz, z2 = 0.5 * (zb.accel - za.accel);
+  // |d + e s + g s^2 / 2|^2 + (z0 + z1 s + z2 s^2)^2 - distance^2, a quartic in s.
+  const Quartic f{{dot(d, d) + z0 * z0 - distance * distance, 2.0 * (dot(d, e) + z0 * z1),
+                   dot(e, e) + dot(d, g) + z1 * z1 + 2.0 * z0 * z2, dot(e, g) + 2.0 * z1 * z2,
+                   0.25 * dot(g, g) + z2 * z2}};
+  const double apart = std::sqrt(dot(d, d) + z0 * z0);
+  if (apart - distance <= kTouchTolerance) {
+    // Touching: met at once while closing; parting or resting, not again on these paths.
+    const double closing = apart > 0.0 ? -(dot(d, e) + z0 * z1) / apart : 0.0;
+    return closing > kMinClosingSpeed ? std::optional<double>(0.0) : std::nullopt;
+  }
+  return firstCrossing(f, 0.0, horizon);
+}
+
 std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,
                                          double horizon) {
   std::optional<CushionHit> best;

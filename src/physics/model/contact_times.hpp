@@ -68,6 +68,19 @@ struct CushionHit {
 /// kMinClosingSpeed (slower: they rest against each other).
 std::optional<double> ballContact(const Path& a, const Path& b, double distance, double horizon);
 
+/// A ball's height on its path: z0 + vz s + accel s^2 / 2 (accel -g in the air, 0 on the cloth).
+struct Height {
+  double z0 = 0.0;
+  double vz = 0.0;
+  double accel = 0.0;
+};
+
+/// ballContact for balls of which one at least is in the air: the first time in [0, horizon]
+/// at which their centres are `distance` apart in space and closing (time is the clock: the
+/// air is only flown over the cloths whose clock is the time).
+std::optional<double> ballContactInAir(const Path& a, Height za, const Path& b, Height zb,
+                                       double distance, double horizon);
+
 /// The first clock value in [0, horizon] at which a ball of `radius` on the path touches a
 /// cushion segment, corner or arc while moving into it.
 std::optional<CushionHit> cushionContact(const Path& path, double radius, const Cushions& cushions,

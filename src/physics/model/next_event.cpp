@@ -33,6 +33,8 @@ NextEvent EventSearch::ownEvent(std::size_t i, const Arc& arc, bool may_drop) co
     e.normal = hit->normal;
     take(hit->s, e);
   }
+  // A ball in the air flies over the pockets; landing in one drops it (Resolver).
+  if (arc.phase == Phase::Airborne) return best;
   if (!may_drop && sensor_margin <= 0.0) return best;
   for (const Pocket& pk : table->pockets) {
     double radius = pk.drop_radius + (may_drop ? 0.0 : sensor_margin);
@@ -50,6 +52,37 @@ NextEvent EventSearch::ownEvent(std::size_t i, const Arc& arc, bool may_drop) co
   return best;
 }
 
+namespace {
+
+// The height of a ball on its arc from `from` on (the clock is the time in the air).
+Height heightFrom(const Arc& arc, double from, const PhysicsParams& p) {
+  if (arc.phase != Phase::Airborne) return {};
+  const Kinematics k = stateAt(arc, from, p);
+  return {k.z, k.vz, -p.gravity};
+}
+
+}  // namespace
+
+std::optional<NextEvent> EventSearch::contactInAir(std::size_t i, const Arc& a, const Path& pa,
+                                                   std::size_t j, const Arc& b, const Path& pb,
+                                                   double from, double span) const {
+  const Height ha = heightFrom(a, from, physics), hb = heightFrom(b, from, physics);
+  const auto s = ballContactInAir(pa, ha, pb, hb, 2.0 * physics.ball_radius, span);
+  if (!s) return std::nullopt;
+  const double dz = (hb.z0 - ha.z0) + (hb.vz - ha.vz) * *s + 0.5 * (hb.accel - ha.accel) * *s * *s;
+  const Vec2 d = pb.at(*s) - pa.at(*s);
+  const double apart = std::sqrt(dot(d, d) + dz * dz);
+  const Vec2 dv = pb.v - pa.v + (pb.a - pa.a) * *s;
+  const double dvz = (hb.vz - ha.vz) + (hb.accel - ha.accel) * *s;
+  NextEvent e;
+  e.kind = NextEvent::Kind::Ball;
+  e.t = from + *s;
+  e.i = i;
+  e.j = j;
+  e.closing = apart > 0.0 ? -(dot(dv, d) + dvz * dz) / apart : 0.0;
+  return e;
+}
+
 std::optional<NextEvent> EventSearch::pairContact(std::size_t i, const Arc& a, std::size_t j,
                                                   const Arc& b) const {
   if (!a.translating() && !b.translating()) return std::nullopt;
@@ -59,6 +92,9 @@ std::optional<NextEvent> EventSearch::pairContact(std::size_t i, const Arc& a, s
   if (!(span >= 0.0)) return std::nullopt;  // an arc has ended: its own event comes first
   const Clock clock = Clock::of(physics);
   const Path pa = pathFrom(a, from, physics), pb = pathFrom(b, from, physics);
+  if (a.phase == Phase::Airborne || b.phase == Phase::Airborne) {
+    return contactInAir(i, a, pa, j, b, pb, from, span);
+  }
   const auto s = ballContact(pa, pb, 2.0 * physics.ball_radius, clock.fromTime(span));
   if (!s) return std::nullopt;
   const Vec2 n = normalized(pb.at(*s) - pa.at(*s));

@@ -57,6 +57,12 @@ struct EventSearch {
   /// The first contact of balls i < j on their arcs while both hold, and how fast they close.
   std::optional<NextEvent> pairContact(std::size_t i, const Arc& a, std::size_t j,
                                        const Arc& b) const;
+
+ private:
+  // pairContact when a ball of the pair is in the air: the contact in space.
+  std::optional<NextEvent> contactInAir(std::size_t i, const Arc& a, const Path& pa, std::size_t j,
+                                        const Arc& b, const Path& pb, double from,
+                                        double span) const;
 };
 
 }  // namespace nineball::physics

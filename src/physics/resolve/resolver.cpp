@@ -7,6 +7,7 @@
 #include "physics/model/pocket_capture.hpp"
 #include "physics/resolve/ball_ball/ball_contact.hpp"
 #include "physics/resolve/ball_ball/collide.hpp"
+#include "physics/resolve/ball_ball/collide_in_air.hpp"
 #include "physics/resolve/cushion/contact.hpp"
 #include "physics/resolve/cushion/registry.hpp"
 #include "physics/resolve/cushion/simple/simple.hpp"
@@ -72,6 +73,10 @@ void Resolver::placeApart(EngineBalls& balls, std::size_t i, std::size_t j, Kine
 }
 
 void Resolver::ballContact(double t, EngineBalls& balls, std::size_t i, std::size_t j) {
+  if (balls.arc(i).phase == Phase::Airborne || balls.arc(j).phase == Phase::Airborne) {
+    contactInAir(t, balls, i, j);
+    return;
+  }
   if (balls.solvedBallContact(i, j)) return;
   if (jams_.jammed(t, i, j)) {
     settleJam(t, balls, i, j);
@@ -210,14 +215,38 @@ void Resolver::settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kine
   cushionEvent(t, balls, i, k.v);
 }
 
-// A ball in the air meets the slate (Land, and Airborne again when it bounces up).
+// A ball in the air meets the slate (Land, and Airborne again when it bounces up); one that
+// comes down within a pocket's drop circle falls in.
 void Resolver::phaseEnd(double t, EngineBalls& balls, std::size_t i) {
   const bool flying = balls.arc(i).phase == Phase::Airborne;
   balls.nextPhase(i);
   if (!flying) return;
   const Arc& after = balls.arc(i);
   ballEventOf(EventType::Land, t, balls, i, after.start.v);
+  for (const Pocket& hole : table_.pockets) {
+    if (length(after.start.p - hole.drop_centre) < hole.drop_radius) {
+      pocket(t, balls, i, hole.id);
+      return;
+    }
+  }
   if (after.phase == Phase::Airborne) ballEventOf(EventType::Airborne, t, balls, i, after.start.v);
+}
+
+// Two balls meeting with one at least in the air: in space, frictionless (collideInAir).
+void Resolver::contactInAir(double t, EngineBalls& balls, std::size_t i, std::size_t j) {
+  const bool flew[2] = {balls.arc(i).phase == Phase::Airborne,
+                        balls.arc(j).phase == Phase::Airborne};
+  Kinematics sa = balls.now(i), sb = balls.now(j);
+  collideInAir(sa, sb, balls.mass(i), balls.mass(j), p_);
+  balls.restart(i, sa);
+  balls.restart(j, sb);
+  ballEvent(t, balls, i, j, sa.v, sb.v);
+  for (const auto& [m, was] : {std::pair{i, flew[0]}, std::pair{j, flew[1]}}) {
+    const Arc& now = balls.arc(m);
+    if (!was && now.phase == Phase::Airborne) {
+      ballEventOf(EventType::Airborne, t, balls, m, now.start.v);
+    }
+  }
 }
 
 void Resolver::ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i,

@@ -80,6 +80,7 @@ class Resolver {
                      Vec2 predicted);
   void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void phaseEnd(double t, EngineBalls& balls, std::size_t i);
+  void contactInAir(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted);
