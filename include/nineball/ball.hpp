@@ -18,10 +18,13 @@ struct BallState {
   Vec2 pos;                        ///< m
   Vec2 vel;                        ///< m/s
   std::optional<double> mass;      ///< kg; the physics' ball_mass when empty
-  std::optional<PocketId> pocket;  ///< set once the ball has dropped
+  std::optional<PocketId> pocket;  ///< set once the ball has dropped (or left the table)
   Vec3 w;                          ///< rad/s, z up; rolling along +x at speed v has w = (0, v/R, 0)
   double z = 0.0;   ///< m, the height of the centre above where it rests on the cloth
   double vz = 0.0;  ///< m/s, its vertical speed (up positive)
+  /// The ball left the table over a rail: `pos` is where it crossed the cushion (`pocket` is
+  /// then set too, as for every ball off the table, but names no pocket).
+  bool off_table = false;
 
   /// Ball `id` at `pos`, moving at `vel` (at rest by default), no spin.
   static BallState at(int id, Vec2 pos, Vec2 vel = {}) {

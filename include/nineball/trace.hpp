@@ -30,7 +30,8 @@ struct BallTrace {
   std::vector<double> t;  ///< s
   std::vector<double> x, y;
   std::vector<double> vx, vy;
-  std::vector<Vec3> w;  ///< rad/s
+  std::vector<double> z, vz;  ///< m and m/s: the height above resting on the cloth, and its speed
+  std::vector<Vec3> w;        ///< rad/s
   std::vector<TracePhase> phase;
 
   std::size_t size() const { return t.size(); }

@@ -14,6 +14,7 @@
 #include "nineball/sim.hpp"
 #include "nineball/state_hash.hpp"
 #include "physics/model/motion.hpp"
+#include "physics/model/slate.hpp"
 
 namespace nineball {
 namespace {
@@ -38,13 +39,30 @@ struct Scenario {
   bool fixed_step = false;  // keeps its own step settings, not the command's
 };
 
-double energy(const std::vector<BallState>& balls, double r, double mass) {
+// Kinetic energy with rotation, and the height's potential energy: a flight trades one for
+// the other.
+double energy(const std::vector<BallState>& balls, double r, double mass, double g) {
   double e = 0.0;
   for (const BallState& b : balls) {
     if (b.pocket) continue;
-    e += physics::kineticEnergy({b.pos, b.vel, b.w}, b.mass.value_or(mass), r);
+    e += physics::mechanicalEnergy({b.pos, b.vel, b.w, b.z, b.vz}, b.mass.value_or(mass), r, g);
   }
   return e;
+}
+
+// The distance between two balls' centres in space.
+double apart(const BallState& a, const BallState& b) {
+  const Vec2 d = b.pos - a.pos;
+  return std::sqrt(dot(d, d) + (b.z - a.z) * (b.z - a.z));
+}
+
+// A ball off the table is announced by the event that took it: a pocket, or over a rail.
+bool announcedOff(const BallState& b, const std::vector<Event>& events, std::size_t from) {
+  const EventType type = b.off_table ? EventType::OffTable : EventType::Pocket;
+  for (std::size_t k = from; k < events.size(); ++k) {
+    if (events[k].type == type && events[k].a == b.id) return true;
+  }
+  return false;
 }
 
 bool finite(const BallState& b) {
@@ -85,7 +103,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
   for (const BallState& b : s.balls) w.addBall(b);
   if (s.shot) w.strike(kCueBall, *s.shot);
   const double r = s.physics.ball_radius;
-  double e_prev = energy(w.balls(), r, s.physics.ball_mass);
+  double e_prev = energy(w.balls(), r, s.physics.ball_mass, s.physics.gravity);
   BitHash hash;
   auto mix = [&hash](double v) { hash.add(v); };
   const double limit = s.run_s > 0.0 ? s.run_s : o.rest_within_s;
@@ -103,22 +121,20 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
       check.check("finite", finite(b), "ball " + std::to_string(b.id));
       if (b.pocket) {
         if (!was_pocketed[i]) {
-          bool announced = false;
-          for (std::size_t k = events_seen; k < events.size(); ++k) {
-            announced |= events[k].type == EventType::Pocket && events[k].a == b.id;
-          }
-          check.check("pocketed with an event", announced, "ball " + std::to_string(b.id));
+          check.check("off the table with an event", announcedOff(b, events, events_seen),
+                      "ball " + std::to_string(b.id));
           was_pocketed[i] = true;
         }
         continue;
       }
       check.check("inside the cushions", w.table().insideLoop(b.pos),
                   "ball " + std::to_string(b.id));
+      check.check("never through the slate", b.z >= 0.0, "ball " + std::to_string(b.id));
       check.check("not sunk into a cushion", cushionSink(w.table(), b.pos, r) <= kMaxSink,
                   "ball " + std::to_string(b.id));
       for (std::size_t j = i + 1; j < balls.size(); ++j) {
         if (balls[j].pocket) continue;
-        const double gap = length(balls[j].pos - b.pos) - 2.0 * r;
+        const double gap = apart(b, balls[j]) - 2.0 * r;
         if (gap > 0.01) continue;
         if (gap >= -kMaxOverlap) {
           check.check("no overlap", true);
@@ -131,12 +147,18 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
       }
     }
     events_seen = events.size();
-    const double e = energy(balls, r, s.physics.ball_mass);
+    const double e = energy(balls, r, s.physics.ball_mass, s.physics.gravity);
     check.check("energy never rises", e <= e_prev + kEnergyRounding * std::max(e_prev, 1e-9));
     e_prev = std::min(e, e_prev);
   }
   check.check("within the work budget", !w.exhausted());
   if (s.run_s <= 0.0) check.check("at rest in time", w.atRest());
+  if (w.atRest()) {
+    for (const BallState& b : w.balls()) {
+      check.check("none left in the air", b.pocket || (b.z == 0.0 && b.vz == 0.0),
+                  "ball " + std::to_string(b.id));
+    }
+  }
   if (count) rep.simulated_s += w.time();
   mix(static_cast<double>(w.events().size()));
   return hash.value();
@@ -169,7 +191,7 @@ std::uint64_t runReference(const Scenario& s, const StressOptions& o, StressRepo
   Engine& start = *start_engine;
   for (const BallState& b : s.balls) start.addBall(b);
   if (s.shot) start.strike(kCueBall, *s.shot);
-  const double e_start = energy(start.balls(), radius, s.physics.ball_mass);
+  const double e_start = energy(start.balls(), radius, s.physics.ball_mass, s.physics.gravity);
   const auto fault = resultFault(scene, r);
   check.check("finite, and on the table or pocketed", !fault, fault.value_or(""));
   if (fault) return 0;
@@ -177,23 +199,20 @@ std::uint64_t runReference(const Scenario& s, const StressOptions& o, StressRepo
   for (std::size_t i = 0; i < r.balls.size(); ++i) {
     const BallState& b = r.balls[i];
     if (b.pocket) {
-      const bool announced =
-          s.balls[i].pocket || std::any_of(r.events.begin(), r.events.end(), [&](const Event& e) {
-            return e.type == EventType::Pocket && e.a == b.id;
-          });
-      check.check("pocketed with an event", announced, "ball " + std::to_string(b.id));
+      const bool announced = s.balls[i].pocket || announcedOff(b, r.events, 0);
+      check.check("off the table with an event", announced, "ball " + std::to_string(b.id));
       continue;
     }
     check.check("not sunk into a cushion", cushionSink(table, b.pos, radius) <= kMaxSink,
                 "ball " + std::to_string(b.id));
     for (std::size_t j = i + 1; j < r.balls.size(); ++j) {
       if (r.balls[j].pocket) continue;
-      const double gap = length(r.balls[j].pos - b.pos) - 2.0 * radius;
+      const double gap = apart(b, r.balls[j]) - 2.0 * radius;
       check.check("no overlap", gap >= -kMaxOverlap,
                   "balls " + std::to_string(b.id) + "," + std::to_string(r.balls[j].id));
     }
   }
-  const double e_end = energy(r.balls, radius, s.physics.ball_mass);
+  const double e_end = energy(r.balls, radius, s.physics.ball_mass, s.physics.gravity);
   check.check("energy never rises", e_end <= e_start + kEnergyRounding * std::max(e_start, 1e-9));
   check.check("within the work budget", r.end != SimEnd::Budget);
   if (s.run_s <= 0.0) {

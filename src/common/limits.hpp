@@ -18,6 +18,8 @@ constexpr double kMaxBallMass = 1.0;
 /// m/s: just above the fastest power breaks measured (11-13 m/s), which no cue exceeds, so
 /// that the paper's own worked impulse (13.3 m/s) still runs.
 constexpr double kMaxSpeed = 14.0;
+/// m, the highest a scene may set a ball above the cloth ("z"): far above any jump.
+constexpr double kMaxBallHeight = 2.0;
 /// m/s: R |w| of a strike at the ball's very edge at the top speed (w = 5 v b / 2 R^2, b = R).
 constexpr double kMaxSurfaceSpeed = 2.5 * kMaxSpeed;
 

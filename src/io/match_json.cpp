@@ -113,7 +113,7 @@ MatchScript parseMatchDocument(const json& doc) {
   check.physics = setup.physics;
   check.step = setup.step;
   if (const json* p = optional(doc, "balls")) {
-    setup.balls = parseBalls(*p, setup.physics.ball_radius);
+    setup.balls = parseBalls(*p, setup.physics);
     check.balls = *setup.balls;
     if (auto problem = validateScene(check)) throw ParseError{*problem};
     for (const BallState& b : *setup.balls) {

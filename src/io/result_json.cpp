@@ -19,8 +19,12 @@ ordered_json ballToJson(const BallState& ball) {
   j["y"] = ball.pos.y;
   j["vx"] = ball.vel.x;
   j["vy"] = ball.vel.y;
+  j["z"] = ball.z;
+  j["vz"] = ball.vz;
   j["w"] = ordered_json::array({ball.w.x, ball.w.y, ball.w.z});
-  j["pocket"] = ball.pocket ? ordered_json(pocketName(*ball.pocket)) : ordered_json(nullptr);
+  const bool dropped = ball.pocket && !ball.off_table;
+  j["pocket"] = dropped ? ordered_json(pocketName(*ball.pocket)) : ordered_json(nullptr);
+  j["off_table"] = ball.off_table;
   return j;
 }
 
@@ -77,6 +81,8 @@ ordered_json traceToJson(const Trace& trace) {
     one["y"] = b.y;
     one["vx"] = b.vx;
     one["vy"] = b.vy;
+    one["z"] = b.z;
+    one["vz"] = b.vz;
     one["w"] = std::move(w);
     one["phase"] = std::move(phase);
     j[std::to_string(b.id)] = std::move(one);
@@ -104,7 +110,8 @@ ordered_json resultWithoutTrace(const SimResult& result) {
 void writeBallTrace(std::ostream& out, const BallTrace& b) {
   out << "{\"t\": " << ordered_json(b.t) << ", \"x\": " << ordered_json(b.x)
       << ", \"y\": " << ordered_json(b.y) << ", \"vx\": " << ordered_json(b.vx)
-      << ", \"vy\": " << ordered_json(b.vy) << ", \"w\": [";
+      << ", \"vy\": " << ordered_json(b.vy) << ", \"z\": " << ordered_json(b.z)
+      << ", \"vz\": " << ordered_json(b.vz) << ", \"w\": [";
   for (std::size_t i = 0; i < b.w.size(); ++i) {
     out << (i ? "," : "") << ordered_json::array({b.w[i].x, b.w[i].y, b.w[i].z});
   }

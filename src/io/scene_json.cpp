@@ -138,6 +138,8 @@ const ParamField kParamFields[] = {
     {"gravity", &PhysicsParams::gravity, Bounds::positive(1000.0), kSpinCloth | kFrictionCloth},
     {"linear_damping", &PhysicsParams::linear_damping, Bounds::nonNegative(1000.0), kDampingCloth},
     {"rest_speed", &PhysicsParams::rest_speed, Bounds::nonNegative(kMaxSpeed), kDampingCloth},
+    {"table_restitution", &PhysicsParams::table_restitution, Bounds::closed(0.0, 1.0), kSpinCloth},
+    {"min_bounce_height", &PhysicsParams::min_bounce_height, Bounds::nonNegative(1.0), kSpinCloth},
 };
 
 // Parameters only some cushion models read (the registry's `reads`): each refused, naming the
@@ -380,7 +382,28 @@ PhysicsParams parsePhysics(const json& v) {
   return p;
 }
 
-std::vector<BallState> parseBalls(const json& v, double radius) {
+// "z" (m, the centre's height above resting on the cloth) and "vz" (m/s, up): a ball in the
+// air, on the cloths that let one leave it.
+void parseHeight(const json& b, const std::string& at, const PhysicsParams& physics,
+                 BallState& ball) {
+  if (const json* p = optional(b, "z")) {
+    ball.z = number(*p, member(at, "z"), Bounds::closed(0.0, limits::kMaxBallHeight));
+  }
+  if (const json* p = optional(b, "vz")) {
+    ball.vz = number(*p, member(at, "vz"), Bounds::closed(-kMaxSpeed, kMaxSpeed));
+  }
+  if (ball.z == 0.0 && ball.vz < 0.0) {
+    refuse(member(at, "vz"), "a ball on the cloth cannot move down into the slate");
+  }
+  if ((ball.z != 0.0 || ball.vz != 0.0) && physics.cloth != ClothModel::Spin) {
+    refuse(at,
+           std::string("a ball leaves the cloth only on the \"spin\" cloth; this scene's is \"") +
+               clothModelName(physics.cloth) + "\": drop \"z\" and \"vz\"");
+  }
+}
+
+std::vector<BallState> parseBalls(const json& v, const PhysicsParams& physics) {
+  const double radius = physics.ball_radius;
   const std::string path = "balls";
   if (!v.is_array()) refuse(path, "expected an array, found " + describe(v));
   if (v.size() > limits::kMaxBalls) {
@@ -393,7 +416,7 @@ std::vector<BallState> parseBalls(const json& v, double radius) {
     const json& b = v[i];
     const std::string at = element(path, i);
     expectObject(b, at);
-    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "w", "mass"});
+    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "z", "vz", "w", "mass"});
     BallState ball;
     ball.id = integer(required(b, at, "id"), member(at, "id"), 0, INT_MAX);
     const auto [seen, fresh] = index_of_id.emplace(ball.id, i);
@@ -408,6 +431,7 @@ std::vector<BallState> parseBalls(const json& v, double radius) {
     if (std::hypot(ball.vel.x, ball.vel.y) > kMaxSpeed) {
       refuse(at, "speed hypot(vx, vy) must be <= " + formatNumber(kMaxSpeed) + " m/s");
     }
+    parseHeight(b, at, physics, ball);
     if (const json* p = optional(b, "w")) {
       const std::string wpath = member(at, "w");
       if (!p->is_array() || p->size() != 3) {
@@ -638,7 +662,7 @@ Scene parseSceneDocument(const json& doc) {
   Scene scene;
   if (const json* p = optional(doc, "table")) scene.table = parseTable(*p);
   if (const json* p = optional(doc, "physics")) scene.physics = parsePhysics(*p);
-  scene.balls = parseBalls(required(doc, "", "balls"), scene.physics.ball_radius);
+  scene.balls = parseBalls(required(doc, "", "balls"), scene.physics);
   if (const json* p = optional(doc, "shot")) scene.shot = parseShot(*p, scene.balls, scene.physics);
   if (const json* p = optional(doc, "until")) scene.until = parseUntil(*p);
   if (const json* p = optional(doc, "step")) scene.step = parseStep(*p);

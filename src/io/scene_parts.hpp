@@ -22,7 +22,7 @@ PhysicsParams parsePhysics(const nlohmann::json& v);
 nlohmann::ordered_json physicsToJson(const PhysicsParams& p);
 /// [{"id", "x", "y", "vx", "vy", "mass"}, ...] at "balls".
 /// Balls of the given radius (it bounds their spin).
-std::vector<BallState> parseBalls(const nlohmann::json& v, double radius);
+std::vector<BallState> parseBalls(const nlohmann::json& v, const PhysicsParams& physics);
 /// {"hz", "velocity_iterations", ...} at "step".
 StepParams parseStep(const nlohmann::json& v);
 /// [side, height] at `path`.

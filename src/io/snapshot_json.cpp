@@ -91,7 +91,7 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
     const json& b = v[i];
     const std::string at = element(path, i);
     expectObject(b, at);
-    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "w", "mass", "pocket"});
+    allowOnly(b, at, {"id", "x", "y", "vx", "vy", "z", "vz", "w", "mass", "pocket", "off_table"});
     BallState ball;
     ball.id = integer(required(b, at, "id"), member(at, "id"), 0, INT_MAX);
     if (whole && ball.id != like[i].id) {
@@ -101,6 +101,11 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
                 number(required(b, at, "y"), member(at, "y"), place)};
     ball.vel = {number(required(b, at, "vx"), member(at, "vx"), speed),
                 number(required(b, at, "vy"), member(at, "vy"), speed)};
+    // A ball's height came with the airborne balls: a state written before has none.
+    if (const json* z = optional(b, "z")) {
+      ball.z = number(*z, member(at, "z"), Bounds::closed(0.0, limits::kMaxBallHeight));
+    }
+    if (const json* vz = optional(b, "vz")) ball.vz = number(*vz, member(at, "vz"), speed);
     const json& w = required(b, at, "w");
     const std::string wat = member(at, "w");
     if (!w.is_array() || w.size() != 3) refuse(wat, "expected [wx, wy, wz], found " + describe(w));
@@ -113,6 +118,15 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
       const std::string name = text(pocket, member(at, "pocket"));
       ball.pocket = pocketFromName(name);
       if (!ball.pocket) refuse(member(at, "pocket"), "unknown pocket " + quote(name));
+    }
+    if (const json* off = optional(b, "off_table")) {
+      if (!off->is_boolean()) refuse(member(at, "off_table"), "expected true or false");
+      ball.off_table = off->get<bool>();
+      if (ball.off_table && ball.pocket) {
+        refuse(member(at, "pocket"), "a ball off the table lies in no pocket");
+      }
+      // Off the table, as every ball not on it (see BallState::off_table).
+      if (ball.off_table) ball.pocket = PocketId::TopLeft;
     }
     balls.push_back(ball);
   }

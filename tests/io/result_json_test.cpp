@@ -66,7 +66,7 @@ TEST(ResultJson, WritesBalls) {
   const auto j = resultToJson(sampleResult());
   ASSERT_EQ(j["balls"].size(), 2u);
   const auto& cue = j["balls"][0];
-  EXPECT_EQ(keysOf(cue), (Keys{"id", "x", "y", "vx", "vy", "w", "pocket"}));
+  EXPECT_EQ(keysOf(cue), (Keys{"id", "x", "y", "vx", "vy", "z", "vz", "w", "pocket", "off_table"}));
   EXPECT_EQ(cue["id"], 0);
   EXPECT_EQ(cue["x"], 0.1);
   EXPECT_EQ(cue["y"], -0.2);

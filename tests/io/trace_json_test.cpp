@@ -87,7 +87,7 @@ TEST(TraceJson, ResultCarriesOneEntryPerBallKeyedByItsId) {
   EXPECT_EQ(t["phase"], nlohmann::ordered_json::array({"sliding", "pocketed"}));
   std::vector<std::string> keys;
   for (const auto& item : t.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"t", "x", "y", "vx", "vy", "w", "phase"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"t", "x", "y", "vx", "vy", "z", "vz", "w", "phase"}));
   EXPECT_FALSE(resultToJson(SimResult{}).contains("trace"));
 }
 

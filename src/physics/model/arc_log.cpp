@@ -118,6 +118,8 @@ BallTrace sampleBall(const std::vector<ArcLog::Entry>& entries, const std::vecto
     out.y.push_back(k.p.y);
     out.vx.push_back(k.v.x);
     out.vy.push_back(k.v.y);
+    out.z.push_back(k.z);
+    out.vz.push_back(k.vz);
     out.w.push_back(k.w);
     out.phase.push_back(phase);
   }

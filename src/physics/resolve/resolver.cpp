@@ -171,6 +171,11 @@ void Resolver::settleJam(double t, EngineBalls& balls, std::size_t i, std::size_
 
 void Resolver::cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted) {
   Kinematics k = balls.now(i);
+  // In the air with its bottom over the cushion's nose: it flies over the rail, off the table.
+  if (balls.arc(i).phase == Phase::Airborne && k.z >= p_.cushion_height) {
+    offTable(t, balls, i);
+    return;
+  }
   const double mass = balls.mass(i);
   if (touchesOnly(k, predicted, faces(k.p), p_.ball_radius)) {
     const Kinematics rested = restAgainstCushion(k, predicted, table_, p_);
@@ -223,13 +228,23 @@ void Resolver::phaseEnd(double t, EngineBalls& balls, std::size_t i) {
   if (!flying) return;
   const Arc& after = balls.arc(i);
   ballEventOf(EventType::Land, t, balls, i, after.start.v);
-  for (const Pocket& hole : table_.pockets) {
-    if (length(after.start.p - hole.drop_centre) < hole.drop_radius) {
-      pocket(t, balls, i, hole.id);
-      return;
-    }
+  if (const auto hole = table_.pocketAt(after.start.p)) {
+    pocket(t, balls, i, *hole);
+    return;
+  }
+  // Down beyond the cushions (over a pocket's mouth and past it): off the table.
+  if (!table_.insideLoop(after.start.p)) {
+    offTable(t, balls, i);
+    return;
   }
   if (after.phase == Phase::Airborne) ballEventOf(EventType::Airborne, t, balls, i, after.start.v);
+}
+
+// The ball leaves the table over a rail (WPA "jumped ball"): it is taken off where it is.
+void Resolver::offTable(double t, EngineBalls& balls, std::size_t i) {
+  const Vec2 v = balls.now(i).v;
+  balls.drop(i, std::nullopt);
+  ballEventOf(EventType::OffTable, t, balls, i, v);
 }
 
 // Two balls meeting with one at least in the air: in space, frictionless (collideInAir).

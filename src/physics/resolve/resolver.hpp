@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "nineball/event.hpp"
@@ -42,8 +43,9 @@ class EngineBalls {
   virtual void restart(std::size_t i, const Kinematics& k) = 0;
   /// The ball's motion passes into its next phase (slide to roll, roll to rest, spin dying).
   virtual void nextPhase(std::size_t i) = 0;
-  /// The ball leaves the table into `pocket` (the resolver records the event).
-  virtual void drop(std::size_t i, PocketId pocket) = 0;
+  /// The ball leaves the table into `pocket`, or over a rail when none (the resolver records
+  /// the event).
+  virtual void drop(std::size_t i, std::optional<PocketId> pocket) = 0;
 
   /// An engine with a ball solver of its own resolves the contact of i and j and says true;
   /// false leaves it to the resolver.
@@ -81,6 +83,7 @@ class Resolver {
   void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void phaseEnd(double t, EngineBalls& balls, std::size_t i);
   void contactInAir(double t, EngineBalls& balls, std::size_t i, std::size_t j);
+  void offTable(double t, EngineBalls& balls, std::size_t i);
   void ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i, Vec2 v);
   void settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted);

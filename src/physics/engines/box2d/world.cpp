@@ -59,6 +59,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     b2Body* body = nullptr;  // null once pocketed
     Vec2 pos;                // kept for pocketed balls
     std::optional<PocketId> pocket;
+    bool off_table = false;  // left over a rail (`pocket` then names none)
     Arc arc;  // the closed form the ball follows since the last event that changed it
   };
 
@@ -186,6 +187,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     md.I = 0.0f;
     b.body->SetMassData(&md);
     b.pocket.reset();
+    b.off_table = false;
     contacts_stale = true;
     queue.changed(index);
   }
@@ -276,10 +278,11 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     queue.changed(i);
   }
 
-  void drop(std::size_t i, PocketId pocket) override {
+  void drop(std::size_t i, std::optional<PocketId> pocket) override {
     Ball& b = balls[i];
     b.pos = position(b);
-    b.pocket = pocket;
+    b.pocket = pocket.value_or(PocketId::TopLeft);
+    b.off_table = !pocket;
     world.DestroyBody(b.body);
     b.body = nullptr;
     queue.changed(i);
@@ -513,8 +516,9 @@ void World::addBall(const BallState& ball) {
   w.balls.push_back(b);
   w.recorder.resize(w.balls.size());
   if (w.arc_log) w.arc_log->addBall(ball.id);
-  if (ball.pocket) {
-    w.balls.back().pocket = ball.pocket;
+  if (ball.pocket || ball.off_table) {
+    w.balls.back().pocket = ball.pocket.value_or(PocketId::TopLeft);
+    w.balls.back().off_table = ball.off_table;
     if (w.arc_log) w.arc_log->pocket(w.balls.size() - 1, w.time, ball.pos);
     return;
   }
@@ -629,6 +633,7 @@ std::vector<BallState> World::balls() const {
     }
     s.mass = b.mass;
     s.pocket = b.pocket;
+    s.off_table = b.off_table;
     out.push_back(s);
   }
   return out;
