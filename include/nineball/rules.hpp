@@ -40,11 +40,12 @@ enum class Foul {
   NoCall,           ///< a ball dropped that was not called (or nothing was called)
   PottedNotOn,      ///< snooker: a ball not on went down
   ThreeMisses,      ///< snooker: a third miss in a row with a ball on in view (frame lost)
+  JumpedBall,       ///< a ball (the cue ball among them) left the table over a rail
 };
 
 /// "scratch", "wrong-ball-first", "no-contact", "no-rail", "bad-break", "three-fouls",
 /// "eight-early", "wrong-group-first", "wrong-pocket", "no-call", "potted-not-on",
-/// "three-misses".
+/// "three-misses", "jumped-ball".
 const char* foulName(Foul f);
 
 enum class Player { A, B };

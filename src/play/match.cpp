@@ -315,7 +315,8 @@ TurnRecord Match::finishShot() {
   std::vector<int> to_spot = rec.verdict.to_spot;
   std::sort(to_spot.rbegin(), to_spot.rend());
   for (int b : to_spot) spot(b);
-  if (summary.cue_pocketed) {
+  const bool cue_spotted = std::find(to_spot.begin(), to_spot.end(), cue_) != to_spot.end();
+  if (summary.cue_pocketed && !cue_spotted) {
     if (rec.verdict.cue_to_head_spot) {
       returnCueToHeadSpot();
     } else {

@@ -42,6 +42,9 @@ rules::ShotSummary summarize(const std::vector<Event>& events, int cue) {
         break;
       case EventType::OffTable:
         s.off_table.push_back(e.a);
+        // Off the table the cue ball is in hand for the next player, as after a scratch (WPA
+        // General Rules, "Cue Ball Scratch or off the Table"; WPBSA: in hand in the D).
+        if (e.a == cue) s.cue_pocketed = true;
         break;
     }
   }

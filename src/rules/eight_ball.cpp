@@ -1,6 +1,7 @@
 #include "rules/eight_ball.hpp"
 
 #include "rules/ball_list.hpp"
+#include "rules/rotation_fouls.hpp"
 #include "rules/wpa_break.hpp"
 
 namespace nineball::rules {
@@ -14,6 +15,8 @@ bool onTheEight(const std::vector<int>& first_balls) {
 
 Foul shotFoul(const ShotSummary& shot, const std::vector<int>& first_balls,
               const std::vector<int>& pocketed) {
+  // WPA General Rules, "Balls Jumped off the Table" and "Cue Ball Scratch or off the Table".
+  if (!shot.off_table.empty()) return Foul::JumpedBall;
   if (shot.cue_pocketed) return Foul::Scratch;
   if (!shot.first_contact) return Foul::NoContact;
   if (!contains(first_balls, *shot.first_contact)) return Foul::WrongGroupFirst;
@@ -85,7 +88,15 @@ Verdict EightBallRules::judgeBreak(RackState& s, const ShotSummary& shot) const 
     erase(stay_down, kEight);
   }
   s.remove(stay_down);
-  if (shot.cue_pocketed) {
+  // Jumped on the break: a foul, and the balls are spotted (the 8 as when pocketed).
+  for (int b : jumpedObjectBalls(shot, kCueBall)) {
+    if (s.has(b)) v.to_spot.push_back(b);
+  }
+  if (!shot.off_table.empty()) {
+    v.foul = Foul::JumpedBall;
+    v.next = other(s.shooter);
+    v.ball_in_hand = true;
+  } else if (shot.cue_pocketed) {
     v.foul = Foul::Scratch;
     v.next = other(s.shooter);
     v.ball_in_hand = true;
@@ -104,6 +115,17 @@ Verdict EightBallRules::judge(RackState& s, const ShotSummary& shot, bool) const
   const bool on_eight = onTheEight(first_balls);
   v.foul = shotFoul(shot, first_balls, v.pocketed);
   s.remove(v.pocketed);
+  // WPA eight-ball: the 8 jumped off the table loses the rack; other jumped object balls are
+  // spotted.
+  const std::vector<int> jumped = jumpedObjectBalls(shot, kCueBall);
+  if (contains(jumped, kEight)) {
+    v.winner = other(s.shooter);
+    v.next = *v.winner;
+    return v;
+  }
+  for (int b : jumped) {
+    if (s.has(b)) v.to_spot.push_back(b);
+  }
 
   if (contains(v.pocketed, kEight)) {
     v.foul = eightDownFoul(v.foul, on_eight, shot);

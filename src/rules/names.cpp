@@ -51,6 +51,8 @@ const char* foulName(Foul f) {
       return "potted-not-on";
     case Foul::ThreeMisses:
       return "three-misses";
+    case Foul::JumpedBall:
+      return "jumped-ball";
   }
   return "?";
 }

@@ -36,6 +36,7 @@ Verdict NineBallRules::judgeWpa(RackState& s, const ShotSummary& shot, bool push
     erase(stay_down, game_ball);
   }
   s.remove(stay_down);
+  jumpedStayOff(s, v, shot, game_ball);
 
   if (v.foul == Foul::ThreeFouls) {
     v.winner = other(s.shooter);
@@ -62,7 +63,9 @@ Verdict NineBallRules::judgePaper(RackState& s, const ShotSummary& shot) const {
   v.pocketed = newlyPocketed(s.on_table, shot.pocketed);
   const int on = lowestOnTable(s);
   const bool nine_down = contains(v.pocketed, rotationGameBall(s.on_table, kNine));
-  if (shot.cue_pocketed) {
+  if (!shot.off_table.empty()) {
+    v.foul = Foul::JumpedBall;
+  } else if (shot.cue_pocketed) {
     v.foul = Foul::Scratch;
   } else if (!shot.first_contact) {
     v.foul = Foul::NoContact;
@@ -70,6 +73,7 @@ Verdict NineBallRules::judgePaper(RackState& s, const ShotSummary& shot) const {
     v.foul = Foul::WrongBallFirst;
   }
   s.remove(v.pocketed);
+  jumpedStayOff(s, v, shot, rotationGameBall(s.on_table, kNine));
   if (!v.legal()) {
     v.next = other(s.shooter);
     v.cue_to_head_spot = shot.cue_pocketed;

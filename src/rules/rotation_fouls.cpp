@@ -18,6 +18,8 @@ int lowestOnTable(const RackState& s) {
 
 Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector<int>& pocketed,
                   int on, bool push_out) {
+  // WPA General Rules, "Balls Jumped off the Table" and "Cue Ball Scratch or off the Table".
+  if (!shot.off_table.empty()) return Foul::JumpedBall;
   if (shot.cue_pocketed) return Foul::Scratch;
   if (s.break_next) {
     if (shot.first_contact != on) return Foul::BadBreak;
@@ -36,6 +38,25 @@ void countFoul(RackState& s, Verdict& v) {
     if (++s.foulCount(s.shooter) >= kFoulsToLose) v.foul = Foul::ThreeFouls;
   } else {
     s.foulCount(s.shooter) = 0;
+  }
+}
+
+std::vector<int> jumpedObjectBalls(const ShotSummary& shot, int cue) {
+  std::vector<int> balls;
+  for (int b : shot.off_table) {
+    if (b != cue) balls.push_back(b);
+  }
+  return balls;
+}
+
+void jumpedStayOff(RackState& s, Verdict& v, const ShotSummary& shot, int game_ball) {
+  for (int b : jumpedObjectBalls(shot, kCueBall)) {
+    if (!s.has(b)) continue;
+    if (b == game_ball) {
+      v.to_spot.push_back(b);
+    } else {
+      s.remove({b});
+    }
   }
 }
 

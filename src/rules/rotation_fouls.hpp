@@ -1,5 +1,8 @@
 #pragma once
 
+#include <vector>
+
+#include "nineball/ball.hpp"
 #include "nineball/rules.hpp"
 
 namespace nineball::rules {
@@ -17,6 +20,13 @@ Foul rotationFoul(const RackState& s, const ShotSummary& shot, const std::vector
 /// Counts a foul, or clears the count after a legal shot; a third foul in a row turns the
 /// verdict's foul into ThreeFouls.
 void countFoul(RackState& s, Verdict& v);
+
+/// The object balls that left the table this shot (every ball in shot.off_table but `cue`).
+std::vector<int> jumpedObjectBalls(const ShotSummary& shot, int cue);
+
+/// Object balls jumped off the table stay off, but the game ball, which is spotted (WPA
+/// nine-ball and ten-ball: "jumped object balls are not re-spotted, except the 9 / the 10").
+void jumpedStayOff(RackState& s, Verdict& v, const ShotSummary& shot, int game_ball);
 
 /// The ball that wins a rotation rack: `wanted` (the 9, the 10), or in a custom layout without
 /// it the highest number on the table.

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "nineball/ball.hpp"
 #include "rules/ball_list.hpp"
 #include "rules/snooker_balls.hpp"
 
@@ -84,6 +85,8 @@ Aim aimOf(const RackState& s, const ShotSummary& shot, bool free_ball) {
 
 Foul foulOf(const ShotSummary& shot, const Aim& aim, std::optional<int> first,
             const std::vector<int>& pocketed) {
+  // WPBSA: forcing a ball off the table is a foul (the cue ball too: in hand in the D).
+  if (!shot.off_table.empty()) return Foul::JumpedBall;
   if (shot.cue_pocketed) return Foul::Scratch;
   if (!first) return Foul::NoContact;
   if (!aim.isOn(*first)) return Foul::WrongBallFirst;
@@ -136,13 +139,19 @@ void blackDecides(RackState& s, Verdict& v) {
 void judgeFoul(RackState& s, Verdict& v, const ShotSummary& shot, const Aim& aim,
                std::optional<int> first, bool needed_snookers) {
   const Player striker = s.shooter;
-  v.points[index(other(striker))] = penaltyOf(aim, first, v.pocketed);
+  // A ball forced off the table counts as one potted in the foul: its value in the penalty; a
+  // red stays off, a colour is spotted (WPBSA).
+  std::vector<int> gone = v.pocketed;
+  for (int b : shot.off_table) {
+    if (b != kCueBall && s.has(b) && !contains(gone, b)) gone.push_back(b);
+  }
+  v.points[index(other(striker))] = penaltyOf(aim, first, gone);
   v.miss = isMiss(s, shot, v.foul, needed_snookers);
   int& misses = s.snooker.misses[index(striker)];
   misses = v.miss ? misses + 1 : 0;
   // Reds potted on a foul stay down; every colour goes back on its spot (3.6).
   std::vector<int> stay_down;
-  for (int b : v.pocketed) {
+  for (int b : gone) {
     (isRed(b) ? stay_down : v.to_spot).push_back(b);
   }
   const bool black_was_last = s.on_table.size() == 1 && s.has(kBlack);

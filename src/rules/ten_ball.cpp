@@ -46,6 +46,7 @@ Verdict TenBallRules::judge(RackState& s, const ShotSummary& shot, bool push_out
     erase(stay_down, game_ball);
   }
   s.remove(stay_down);
+  jumpedStayOff(s, v, shot, game_ball);
 
   if (v.foul == Foul::ThreeFouls) {
     v.winner = other(s.shooter);

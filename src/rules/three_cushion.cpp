@@ -95,6 +95,11 @@ Verdict ThreeCushionRules::judge(RackState& s, const ShotSummary& shot, bool) co
   bool touched_both = false;
   v.cushions = cushionsBeforeSecond(shot, cueBall(s), touched_both);
   if (s.break_next && !openedOnTheRed(shot)) v.foul = Foul::WrongBallFirst;
+  // UMB: a ball that leaves the table is a foul (no point, the inning ends); it is spotted.
+  if (!shot.off_table.empty()) {
+    v.foul = Foul::JumpedBall;
+    v.to_spot = shot.off_table;
+  }
   const bool point = v.legal() && !shot.miscue && touched_both && v.cushions >= kCushionsForAPoint;
   if (!point) {
     endInning(s, v);

@@ -46,6 +46,8 @@ std::string foulWords(rules::Foul foul) {
       return "a ball not on potted";
     case rules::Foul::ThreeMisses:
       return "a third miss";
+    case rules::Foul::JumpedBall:
+      return "a ball forced off the table";
     default:
       return rules::foulName(foul);
   }

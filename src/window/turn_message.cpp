@@ -39,6 +39,12 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
       return "a ball not on went into a pocket";
     case rules::Foul::ThreeMisses:
       return "a third miss in a row";
+    case rules::Foul::JumpedBall:
+      return summary.off_table.size() == 1
+                 ? (summary.off_table.front() == 0
+                        ? std::string("the cue ball left the table")
+                        : "the " + std::to_string(summary.off_table.front()) + " left the table")
+                 : std::string("balls left the table");
     case rules::Foul::None:
       break;
   }
