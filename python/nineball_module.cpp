@@ -145,6 +145,8 @@ py::dict traceToPython(const Trace& trace) {
     one["y"] = column(b.y, arrays);
     one["vx"] = column(b.vx, arrays);
     one["vy"] = column(b.vy, arrays);
+    one["z"] = column(b.z, arrays);
+    one["vz"] = column(b.vz, arrays);
     py::list phase;
     for (TracePhase p : b.phase) phase.append(tracePhaseName(p));
     if (arrays) {
@@ -332,9 +334,17 @@ py::dict continueFrom(py::handle scene_given, py::handle result, py::object shot
   for (py::handle b : result.cast<py::dict>()["balls"]) {
     const py::dict ball = b.cast<py::dict>();
     if (ball.contains("pocket") && !ball["pocket"].is_none()) continue;
+    if (ball.contains("off_table") && ball["off_table"].cast<bool>()) continue;
     py::dict next;
     for (const char* key : {"id", "x", "y", "vx", "vy", "w"}) {
       if (ball.contains(key)) next[key] = plainValue(ball[key]);
+    }
+    // A ball in the air goes on from its height; one on the cloth is given none (the cloths
+    // that keep every ball on it refuse a height).
+    for (const char* key : {"z", "vz"}) {
+      if (ball.contains(key) && plainValue(ball[key]).cast<double>() != 0.0) {
+        next[key] = plainValue(ball[key]);
+      }
     }
     if (masses.contains(ball["id"])) next["mass"] = masses[ball["id"]];
     balls.append(next);
@@ -448,6 +458,11 @@ py::list stateAt(py::handle result_given, double t, py::handle scene) {
     b.vel = {cell(traceColumn(ball, "vx", key, n), k), cell(traceColumn(ball, "vy", key, n), k)};
     const py::sequence w = py::reinterpret_borrow<py::object>(spins[k]).cast<py::sequence>();
     b.w = {cell(w, 0), cell(w, 1), cell(w, 2)};
+    // A trace written before balls could leave the cloth has no heights: they are 0.
+    if (ball.contains("z") && ball.contains("vz")) {
+      b.z = cell(traceColumn(ball, "z", key, n), k);
+      b.vz = cell(traceColumn(ball, "vz", key, n), k);
+    }
     const bool pocketed = phase == tracePhaseName(TracePhase::Pocketed);
     if (!pocketed) b = freeMotion(b, t - cell(times, k), physics);
     py::dict one;
@@ -456,6 +471,8 @@ py::list stateAt(py::handle result_given, double t, py::handle scene) {
     one["y"] = b.pos.y;
     one["vx"] = b.vel.x;
     one["vy"] = b.vel.y;
+    one["z"] = b.z;
+    one["vz"] = b.vz;
     py::list spin;
     spin.append(b.w.x);
     spin.append(b.w.y);

@@ -9,6 +9,7 @@
 
 #include "nineball/ball.hpp"
 #include "rules/ball_list.hpp"
+#include "rules/player_index.hpp"
 #include "rules/snooker_balls.hpp"
 
 namespace nineball::rules {
@@ -25,10 +26,6 @@ constexpr int kLeastPenalty = 4;
 constexpr int kMostPenalty = 7;
 // WPBSA 3.14(h): the third miss in a row with a ball on in view loses the frame.
 constexpr int kMissesToLose = 3;
-
-int index(Player p) {
-  return p == Player::A ? 0 : 1;
-}
 
 // What the stroke was played at: the balls on, the nomination and what it is worth.
 struct Aim {
@@ -145,9 +142,9 @@ void judgeFoul(RackState& s, Verdict& v, const ShotSummary& shot, const Aim& aim
   for (int b : shot.off_table) {
     if (b != kCueBall && s.has(b) && !contains(gone, b)) gone.push_back(b);
   }
-  v.points[index(other(striker))] = penaltyOf(aim, first, gone);
+  v.points[playerIndex(other(striker))] = penaltyOf(aim, first, gone);
   v.miss = isMiss(s, shot, v.foul, needed_snookers);
-  int& misses = s.snooker.misses[index(striker)];
+  int& misses = s.snooker.misses[playerIndex(striker)];
   misses = v.miss ? misses + 1 : 0;
   // Reds potted on a foul stay down; every colour goes back on its spot (3.6).
   std::vector<int> stay_down;
@@ -178,7 +175,7 @@ void judgeFoul(RackState& s, Verdict& v, const ShotSummary& shot, const Aim& aim
 
 void judgeLegal(RackState& s, Verdict& v, const Aim& aim) {
   const Player striker = s.shooter;
-  s.snooker.misses[index(striker)] = 0;
+  s.snooker.misses[playerIndex(striker)] = 0;
   int points = 0;
   std::vector<int> stay_down;
   bool black_down = false;  // the last ball, potted in its turn
@@ -210,10 +207,10 @@ void judgeLegal(RackState& s, Verdict& v, const Aim& aim) {
     if (!v.pocketed.empty()) points = aim.value_on;
   }
   s.remove(stay_down);
-  v.points[index(striker)] = points;
+  v.points[playerIndex(striker)] = points;
   if (points > 0) {
     s.run += points;
-    int& best = s.high_run[index(striker)];
+    int& best = s.high_run[playerIndex(striker)];
     best = std::max(best, s.run);
     v.next = striker;
   } else {

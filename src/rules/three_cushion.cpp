@@ -2,14 +2,12 @@
 
 #include <algorithm>
 
+#include "rules/player_index.hpp"
+
 namespace nineball::rules {
 namespace {
 
 constexpr int kCushionsForAPoint = 3;
-
-int index(Player p) {
-  return p == Player::A ? 0 : 1;
-}
 
 // UMB art. 23: the starting cannon is played directly onto the red: the first thing the cue
 // ball meets is the red, before any cushion or the other ball.
@@ -89,7 +87,7 @@ Verdict ThreeCushionRules::judge(RackState& s, const ShotSummary& shot, bool) co
   Verdict v;
   v.shooter = s.shooter;
   if (!s.inning_open) {
-    ++s.innings[index(s.shooter)];
+    ++s.innings[playerIndex(s.shooter)];
     s.inning_open = true;
   }
   bool touched_both = false;
@@ -105,12 +103,12 @@ Verdict ThreeCushionRules::judge(RackState& s, const ShotSummary& shot, bool) co
     endInning(s, v);
     return v;
   }
-  v.points[index(s.shooter)] = 1;
+  v.points[playerIndex(s.shooter)] = 1;
   ++s.run;
-  int& best = s.high_run[index(s.shooter)];
+  int& best = s.high_run[playerIndex(s.shooter)];
   best = std::max(best, s.run);
   v.next = s.shooter;
-  const int score = s.score[index(s.shooter)] + 1;  // the Rack adds v.points after judging
+  const int score = s.score[playerIndex(s.shooter)] + 1;  // the Rack adds v.points after judging
   if (s.target > 0 && score >= s.target) reachedTheDistance(s, v);
   return v;
 }

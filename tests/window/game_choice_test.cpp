@@ -7,20 +7,13 @@
 #include "window/game_help.hpp"
 #include "window/game_session.hpp"
 #include "window/menu.hpp"
+#include "window/menu_rows.hpp"
 #include "window/rack_save.hpp"
 #include "window/settings.hpp"
 #include "window/turn_message.hpp"
 
 namespace nineball::window {
 namespace {
-
-int rowNamed(const MenuModel& m, const std::string& label) {
-  const auto rows = m.rows();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i].label == label) return static_cast<int>(i);
-  }
-  return -1;
-}
 
 TEST(GameChoice, TheMenuPicksTheGameAndOffersTheComputerInEach) {
   Settings s;

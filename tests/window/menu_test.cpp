@@ -3,16 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include "window/menu_rows.hpp"
+
 namespace nineball::window {
 namespace {
-
-int rowNamed(const MenuModel& m, const std::string& label) {
-  const auto rows = m.rows();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i].label == label) return static_cast<int>(i);
-  }
-  return -1;
-}
 
 void selectRow(MenuModel& m, const std::string& label) {
   const int want = rowNamed(m, label);

@@ -11,7 +11,7 @@ namespace nineball {
 namespace {
 
 physics::Kinematics kinematicsOf(const BallState& b) {
-  return {b.pos, b.vel, b.w};
+  return {b.pos, b.vel, b.w, b.z, b.vz};
 }
 
 // The arc the ball follows at time t, from the one that starts at `arc`.
@@ -30,6 +30,8 @@ BallState freeMotion(const BallState& ball, double t, const PhysicsParams& p) {
   out.pos = k.p;
   out.vel = k.v;
   out.w = k.w;
+  out.z = k.z;
+  out.vz = k.vz;
   return out;
 }
 
