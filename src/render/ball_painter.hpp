@@ -40,7 +40,7 @@ class BallPainter {
   SphereBallRenderer& spheres() { return spheres_; }
 
  private:
-  void shadow(Vec2 c, double r, std::uint8_t alpha);
+  void shadow(Vec2 c, double r, std::uint8_t alpha, double lift_px = 0.0);
   void sinking(sf::RenderTarget& target, const ViewTransform& view, const BallState& b, double r,
                double time, const TableGeometry& table);
 

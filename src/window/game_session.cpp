@@ -470,6 +470,7 @@ std::vector<BallState> GameSession::ballsToDraw() const {
       if (b.id == kCueBall) {
         b.pos = *cue_.spot();
         b.pocket.reset();
+        b.off_table = false;
       }
     }
   }

@@ -38,6 +38,7 @@ std::vector<BallState> ShotSteps::between(double alpha) const {
     out[i].pos = a.pos + (out[i].pos - a.pos) * alpha;
     out[i].vel = a.vel + (out[i].vel - a.vel) * alpha;
     out[i].w = a.w + (out[i].w - a.w) * alpha;
+    out[i].z = a.z + (out[i].z - a.z) * alpha;
   }
   return out;
 }
