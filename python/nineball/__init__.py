@@ -112,9 +112,10 @@ def to_json(doc: Union[Result, Mapping[str, Any]]) -> str:
 def state_at(result: Mapping[str, Any], t: float,
              scene: Optional[Scene] = None) -> List[Dict[str, Any]]:
     """Every ball of a traced run at time ``t`` (s), exactly: one dict per ball, in the
-    trace's order, with ``id``, ``x``, ``y`` (m), ``vx``, ``vy`` (m/s), ``w`` ([wx, wy, wz],
-    rad/s), ``phase`` ("sliding", "rolling", "spinning", "rest", "pocketed") and ``pocket``
-    (the pocket's name once it has dropped, else None).
+    trace's order, with ``id``, ``x``, ``y`` (m), ``vx``, ``vy`` (m/s), ``z`` (m, the height
+    above resting on the cloth), ``vz`` (m/s), ``w`` ([wx, wy, wz], rad/s), ``phase``
+    ("sliding", "rolling", "spinning", "rest", "airborne", "pocketed") and ``pocket`` (the
+    pocket's name once it has dropped, else None).
 
     The state is the ball's last sample at or before ``t`` carried on by the closed form of
     its free motion (the cloth's sliding, rolling and spinning), under the physics the run
@@ -197,7 +198,8 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
 
     Streams as iter_simulate does and keeps only the numbers: ``ids`` (every ball id met,
     sorted), ``x``, ``y``, ``vx``, ``vy`` (scenes x balls, m and m/s; NaN where a scene has no
-    such ball), ``pocketed`` (scenes x balls, bool), ``time`` (simulated seconds), ``partial``
+    such ball), ``pocketed`` (scenes x balls, bool: in a pocket or off the table), ``time``
+    (simulated seconds), ``partial``
     (bool), and ``events`` (scenes x event types, the counts, with ``event_types`` naming the
     columns). Needs numpy.
     """
@@ -207,7 +209,8 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
     ids = set()
     types = set()
     for r in iter_simulate(scenes, threads, chunk, progress):
-        balls = {b["id"]: (b["x"], b["y"], b["vx"], b["vy"], b["pocket"] is not None)
+        balls = {b["id"]: (b["x"], b["y"], b["vx"], b["vy"],
+                           b["pocket"] is not None or b.get("off_table", False))
                  for b in r["balls"]}
         counts: Dict[str, int] = {}
         for e in r["events"]:

@@ -10,7 +10,7 @@ namespace {
 // The sliding includes the vertical part topspin and draw give it, so a rolling ball throws
 // less. Each ball's contact point answers a surface impulse J by J/m + J R^2/I = 7/2 J/m, so
 // sliding stops at |u| / (7/2 (1/m_a + 1/m_b)): 1/7 of m|u| for equal balls. The vertical part
-// of the impulse goes into the slate (or a hop this 2-D game leaves out); its spin stays.
+// of the impulse goes into the slate (a hop from it is not modelled); its spin stays.
 void grip(Kinematics& a, Kinematics& b, double mass_a, double mass_b, Vec2 n, double normal_impulse,
           const PhysicsParams& p) {
   const double r = p.ball_radius;
