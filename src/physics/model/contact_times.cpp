@@ -209,9 +209,12 @@ std::optional<double> ballContactInAir(const Path& a, Height za, const Path& b, 
                    0.25 * dot(g, g) + z2 * z2}};
   const double apart = std::sqrt(dot(d, d) + z0 * z0);
   if (apart - distance <= kTouchTolerance) {
-    // Touching: met at once while closing; parting or resting, not again on these paths.
     const double closing = apart > 0.0 ? -(dot(d, e) + z0 * z1) / apart : 0.0;
-    return closing > kMinClosingSpeed ? std::optional<double>(0.0) : std::nullopt;
+    if (closing > kMinClosingSpeed) return 0.0;
+    // Parting, but gravity may bring them back (a ball bouncing on another): the distance's
+    // square is back at today's at the first root of (f(s) - f(0)) / s.
+    if (-closing <= kMinClosingSpeed) return std::nullopt;
+    return firstCrossing(Quartic{{f.c[1], f.c[2], f.c[3], f.c[4], 0.0}}, 0.0, horizon);
   }
   return firstCrossing(f, 0.0, horizon);
 }

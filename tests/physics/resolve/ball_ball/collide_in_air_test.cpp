@@ -91,6 +91,30 @@ TEST(CollideInAir, AFlightTooLowMeetsTheBlockerTwoRadiiAwayInSpaceAndDrivesItDow
   }
 }
 
+TEST(CollideInAir, ABallDroppedOntoAnotherBouncesOffAndNeverSinksIntoIt) {
+  const double r = PhysicsParams::real().ball_radius;
+  for (const char* engine : {"reference", "box2d"}) {
+    StepParams step;
+    step.engine = EngineKind::named(engine);
+    const auto w = makeEngine(TableDef{}, PhysicsParams::real(), step);
+    BallState top = BallState::at(0, {0.005, 0.0});
+    top.z = 0.1;  // dropped from 10 cm above the ball beneath, 5 mm off its centre
+    w->addBall(top);
+    w->addBall(BallState::at(1, {0.0, 0.0}));
+    double closest = 1.0;
+    for (int n = 0; n < 3000 && !w->atRest(); ++n) {
+      w->runFor(0.001);
+      const std::vector<BallState> b = w->balls();
+      const Vec2 d = b[1].pos - b[0].pos;
+      closest = std::min(closest, std::sqrt(dot(d, d) + (b[1].z - b[0].z) * (b[1].z - b[0].z)));
+    }
+    EXPECT_TRUE(w->atRest()) << engine;
+    EXPECT_FALSE(w->exhausted()) << engine;
+    EXPECT_GE(closest, 2.0 * r - 1e-6) << engine;
+    EXPECT_EQ(w->balls()[0].z, 0.0) << engine;
+  }
+}
+
 TEST(CollideInAir, NoContactInTheAirGivesEnergyBack) {
   PhysicsParams p = PhysicsParams::real();
   const double m = p.ball_mass, r = p.ball_radius, g = p.gravity;
