@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "nineball/table.hpp"
@@ -35,5 +36,12 @@ struct BallState {
     return b;
   }
 };
+
+/// The distance between two balls' centres in space (their heights counted), m.
+inline double centreDistance(const BallState& a, const BallState& b) {
+  const Vec2 d = b.pos - a.pos;
+  const double dz = b.z - a.z;
+  return std::sqrt(d.x * d.x + d.y * d.y + dz * dz);
+}
 
 }  // namespace nineball

@@ -50,12 +50,6 @@ double energy(const std::vector<BallState>& balls, double r, double mass, double
   return e;
 }
 
-// The distance between two balls' centres in space.
-double apart(const BallState& a, const BallState& b) {
-  const Vec2 d = b.pos - a.pos;
-  return std::sqrt(dot(d, d) + (b.z - a.z) * (b.z - a.z));
-}
-
 // A ball off the table is announced by the event that took it: a pocket, or over a rail.
 bool announcedOff(const BallState& b, const std::vector<Event>& events, std::size_t from) {
   const EventType type = b.off_table ? EventType::OffTable : EventType::Pocket;
@@ -134,7 +128,7 @@ std::uint64_t runOnce(const Scenario& s, const StressOptions& o, StressReport& r
                   "ball " + std::to_string(b.id));
       for (std::size_t j = i + 1; j < balls.size(); ++j) {
         if (balls[j].pocket) continue;
-        const double gap = apart(b, balls[j]) - 2.0 * r;
+        const double gap = centreDistance(b, balls[j]) - 2.0 * r;
         if (gap > 0.01) continue;
         if (gap >= -kMaxOverlap) {
           check.check("no overlap", true);
@@ -207,7 +201,7 @@ std::uint64_t runReference(const Scenario& s, const StressOptions& o, StressRepo
                 "ball " + std::to_string(b.id));
     for (std::size_t j = i + 1; j < r.balls.size(); ++j) {
       if (r.balls[j].pocket) continue;
-      const double gap = apart(b, r.balls[j]) - 2.0 * radius;
+      const double gap = centreDistance(b, r.balls[j]) - 2.0 * radius;
       check.check("no overlap", gap >= -kMaxOverlap,
                   "balls " + std::to_string(b.id) + "," + std::to_string(r.balls[j].id));
     }

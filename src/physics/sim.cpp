@@ -96,7 +96,8 @@ std::optional<std::string> validateScene(const Scene& scene) {
     for (std::size_t j = 0; j < i; ++j) {
       const BallState& o = scene.balls[j];
       if (o.pocket) continue;
-      if (length(b.pos - o.pos) < 2.0 * r - kOverlapTolerance) {
+      // In space: a ball in the air may lie over another.
+      if (centreDistance(b, o) < 2.0 * r - kOverlapTolerance) {
         return ballField(i) + ": ball " + std::to_string(b.id) + " overlaps ball " +
                std::to_string(o.id);
       }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "nineball/engine.hpp"
+#include "nineball/sim.hpp"
 #include "physics/resolve/cue/cue.hpp"
 
 namespace nineball::physics {
@@ -164,6 +165,16 @@ TEST(Slate, ATipUnderTheEquatorOfAJumpingStrokeIsAScoopAndAMiscue) {
   s.elevation_rad = 0.0;
   s.tip = {0.0, -0.45};  // a level draw is no scoop: the ball never leaves the cloth
   EXPECT_FALSE(cueStrike(s, p.ball_mass, p).scoop);
+}
+
+TEST(Slate, ASceneMayHoldABallInTheAirOverAnotherButNotInIt) {
+  Scene scene;
+  scene.balls = {BallState::at(0, {0.0, 0.0}), BallState::at(1, {0.001, 0.0})};
+  scene.balls[1].z = 0.06;  // 60 mm up: clear of the ball beneath (two radii are 57 mm)
+  EXPECT_FALSE(validateScene(scene).has_value()) << validateScene(scene).value_or("");
+  scene.balls[1].z = 0.05;  // 50 mm: inside it
+  ASSERT_TRUE(validateScene(scene).has_value());
+  EXPECT_NE(validateScene(scene)->find("overlaps ball 0"), std::string::npos);
 }
 
 TEST(Slate, ThePapersClothsKeepEveryBallOnTheSlate) {
