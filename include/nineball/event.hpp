@@ -17,6 +17,7 @@ struct Event {
   int b = -1;      ///< second ball of a ball-ball event
   Vec2 va;         ///< velocity of a just after the contact
   Vec2 vb;         ///< velocity of b just after the contact
+  Vec2 at;  ///< where a's centre was, on the table's plane (airborne, land, off_table, cushion)
   PocketId pocket = PocketId::TopLeft;
 };
 

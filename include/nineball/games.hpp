@@ -103,6 +103,9 @@ struct GameDef {
   /// the miss): the match judges it from the balls' places (play/snookered.hpp) and tells the
   /// rules (ShotSummary::snookered_before, rules::stateFreeBall).
   bool snookers = false;
+  /// The rules call a jump shot (the cue ball over an object ball before it hits one) a foul:
+  /// snooker's (WPBSA Section 2, "Jump Shot"). The pool games and carom allow one.
+  bool jump_shot_foul = false;
   /// Played to a number of points (three-cushion): the default distance; 0 for a game won on
   /// a ball.
   int default_points = 0;

@@ -64,6 +64,8 @@ struct LevelSettings {
   bool combinations = false;             ///< ball on into another ball into a pocket
   bool banks = false;                    ///< the ball on off one cushion into a pocket
   bool kicks = false;                    ///< the cue ball off two cushions to the ball on
+  bool jumps = false;                    ///< the cue ball over a ball in the way
+  double jump_elevation_noise_deg = 0;   ///< the executed elevation's deviation on a jump
   int sweep_headings = 0;                ///< directions tried when no aimed shot is worth much
   int placements = 1;                    ///< ball in hand: cue positions tried
   int break_spots = 1;                   ///< cue positions on the head string tried for the break
@@ -138,10 +140,11 @@ struct PlanInput {
 PlanInput planInputFrom(const Match& match);
 
 /// What a planned shot means to do. A PushOut's turn has kind TurnInput::Kind::PushOut.
-enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety, PushOut, Point };
+enum class ShotKind { Break, Pot, Combination, Bank, Kick, Safety, PushOut, Point, Jump };
 
 /// "break", "pot", "combination", "bank", "kick", "safety", "push-out", "point" (a carom
-/// point attempted).
+/// point attempted), "jump" (the cue ball over a ball in the way: a pot when it has a pocket,
+/// else a hit on the ball on).
 const char* shotKindName(ShotKind kind);
 
 /// The planner's answer for one position.

@@ -41,11 +41,12 @@ enum class Foul {
   PottedNotOn,      ///< snooker: a ball not on went down
   ThreeMisses,      ///< snooker: a third miss in a row with a ball on in view (frame lost)
   JumpedBall,       ///< a ball (the cue ball among them) left the table over a rail
+  JumpShot,         ///< snooker: the cue ball jumped over an object ball before hitting one
 };
 
 /// "scratch", "wrong-ball-first", "no-contact", "no-rail", "bad-break", "three-fouls",
 /// "eight-early", "wrong-group-first", "wrong-pocket", "no-call", "potted-not-on",
-/// "three-misses", "jumped-ball".
+/// "three-misses", "jumped-ball", "jump-shot".
 const char* foulName(Foul f);
 
 enum class Player { A, B };
@@ -102,6 +103,9 @@ struct ShotSummary {
   /// Snooker: the balls the cue ball rested against before the stroke (a touching ball,
   /// WPBSA 3.13): one of them that is on counts as hit when the cue ball plays away.
   std::vector<int> touching_before;
+  /// Snooker: the object balls the cue ball jumped over before it first touched one (WPBSA's
+  /// jump shot, judged by the match: play/jump_shot.hpp).
+  std::vector<int> jumped_over;
 
   /// Where `ball` dropped; nothing when it did not drop or the pocket is unknown.
   std::optional<PocketId> pocketOf(int ball) const;

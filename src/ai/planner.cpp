@@ -107,15 +107,15 @@ void measureStroke(const PlanInput& in, double ball_radius, Plan& plan) {
 // are drawn only where set, so that a level's own draws (and with them every match it plays)
 // stay as they were.
 Shot strike(Shot shot, const LevelSettings& s, double scale, double growth, double ball_radius,
-            std::uint64_t& rng) {
+            double elevation_sd_deg, std::uint64_t& rng) {
   const double aim_error = gaussian(rng);
   const double speed_error = gaussian(rng);
   shot.heading_rad += scale * growth * degToRad(s.aim_noise_deg) * aim_error;
   double speed = shot.speed * (1.0 + scale * s.speed_noise * speed_error);
   if (s.speed_noise_ms > 0.0) speed += scale * s.speed_noise_ms * gaussian(rng);
   shot.speed = std::clamp(speed, kMinExecutedSpeed, kMaxExecutedSpeed);
-  if (s.elevation_noise_deg > 0.0) {
-    const double e = shot.elevation_rad + scale * degToRad(s.elevation_noise_deg) * gaussian(rng);
+  if (elevation_sd_deg > 0.0) {
+    const double e = shot.elevation_rad + scale * degToRad(elevation_sd_deg) * gaussian(rng);
     shot.elevation_rad = std::clamp(e, 0.0, degToRad(kMaxExecutedElevationDeg));
   }
   if (s.tip_noise_m > 0.0) {
@@ -143,7 +143,7 @@ RobustChoice chooseBreakUnderNoise(const std::vector<Candidate>& cands,
   parallelFor(n, threads, [&](std::size_t j) {
     const Candidate& c = cands[ranked[j / kNoisySamples]];
     std::uint64_t rng = kNoisySeed + j % kNoisySamples;
-    worth[j] = eval.value(c, strike(c.shot, s, 1.0, 1.0, ball_radius, rng));
+    worth[j] = eval.value(c, strike(c.shot, s, 1.0, 1.0, ball_radius, s.elevation_noise_deg, rng));
   });
   RobustChoice best;
   best.simulations = static_cast<long>(n);
@@ -219,6 +219,7 @@ void ExecutionNoise::applyTo(LevelSettings& s) const {
   s.speed_noise = 0.0;
   s.speed_noise_ms = speed_ms;
   s.elevation_noise_deg = elevation_deg;
+  s.jump_elevation_noise_deg = elevation_deg;
   s.tip_noise_m = tip_m;
   s.noise_on_break = true;
   // Struck with the whole noise, a controlled break may pocket more than a power break: the
@@ -348,7 +349,9 @@ TurnInput Planner::execute(const Plan& plan) {
   const double scale = softened ? kBreakNoiseScale : 1.0;
   const double growth =
       plan.kind == ShotKind::Break ? 1.0 : aimGrowth(settings_, plan, turn.shot.speed);
-  turn.shot = strike(turn.shot, settings_, scale, growth, ball_radius_, rng_state_);
+  const double elevation_sd = plan.kind == ShotKind::Jump ? settings_.jump_elevation_noise_deg
+                                                          : settings_.elevation_noise_deg;
+  turn.shot = strike(turn.shot, settings_, scale, growth, ball_radius_, elevation_sd, rng_state_);
   return turn;
 }
 

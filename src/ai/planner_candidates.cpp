@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "ai/planner_geometry.hpp"
+#include "ai/planner_jump.hpp"
 #include "ai/planner_throw.hpp"
+#include "nineball/games.hpp"
 #include "nineball/snooker_rack.hpp"
 #include "play/aim_guide.hpp"
 #include "rules/snooker_balls.hpp"
@@ -29,9 +31,13 @@ constexpr double kCombinationDiscount = 0.5;
 constexpr double kBankDiscount = 0.4;
 constexpr int kMaxCombinationLines = 6;
 constexpr int kMaxBankLines = 4;
+// A jump pot's chance is the pot's, halved for the jump (the landing, the hop after it).
+constexpr double kJumpDiscount = 0.5;
+constexpr int kMaxJumpLines = 4;
 // Priors of shots that do not mean to pot.
 constexpr double kSafetyPrior = 0.05;
 constexpr double kKickPrior = 0.01;
+constexpr double kJumpHitPrior = 0.01;
 const double kKickSpeeds[] = {1.2, 2.0, 3.2};
 const double kBlindSpeeds[] = {1.5, 3.0};
 constexpr int kBlindHeadings = 36;
@@ -57,6 +63,8 @@ struct Line {
   const BallState* object = nullptr;
   Vec2 send_to;
   int first = 0;  // the ball meant to be hit first
+  // A jump's: how far along the line the cue ball must be down again (the ball on's contact).
+  double land_by = 0.0;
 };
 
 double decel(const PhysicsParams& p) {
@@ -182,6 +190,47 @@ std::vector<Line> bankLines(const SearchContext& ctx, const std::vector<BallStat
   return lines;
 }
 
+// Pots of `on` whose cue-ball line another ball blocks: the ghost line, to be jumped.
+std::vector<Line> blockedPotLines(const SearchContext& ctx, const std::vector<BallState>& balls,
+                                  Vec2 cue, const BallState& on) {
+  const double sigma = ctx.prior_sigma;
+  std::vector<Line> lines;
+  for (const Pocket& pocket : ctx.table.pockets) {
+    const auto g = ghostLine(cue, on.pos, pocketAim(pocket, 0.0, ctx.radius), ctx.radius);
+    if (!g || !entersPocket(pocket, g->object_dir)) continue;
+    if (!pathClear(on.pos, g->target, ctx.radius, balls, kCueBall, on.id)) continue;
+    if (hitsFirst(ctx, balls, cue, g->heading, on.id)) continue;
+    Line line{ShotKind::Jump,
+              g->heading,
+              on.id,
+              pocket.id,
+              kJumpDiscount * potChance(*g, pocket, ctx.radius, sigma),
+              0.0,
+              &on,
+              g->target,
+              on.id};
+    line.land_by = g->to_ghost;
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// The ball on hit full and either side when no straight line reaches it: to be jumped.
+std::vector<Line> blockedHitLines(const SearchContext& ctx, const std::vector<BallState>& balls,
+                                  Vec2 cue, const BallState& on) {
+  std::vector<Line> lines;
+  const Vec2 side = perp(normalized(on.pos - cue)) * (kKickOffsetOfRadius * ctx.radius);
+  for (Vec2 offset : {Vec2{}, side, -side}) {
+    const Vec2 aim = on.pos + offset;
+    const double heading = headingTo(cue, aim);
+    if (hitsFirst(ctx, balls, cue, heading, on.id)) continue;
+    Line line{ShotKind::Jump, heading, on.id, std::nullopt, kJumpHitPrior, 0.0, nullptr, {}, on.id};
+    line.land_by = length(aim - cue) - 2.0 * ctx.radius;
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 std::vector<Line> safetyLines(const SearchContext& ctx, const std::vector<BallState>& balls,
                               Vec2 cue, const BallState& on, int n) {
   std::vector<Line> lines;
@@ -274,6 +323,36 @@ void expand(const SearchContext& ctx, Vec2 cue, const std::vector<Line>& lines,
       }
     }
   }
+}
+
+// Jump lines struck at each elevation's softest speed that clears the balls in the way and comes
+// down before the ball on.
+void expandJumps(const SearchContext& ctx, const std::vector<BallState>& balls, Vec2 cue,
+                 const std::vector<Line>& lines, std::optional<Vec2> placed,
+                 std::vector<Candidate>& out) {
+  for (const Line& line : lines) {
+    const auto blockers =
+        ballsInTheWay(balls, cue, line.heading, line.land_by, ctx.radius, line.first);
+    for (const JumpStroke& j :
+         jumpStrokes(ctx.in.physics, cue, line.heading, blockers, line.land_by)) {
+      Candidate c;
+      c.kind = line.kind;
+      c.shot.heading_rad = line.heading;
+      c.shot.speed = j.speed;
+      c.shot.elevation_rad = j.elevation_rad;
+      c.cue = placed;
+      c.target = line.target;
+      c.pocket = line.pocket;
+      c.first = line.first;
+      c.prior = line.prior;
+      out.push_back(c);
+    }
+  }
+}
+
+// Whether the level jumps and the rules let it (snooker calls a jump shot a foul).
+bool mayJump(const SearchContext& ctx) {
+  return ctx.level.jumps && !gameDef(ctx.in.rack.game()).jump_shot_foul;
 }
 
 // The level's tips that the physics takes as a hit rather than a miscue.
@@ -386,6 +465,12 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
           ons, kMaxBankLines, [&](const BallState& on) { return bankLines(ctx, balls, cue, on); });
       expand(ctx, cue, banks, level.pot_speeds, centre, placed, out);
     }
+    if (mayJump(ctx)) {
+      const auto jumps = linesFor(ons, kMaxJumpLines, [&](const BallState& on) {
+        return blockedPotLines(ctx, balls, cue, on);
+      });
+      expandJumps(ctx, balls, cue, jumps, placed, out);
+    }
     const int angles = safetyAnglesEach(level, safe_ons.size());
     const auto safeties = allLinesFor(
         safe_ons, [&](const BallState& on) { return safetyLines(ctx, balls, cue, on, angles); });
@@ -395,6 +480,11 @@ std::vector<Candidate> shotsFrom(const SearchContext& ctx, const std::vector<Bal
       const auto kicks = allLinesFor(
           safe_ons, [&](const BallState& on) { return kickLines(ctx, balls, cue, on); });
       expand(ctx, cue, kicks, kick_speeds, centre, placed, out);
+      if (mayJump(ctx)) {
+        const auto hits = allLinesFor(
+            safe_ons, [&](const BallState& on) { return blockedHitLines(ctx, balls, cue, on); });
+        expandJumps(ctx, balls, cue, hits, placed, out);
+      }
     }
   }
   if (out.empty()) {

@@ -144,6 +144,7 @@ void Evaluator::respotBalls(Outcome& o) const {
     for (BallState& b : o.balls) {
       if (b.id != spotted) continue;
       b.pocket.reset();
+      b.off_table = false;
       b.pos = place;
     }
   }

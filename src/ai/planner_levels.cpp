@@ -83,6 +83,8 @@ const char* shotKindName(ShotKind kind) {
       return "push-out";
     case ShotKind::Point:
       return "point";
+    case ShotKind::Jump:
+      return "jump";
   }
   return "?";
 }
@@ -244,6 +246,13 @@ void cue(LevelSettings& s, const StrokeNoise& k) {
   s.robust_speed = std::max(kFinestCheckedSpeed, 1.5 * k.speed);
 }
 
+// The strongest jump the cue ball over a ball in the way; the rest kick round it. A raised cue is
+// harder to hold steady than a level one: the elevation errs by `elevation_deg` on a jump.
+void jumpLike(LevelSettings& s, double elevation_deg) {
+  s.jumps = true;
+  s.jump_elevation_noise_deg = elevation_deg;
+}
+
 }  // namespace
 
 LevelSettings LevelSettings::of(Level level) {
@@ -278,11 +287,13 @@ LevelSettings LevelSettings::of(Level level) {
       searchLikeAnExpert(s);
       caromLikeAMaster(s.carom);
       cue(s, {0.13, 0.3, 0.2, 0.2, 0.025, 0.0006});
+      jumpLike(s, 1.0);
       break;
     case Level::Master:
       searchLikeAnExpert(s);
       caromLikeAMaster(s.carom);
       cue(s, {0.05, 0.15, 0.1, 0.1, 0.015, 0.0002});
+      jumpLike(s, 0.5);
       break;
   }
   return s;

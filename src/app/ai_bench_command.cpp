@@ -87,7 +87,10 @@ void playPositions(const AiBenchOptions& o, rules::Game game, ai::Level level, T
     ai::Planner planner = benchPlanner(o, level, seed);
     const ai::Plan plan = planner.plan(ai::planInputFrom(match));
     t.think.push_back(planner.lastThinkSeconds());
-    if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank) ++t.attempted;
+    if (plan.kind == ai::ShotKind::Pot || plan.kind == ai::ShotKind::Bank ||
+        (plan.kind == ai::ShotKind::Jump && plan.pocket)) {
+      ++t.attempted;
+    }
     Match as_planned(setup);
     const TurnRecord exact = as_planned.play(plan.turn);
     if (madeIt(game, exact, on)) ++t.potted_as_planned;

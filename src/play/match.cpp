@@ -9,6 +9,7 @@
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
 #include "nineball/snooker_rack.hpp"
+#include "play/jump_shot.hpp"
 #include "play/shot_summary.hpp"
 #include "play/snookered.hpp"
 #include "rules/snooker_balls.hpp"
@@ -271,10 +272,10 @@ void Match::beginShot(const TurnInput& turn) {
     throw IllegalAction("the cue ball is in hand " + cueAreaText(cueArea(), world_->table().def) +
                         ": the turn must place it (\"cue\")");
   }
-  if (gameDef(rack_.game()).snookers) {
-    // Snooker's miss and touching ball are judged on the balls as they lie before the stroke,
-    // and a miss may have them put back there.
-    before_shot_ = world_->balls();
+  // Snooker's miss, touching ball and jump shot are judged on the balls as they lie before the
+  // stroke, and a miss may have them put back there.
+  if (game.snookers || game.jump_shot_foul) before_shot_ = world_->balls();
+  if (game.snookers) {
     snookered_before_ = cueSnookered();
     for (const BallState& b : before_shot_) {
       if (b.id == kCueBall) {
@@ -306,6 +307,10 @@ TurnRecord Match::finishShot() {
   summary.call = call_;
   summary.snookered_before = snookered_before_;
   summary.touching_before = touching_before_;
+  if (gameDef(rack_.game()).jump_shot_foul) {
+    summary.jumped_over =
+        play::ballsJumpedOver(world_->events(), before_shot_, world_->physics().ball_radius, cue_);
+  }
   TurnRecord rec;
   rec.call = call_;
   rec.shooter = rack_.shooter();

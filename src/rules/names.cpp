@@ -53,6 +53,8 @@ const char* foulName(Foul f) {
       return "three-misses";
     case Foul::JumpedBall:
       return "jumped-ball";
+    case Foul::JumpShot:
+      return "jump-shot";
   }
   return "?";
 }

@@ -85,6 +85,8 @@ Foul foulOf(const ShotSummary& shot, const Aim& aim, std::optional<int> first,
   // WPBSA: forcing a ball off the table is a foul (the cue ball too: in hand in the D).
   if (!shot.off_table.empty()) return Foul::JumpedBall;
   if (shot.cue_pocketed) return Foul::Scratch;
+  // Section 3, "Fouls": a jump shot (the cue ball over an object ball before it hits one).
+  if (!shot.jumped_over.empty()) return Foul::JumpShot;
   if (!first) return Foul::NoContact;
   if (!aim.isOn(*first)) return Foul::WrongBallFirst;
   // 3.12: a free ball nominated must be hit first (a ball on potted after it still scores).

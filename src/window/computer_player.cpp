@@ -84,6 +84,8 @@ std::string planText(const ai::Plan& plan, int ball_on, const GameDef& game) {
       return "kick at " + on + " off the cushion";
     case ai::ShotKind::PushOut:
       return "push out";
+    case ai::ShotKind::Jump:
+      return plan.pocket ? "jump, pot " + target + pocket : "jump at " + on;
     case ai::ShotKind::Point: {
       const char* ball = caromBallName(plan.first);
       const std::string first =

@@ -109,6 +109,7 @@ bool PracticeTable::settle(const std::vector<BallState>& after) {
     b.w = {};
     if (b.pocket) {
       b.pocket.reset();
+      b.off_table = false;
       b.pos = cue_from;
       cue_back = true;
     }

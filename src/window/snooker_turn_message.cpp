@@ -48,6 +48,8 @@ std::string foulWords(rules::Foul foul) {
       return "a third miss";
     case rules::Foul::JumpedBall:
       return "a ball forced off the table";
+    case rules::Foul::JumpShot:
+      return "a jump shot";
     default:
       return rules::foulName(foul);
   }

@@ -45,6 +45,8 @@ std::string foulReason(rules::Foul foul, const rules::ShotSummary& summary, int 
                         ? std::string("the cue ball left the table")
                         : "the " + std::to_string(summary.off_table.front()) + " left the table")
                  : std::string("balls left the table");
+    case rules::Foul::JumpShot:
+      return "the cue ball jumped over a ball before hitting one";
     case rules::Foul::None:
       break;
   }

@@ -61,6 +61,7 @@ GameEntry snooker() {
   g.in_hand_area = CueArea::TheD;
   g.spot = snooker::respotPlace;
   g.snookers = true;
+  g.jump_shot_foul = true;
   // A snooker match is the best of an agreed odd number of frames, odd so that it cannot be tied
   // (professional ones from best of 9 to the world final's 35: sportsdefinitions.com/snooker/
   // frame, liquisearch.com/rules_of_snooker); up to 11 here, a single frame the quick game.

@@ -227,7 +227,7 @@ void Resolver::phaseEnd(double t, EngineBalls& balls, std::size_t i) {
   balls.nextPhase(i);
   if (!flying) return;
   const Arc& after = balls.arc(i);
-  ballEventOf(EventType::Land, t, balls, i, after.start.v);
+  ballEventOf(EventType::Land, t, balls, i, after.start.v, after.start.p);
   if (const auto hole = table_.pocketAt(after.start.p)) {
     pocket(t, balls, i, *hole);
     return;
@@ -237,14 +237,16 @@ void Resolver::phaseEnd(double t, EngineBalls& balls, std::size_t i) {
     offTable(t, balls, i);
     return;
   }
-  if (after.phase == Phase::Airborne) ballEventOf(EventType::Airborne, t, balls, i, after.start.v);
+  if (after.phase == Phase::Airborne) {
+    ballEventOf(EventType::Airborne, t, balls, i, after.start.v, after.start.p);
+  }
 }
 
 // The ball leaves the table over a rail (WPA "jumped ball"): it is taken off where it is.
 void Resolver::offTable(double t, EngineBalls& balls, std::size_t i) {
-  const Vec2 v = balls.now(i).v;
+  const Kinematics k = balls.now(i);
   balls.drop(i, std::nullopt);
-  ballEventOf(EventType::OffTable, t, balls, i, v);
+  ballEventOf(EventType::OffTable, t, balls, i, k.v, k.p);
 }
 
 // Two balls meeting with one at least in the air: in space, frictionless (collideInAir).
@@ -259,18 +261,19 @@ void Resolver::contactInAir(double t, EngineBalls& balls, std::size_t i, std::si
   for (const auto& [m, was] : {std::pair{i, flew[0]}, std::pair{j, flew[1]}}) {
     const Arc& now = balls.arc(m);
     if (!was && now.phase == Phase::Airborne) {
-      ballEventOf(EventType::Airborne, t, balls, m, now.start.v);
+      ballEventOf(EventType::Airborne, t, balls, m, now.start.v, now.start.p);
     }
   }
 }
 
 void Resolver::ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i,
-                           Vec2 v) {
+                           Vec2 v, Vec2 at) {
   Event e;
   e.type = type;
   e.t = t;
   e.a = balls.id(i);
   e.va = v;
+  e.at = at;
   events_.push_back(e);
   logger("physics")->trace("t={:.6f} ball {} {}", t, e.a, eventTypeName(type));
 }
@@ -281,6 +284,7 @@ void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, V
   e.t = t;
   e.a = balls.id(i);
   e.va = v;
+  e.at = balls.now(i).p;
   events_.push_back(e);
   logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
 }

@@ -84,7 +84,8 @@ class Resolver {
   void phaseEnd(double t, EngineBalls& balls, std::size_t i);
   void contactInAir(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void offTable(double t, EngineBalls& balls, std::size_t i);
-  void ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i, Vec2 v);
+  void ballEventOf(EventType type, double t, const EngineBalls& balls, std::size_t i, Vec2 v,
+                   Vec2 at);
   void settleJam(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void cushionContact(double t, EngineBalls& balls, std::size_t i, Vec2 predicted);
   void settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kinematics k, Vec2 normal,

@@ -53,6 +53,7 @@ std::optional<Kinematics> strokeBall(int id, double t, Vec2 at, const Shot& shot
   if (k.vz > 0.0) {
     e.type = EventType::Airborne;
     e.va = k.v;
+    e.at = at;
     events.push_back(e);
   }
   return k;
