@@ -34,6 +34,9 @@ struct AimGuide {
   Vec2 cue_end;
   Vec2 cushion_normal;             ///< unit, pointing into the table (Cushion)
   std::optional<PocketId> pocket;  ///< the pocket the cue ball drops into (Pocket)
+  /// Where a jumping cue ball comes down before it meets `end`'s target, in order (empty: it
+  /// stays on the cloth). Set by jumpAimGuide (play/jump_flight.hpp).
+  std::vector<Vec2> landings;
 };
 
 /// Traces the cue ball from `cue` along `heading_rad`: against every other ball still on the

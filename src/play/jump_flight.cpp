@@ -30,6 +30,21 @@ bool flightClears(const Flight& f, const BallState& ball, double radius, double 
   return true;
 }
 
+// A ball the flights clear that a ball rolling along their line would meet.
+bool passesOver(const std::vector<Flight>& flights, const BallState& ball, double radius) {
+  for (const Flight& f : flights) {
+    const double span = length(f.to - f.from);
+    if (span <= 0.0) continue;
+    const Vec2 dir = (f.to - f.from) / span;
+    const Vec2 rel = ball.pos - f.from;
+    const double along = dot(rel, dir);
+    if (along > 0.0 && along < span + 2.0 * radius && std::abs(cross(dir, rel)) < 2.0 * radius) {
+      return flightsClear(flights, ball, radius);
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 double Flight::heightAt(double along) const {
@@ -55,6 +70,24 @@ std::vector<Flight> cueBallFlights(const PhysicsParams& p, Vec2 cue, const Shot&
     k = physics::bounceOffSlate(k, p);
   }
   return out;
+}
+
+AimGuide jumpAimGuide(const TableGeometry& table, const PhysicsParams& p,
+                      const std::vector<BallState>& balls, Vec2 cue, const Shot& shot, int cue_id) {
+  const std::vector<Flight> flights = cueBallFlights(p, cue, shot);
+  if (flights.empty()) {
+    return computeAimGuide(table, p.ball_radius, balls, cue, shot.heading_rad, cue_id);
+  }
+  std::vector<BallState> in_the_way;
+  for (const BallState& b : balls) {
+    if (b.id == cue_id || !passesOver(flights, b, p.ball_radius)) in_the_way.push_back(b);
+  }
+  AimGuide guide = computeAimGuide(table, p.ball_radius, in_the_way, cue, shot.heading_rad, cue_id);
+  const double reach = length(guide.end - cue);
+  for (const Flight& f : flights) {
+    if (length(f.to - cue) < reach) guide.landings.push_back(f.to);
+  }
+  return guide;
 }
 
 bool flightsClear(const std::vector<Flight>& flights, const BallState& ball, double radius,

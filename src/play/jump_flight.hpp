@@ -5,6 +5,7 @@
 #include "nineball/ball.hpp"
 #include "nineball/params.hpp"
 #include "nineball/shot.hpp"
+#include "play/aim_guide.hpp"
 
 // Where a jumping cue ball flies, alone on the table, from the closed forms of docs/physics.md
 // ("Balls in the air"): what the aim guide shows and what the computer plans a jump with.
@@ -15,7 +16,7 @@ namespace nineball::play {
 struct Flight {
   Vec2 from;
   Vec2 to;
-  double vz = 0.0;       ///< m/s up as it leaves the cloth
+  double vz = 0.0;  ///< m/s up as it leaves the cloth
   double gravity = 9.81;
   double speed = 0.0;  ///< m/s on the table's plane
 
@@ -35,5 +36,12 @@ std::vector<Flight> cueBallFlights(const PhysicsParams& p, Vec2 cue, const Shot&
 /// space (it passes over it, or lands short of it, or beside it).
 bool flightsClear(const std::vector<Flight>& flights, const BallState& ball, double radius,
                   double margin = 0.0);
+
+/// The aim guide of `shot` from `cue` (computeAimGuide) when it may jump: the balls its flights
+/// pass over are left out of the trace, and `landings` holds where it comes down before the first
+/// thing it meets. A shot that stays on the cloth has computeAimGuide's guide.
+AimGuide jumpAimGuide(const TableGeometry& table, const PhysicsParams& p,
+                      const std::vector<BallState>& balls, Vec2 cue, const Shot& shot,
+                      int cue_id = kCueBall);
 
 }  // namespace nineball::play

@@ -22,28 +22,41 @@ constexpr Section kSections[] = {
 
 constexpr double kGuideLength = 0.45;  // m of the object ball's line on a full hit
 
+// A ball's shadow falls (0.006, 0.009) m from it, down and right, with its centre at height R:
+// a thing at height h casts its shadow h / R times as far.
+Vec2 shadowOffset(const ViewTransform& view, double height, double r) {
+  const double k = height / r;
+  return {view.px(0.006 * k), view.px(0.009 * k)};
+}
+
 }  // namespace
 
 void CuePainter::drawStick(sf::RenderTarget& target, const ViewTransform& view, Vec2 cue,
-                           double heading_rad, double r, double pull) {
+                           double heading_rad, double r, double pull, double elevation) {
   batch_.clear();
   const Vec2 dir = fromAngle(heading_rad);
   const Vec2 n = perp(dir);
-  const Vec2 tip = CueStickShape::tip(cue, dir, r, pull);
+  const Vec2 tip = CueStickShape::tip(cue, dir, r, pull, elevation);
+  const double seen = std::cos(elevation);  // the stick's length as seen from above, per metre
   auto half = [](double s) {
     return (CueStickShape::kTipWidth +
             (CueStickShape::kButtWidth - CueStickShape::kTipWidth) * s / CueStickShape::kLength) /
            2.0;
   };
   auto corner = [&](double s, double side) {
-    return view.toPixels(tip - dir * s + n * (side * half(s)));
+    return view.toPixels(tip - dir * (s * seen) + n * (side * half(s)));
   };
-  // Shadow first, offset down and right as the balls' are.
-  const Vec2 shadow{view.px(0.006), view.px(0.009)};
-  const auto outline = CueStickShape::outline(cue, dir, r, pull);
-  batch_.quad(view.toPixels(outline[0]) + shadow, view.toPixels(outline[1]) + shadow,
-              view.toPixels(outline[2]) + shadow, view.toPixels(outline[3]) + shadow,
-              sf::Color(0, 0, 0, 70));
+  // Shadow first, offset down and right as the balls' are, by the height of each end: the tip
+  // meets the ball at its centre's height, the butt is higher by the stick's length times
+  // sin(elevation).
+  const auto outline = CueStickShape::outline(cue, dir, r, pull, elevation);
+  const double tip_height = r + (r + CueStickShape::kRestGap + pull) * std::sin(elevation);
+  const double butt_height = tip_height + CueStickShape::kLength * std::sin(elevation);
+  const Vec2 tip_shadow = shadowOffset(view, tip_height, r);
+  const Vec2 butt_shadow = shadowOffset(view, butt_height, r);
+  batch_.quad(view.toPixels(outline[0]) + tip_shadow, view.toPixels(outline[1]) + tip_shadow,
+              view.toPixels(outline[2]) + butt_shadow, view.toPixels(outline[3]) + butt_shadow,
+              sf::Color(0, 0, 0, elevation > 0.0 ? 45 : 70));
   double from = 0.0;
   for (const Section& s : kSections) {
     batch_.quad(corner(from, 1.0), corner(from, -1.0), corner(s.to, -1.0), corner(s.to, 1.0),
@@ -51,9 +64,23 @@ void CuePainter::drawStick(sf::RenderTarget& target, const ViewTransform& view, 
     from = s.to;
   }
   // A light streak along the shaft makes it round.
-  batch_.line(view.toPixels(tip - dir * 0.04 + n * (half(0.04) * 0.4)),
-              view.toPixels(tip - dir * 0.75 + n * (half(0.75) * 0.4)),
+  batch_.line(view.toPixels(tip - dir * (0.04 * seen) + n * (half(0.04) * 0.4)),
+              view.toPixels(tip - dir * (0.75 * seen) + n * (half(0.75) * 0.4)),
               std::max(1.0, view.px(0.003)), sf::Color(255, 250, 235, 90));
+  batch_.draw(target);
+}
+
+void CuePainter::drawLandings(sf::RenderTarget& target, const ViewTransform& view,
+                              const AimGuide& guide, double r) {
+  batch_.clear();
+  const double w = std::max(1.5, view.px(0.004));
+  std::uint8_t alpha = 220;
+  for (Vec2 at : guide.landings) {
+    const Vec2 c = view.toPixels(at);
+    batch_.softRing(c, view.px(0.7 * r) - w, view.px(0.7 * r), sf::Color(150, 220, 255, alpha));
+    batch_.softRing(c, 0.0, std::max(1.5, view.px(0.12 * r)), sf::Color(150, 220, 255, alpha));
+    alpha = static_cast<std::uint8_t>(alpha * 0.6);
+  }
   batch_.draw(target);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 #include "nineball/vec2.hpp"
 
@@ -16,17 +17,19 @@ struct CueStickShape {
   /// How far a full drag pulls the stick back, m.
   static constexpr double kMaxPull = 0.3;
 
-  /// Where the tip sits for a cue ball at `cue` (radius r) aimed along the unit `dir`, pulled
-  /// back by `pull` metres.
-  static Vec2 tip(Vec2 cue, Vec2 dir, double r, double pull) {
-    return cue - dir * (r + kRestGap + pull);
+  /// Where the tip sits, seen from above, for a cue ball at `cue` (radius r) aimed along the
+  /// unit `dir`, pulled back by `pull` metres along a cue raised `elevation` rad: a raised cue
+  /// is foreshortened by cos(elevation).
+  static Vec2 tip(Vec2 cue, Vec2 dir, double r, double pull, double elevation = 0.0) {
+    return cue - dir * ((r + kRestGap + pull) * std::cos(elevation));
   }
 
-  /// The outline in metres: tip left, tip right, butt right, butt left. No SFML: the pixel
-  /// test uses it to skip what the stick covers.
-  static std::array<Vec2, 4> outline(Vec2 cue, Vec2 dir, double r, double pull) {
-    const Vec2 t = tip(cue, dir, r, pull);
-    const Vec2 b = t - dir * kLength;
+  /// The outline in metres, seen from above: tip left, tip right, butt right, butt left. No
+  /// SFML: the pixel test uses it to skip what the stick covers.
+  static std::array<Vec2, 4> outline(Vec2 cue, Vec2 dir, double r, double pull,
+                                     double elevation = 0.0) {
+    const Vec2 t = tip(cue, dir, r, pull, elevation);
+    const Vec2 b = t - dir * (kLength * std::cos(elevation));
     const Vec2 n = perp(dir);
     return {t + n * (kTipWidth / 2.0), t - n * (kTipWidth / 2.0), b - n * (kButtWidth / 2.0),
             b + n * (kButtWidth / 2.0)};

@@ -97,6 +97,7 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
   if (frame.bank) {
     cue_painter_.drawGuide(target, seen, *frame.bank, frame.ball_radius, frame.guide_scale, true);
   }
+  if (frame.guide) cue_painter_.drawLandings(target, seen, *frame.guide, frame.ball_radius);
   ball_painter_.setLooks(frame.looks);
   hud_painter_.setLooks(frame.looks);
   ball_painter_.draw(target, seen, frame.balls, frame.ball_radius, frame.time, table_);
@@ -140,7 +141,8 @@ void ScenePainter::draw(sf::RenderTarget& target, const Frame& frame) {
       // Side spin moves the stick off the centre line, as the tip is.
       const Vec2 right = -perp(fromAngle(frame.cue->heading_rad));
       cue_painter_.drawStick(target, seen, *cue + right * (frame.cue->side * frame.ball_radius),
-                             frame.cue->heading_rad, frame.ball_radius, frame.cue->pull);
+                             frame.cue->heading_rad, frame.ball_radius, frame.cue->pull,
+                             frame.cue->elevation_rad);
     }
   }
   if ((frame.cue || seen.zoom() > 1.0) && have_picture_) coverBands(target);

@@ -25,6 +25,7 @@ struct CuePose {
   double heading_rad = 0.0;
   double pull = 0.0;  ///< m pulled back from the ball
   double side = 0.0;  ///< the tip's side offset, fraction of R (right of the aim is positive)
+  double elevation_rad = 0.0;  ///< the cue's tilt above the table
   /// Where the cue ball stood (the stroke's follow-through); the cue ball's place if empty.
   std::optional<Vec2> at;
 };

@@ -30,11 +30,12 @@ std::string guideFoul(const GameSession& session, const AimGuide& guide) {
 constexpr double kStroke = 0.08;         // s of the physics' clock
 constexpr double kFollowThrough = 0.06;  // m past the ball's place
 
-render::CuePose cuePose(double heading_rad, double pull, double side) {
+render::CuePose cuePose(double heading_rad, double pull, const GameSession& session) {
   render::CuePose pose;
   pose.heading_rad = heading_rad;
   pose.pull = pull;
-  pose.side = side;
+  pose.side = session.tip().x;
+  pose.elevation_rad = session.elevation();
   return pose;
 }
 
@@ -45,7 +46,7 @@ double addressPull(double power) {
 render::CuePose stroke(const GameSession::Strike& s, const GameSession& session) {
   const double p = std::clamp(s.since / kStroke, 0.0, 1.0);
   const double e = 1.0 - (1.0 - p) * (1.0 - p);  // fast through the ball, slowing after
-  render::CuePose pose = cuePose(s.heading_rad, -kFollowThrough * e, session.tip().x);
+  render::CuePose pose = cuePose(s.heading_rad, -kFollowThrough * e, session);
   pose.at = s.from;
   return pose;
 }
@@ -141,7 +142,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui, const Se
   if (computer_turn) {
     if (aiming && seats.showsCue(session)) {
       f.guide = session.aimGuide();
-      f.cue = cuePose(session.heading(), seats.pull(session), session.tip().x);
+      f.cue = cuePose(session.heading(), seats.pull(session), session);
     }
     if (const auto carried = seats.carriedCue()) {
       for (BallState& b : f.balls) {
@@ -152,8 +153,7 @@ render::Frame buildFrame(const GameSession& session, const UiState& ui, const Se
     f.guide = session.aimGuide();
     f.guide_foul = guideFoul(session, *f.guide);
     // Drawn back as far as the power set asks (a drag sets both at once).
-    f.cue = cuePose(session.heading(), std::max(ui.pull, addressPull(session.power())),
-                    session.tip().x);
+    f.cue = cuePose(session.heading(), std::max(ui.pull, addressPull(session.power())), session);
   }
   if (const auto s = session.strike(); s && s->since < kStroke) f.cue = stroke(*s, session);
   // Carom: the stick addresses the shooter's own ball, which need not be ball 0.

@@ -10,6 +10,7 @@
 #include "common/log.hpp"
 #include "nineball/games.hpp"
 #include "nineball/table_markings.hpp"
+#include "play/jump_flight.hpp"
 #include "play/shot_summary.hpp"
 #include "rules/three_cushion.hpp"
 #include "window/shot_call.hpp"
@@ -143,8 +144,15 @@ bool GameSession::placeCue(Vec2 pos) {
 
 AimGuide GameSession::aimGuide() const {
   const Engine& w = match_->world();
-  return computeAimGuide(w.table(), w.physics().ball_radius, playback_.balls(), cuePosition(),
-                         cue_.heading(), shooterBall());
+  Shot shot;
+  shot.heading_rad = cue_.heading();
+  shot.speed = cue_.speed();
+  shot.tip = cue_.tip();
+  shot.elevation_rad = cue_.elevation();
+  // A raised cue may jump the ball: the guide then passes over what it clears and marks where
+  // it comes down.
+  return play::jumpAimGuide(w.table(), w.physics(), playback_.balls(), cuePosition(), shot,
+                            shooterBall());
 }
 
 void GameSession::startRack() {

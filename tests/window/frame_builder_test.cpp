@@ -54,6 +54,38 @@ TEST(FrameBuilder, TheGuideWarnsWhenItsFirstBallWouldBeAFoul) {
   EXPECT_EQ(fine.guide_foul, "");
 }
 
+TEST(FrameBuilder, ARaisedCueShowsItsTiltAndWhereTheJumpLands) {
+  // The 1 straight ahead beyond the 3: a jump at 45 degrees and 3.5 m/s clears the 3.
+  MatchSetup setup;
+  setup.balls = {BallState::at(0, {-0.6, 0.0}), BallState::at(3, {-0.3, 0.0}),
+                 BallState::at(1, {0.5, 0.0})};
+  GameSession s(setup);
+  UiState ui;
+  s.setHeading(0.0);
+  const render::Frame level = buildFrame(s, ui, Seats(1));
+  ASSERT_TRUE(level.guide && level.cue);
+  EXPECT_EQ(level.guide->ball, 3) << "on the cloth the 3 is in the way";
+  EXPECT_TRUE(level.guide->landings.empty());
+  EXPECT_EQ(level.cue->elevation_rad, 0.0);
+
+  s.setElevation(degToRad(45.0));
+  s.setSpeed(3.5);
+  const render::Frame raised = buildFrame(s, ui, Seats(1));
+  ASSERT_TRUE(raised.guide && raised.cue);
+  EXPECT_DOUBLE_EQ(raised.cue->elevation_rad, degToRad(45.0));
+  EXPECT_EQ(raised.guide->ball, 1) << "the jump passes over the 3 to the 1";
+  ASSERT_FALSE(raised.guide->landings.empty());
+  // The first landing beyond the 3 and short of the ghost ball, on the line of aim; each later
+  // one further on.
+  const Vec2 first = raised.guide->landings.front();
+  EXPECT_GT(first.x, -0.3 + 2.0 * setup.physics.ball_radius);
+  EXPECT_LT(first.x, raised.guide->end.x);
+  EXPECT_NEAR(first.y, 0.0, 1e-12);
+  for (std::size_t i = 1; i < raised.guide->landings.size(); ++i) {
+    EXPECT_GT(raised.guide->landings[i].x, raised.guide->landings[i - 1].x);
+  }
+}
+
 TEST(FrameBuilder, DialogsKeepClearOfEveryBallOnTheTable) {
   GameSession s{MatchSetup{}};
   std::size_t on_table = 0;
