@@ -118,7 +118,7 @@ bool Resolver::frozenContact(double t, EngineBalls& balls, std::size_t i, std::s
   const Kinematics si = held == i ? hit.b : hit.a, sj = held == i ? hit.a : hit.b;
   placeApart(balls, i, j, si, sj);
   ballEvent(t, balls, i, j, si.v, sj.v);
-  if (hit.cushion_impulse > 0.0) cushionEvent(t, balls, held, hit.b.v);
+  if (hit.cushion_impulse > 0.0) cushionEvent(t, balls, held, hit.b.v, hit.b.p);
   return true;
 }
 
@@ -135,7 +135,7 @@ bool Resolver::cornerContact(double t, EngineBalls& balls, std::size_t i, const 
   setOutOfCushion(out, *second, table_, p_.ball_radius);
   balls.restart(i, out);
   for (double impulse : hit.impulse) {
-    if (impulse > 0.0) cushionEvent(t, balls, i, out.v);
+    if (impulse > 0.0) cushionEvent(t, balls, i, out.v, out.p);
   }
   return true;
 }
@@ -217,7 +217,7 @@ void Resolver::settleOnCushion(double t, EngineBalls& balls, std::size_t i, Kine
   k = stopPressing(k, -normal, p_);
   setOutOfCushion(k, predicted, table_, p_.ball_radius);
   balls.restart(i, k);
-  cushionEvent(t, balls, i, k.v);
+  cushionEvent(t, balls, i, k.v, k.p);
 }
 
 // A ball in the air meets the slate (Land, and Airborne again when it bounces up); one that
@@ -278,13 +278,13 @@ void Resolver::ballEventOf(EventType type, double t, const EngineBalls& balls, s
   logger("physics")->trace("t={:.6f} ball {} {}", t, e.a, eventTypeName(type));
 }
 
-void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v) {
+void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v, Vec2 at) {
   Event e;
   e.type = EventType::Cushion;
   e.t = t;
   e.a = balls.id(i);
   e.va = v;
-  e.at = balls.now(i).p;
+  e.at = at;
   events_.push_back(e);
   logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
 }
@@ -318,7 +318,7 @@ bool Resolver::thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId 
     if (m == i || !balls.onTable(m)) continue;
     if (length(balls.centre(m) - fall.out.p) < 2.0 * p_.ball_radius) return false;
   }
-  for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v);
+  for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v, fall.out.p);
   balls.restart(i, fall.out);
   logger("physics")->debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)",
                            t, balls.id(i), pocketName(pocket), fall.wall_contacts.size(),

@@ -80,7 +80,7 @@ class Resolver {
   bool frozenContact(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   bool cornerContact(double t, EngineBalls& balls, std::size_t i, const Kinematics& k,
                      Vec2 predicted);
-  void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v);
+  void cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v, Vec2 at);
   void phaseEnd(double t, EngineBalls& balls, std::size_t i);
   void contactInAir(double t, EngineBalls& balls, std::size_t i, std::size_t j);
   void offTable(double t, EngineBalls& balls, std::size_t i);

@@ -18,7 +18,7 @@
 namespace nineball::physics {
 namespace {
 
-constexpr double kToleranceDeg = 1.0;
+constexpr double kMathavanToleranceDeg = 1.0;
 
 struct Rebound {
   double after_deg;    // right after the impact
@@ -57,8 +57,8 @@ TEST(Mathavan, RollingBallMatchesThePublishedFigures) {
           "[ measured ] rail, rolling in at %2.0f deg, %.0f m/s: %.2f right after (published "
           "%.2f), %.2f once rolling (%.1f)\n",
           incidence, speed, b.after_deg, after, b.rolling_deg, rolling);
-      EXPECT_NEAR(b.after_deg, after, kToleranceDeg) << incidence << " " << speed;
-      EXPECT_NEAR(b.rolling_deg, rolling, kToleranceDeg) << incidence << " " << speed;
+      EXPECT_NEAR(b.after_deg, after, kMathavanToleranceDeg) << incidence << " " << speed;
+      EXPECT_NEAR(b.rolling_deg, rolling, kMathavanToleranceDeg) << incidence << " " << speed;
     }
   }
   const Rebound head_on = rebound(0.0, 1.0, 1.0, 0.0, p);
@@ -104,7 +104,7 @@ TEST(Mathavan, AWholeWorldReboundsAsThePublishedFigures) {
       std::printf(
           "[ measured ] world, rolling in at %2.0f deg, %.0f m/s: %.2f once rolling (%.1f)\n",
           incidence, speed, got, rolling);
-      EXPECT_NEAR(got, rolling, kToleranceDeg) << incidence << " " << speed;
+      EXPECT_NEAR(got, rolling, kMathavanToleranceDeg) << incidence << " " << speed;
     }
   }
 }
