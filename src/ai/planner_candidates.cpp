@@ -302,24 +302,31 @@ double aimedHeading(const SearchContext& ctx, const Line& line, Vec2 cue, const 
   return headingAllowingForThrow(ctx.in.physics, s, line.heading, std::atan2(want.y, want.x));
 }
 
+// The line's candidate struck with `shot` (placing the cue ball at `placed` first, when set).
+Candidate candidateOf(const Line& line, const Shot& shot, std::optional<Vec2> placed) {
+  Candidate c;
+  c.kind = line.kind;
+  c.shot = shot;
+  c.cue = placed;
+  c.target = line.target;
+  c.pocket = line.pocket;
+  c.first = line.first;
+  c.prior = line.prior;
+  return c;
+}
+
 void expand(const SearchContext& ctx, Vec2 cue, const std::vector<Line>& lines,
             const std::vector<double>& speeds, const std::vector<Vec2>& tips,
             std::optional<Vec2> placed, std::vector<Candidate>& out) {
   for (const Line& line : lines) {
     for (double speed : speedsFor(speeds, line.min_speed)) {
       for (Vec2 tip : tips) {
-        Candidate c;
-        c.kind = line.kind;
-        c.shot.heading_rad = line.heading;
-        c.shot.speed = speed;
-        c.shot.tip = tip;
-        c.shot.heading_rad = aimedHeading(ctx, line, cue, c.shot);
-        c.cue = placed;
-        c.target = line.target;
-        c.pocket = line.pocket;
-        c.first = line.first;
-        c.prior = line.prior;
-        out.push_back(c);
+        Shot shot;
+        shot.heading_rad = line.heading;
+        shot.speed = speed;
+        shot.tip = tip;
+        shot.heading_rad = aimedHeading(ctx, line, cue, shot);
+        out.push_back(candidateOf(line, shot, placed));
       }
     }
   }
@@ -335,17 +342,11 @@ void expandJumps(const SearchContext& ctx, const std::vector<BallState>& balls, 
         ballsInTheWay(balls, cue, line.heading, line.land_by, ctx.radius, line.first);
     for (const JumpStroke& j :
          jumpStrokes(ctx.in.physics, cue, line.heading, blockers, line.land_by)) {
-      Candidate c;
-      c.kind = line.kind;
-      c.shot.heading_rad = line.heading;
-      c.shot.speed = j.speed;
-      c.shot.elevation_rad = j.elevation_rad;
-      c.cue = placed;
-      c.target = line.target;
-      c.pocket = line.pocket;
-      c.first = line.first;
-      c.prior = line.prior;
-      out.push_back(c);
+      Shot shot;
+      shot.heading_rad = line.heading;
+      shot.speed = j.speed;
+      shot.elevation_rad = j.elevation_rad;
+      out.push_back(candidateOf(line, shot, placed));
     }
   }
 }
