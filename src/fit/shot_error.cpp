@@ -12,7 +12,7 @@ namespace {
 // The early objective's window after the strike (s) and the cue ball's weight in it.
 constexpr double kEarlyHorizon = 4.0;
 constexpr double kEarlyCueWeight = 1.5;
-constexpr double kMaxElevation = 35.0 * kPi / 180.0;
+constexpr double kMaxElevation = 60.0 * kPi / 180.0;  // the steepest jump a cue plays
 // Inside the miscue limit by this share, so that a tip on the search's edge still strikes.
 constexpr double kTipMargin = 0.95;
 // A simulation at least this long (s), so that a window that ends at the strike still runs.

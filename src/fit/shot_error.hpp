@@ -36,7 +36,7 @@ struct Window {
 Window wholeShot(FitObjective objective);
 
 /// The variables made legal: a speed the scene takes, a tip inside the miscue limit, an
-/// elevation from 0 to 35 degrees, a strike before the cue ball moves, balls within a
+/// elevation from 0 to 60 degrees, a strike before the cue ball moves, balls within a
 /// centimetre of where the samples put them, apart and on the table.
 Variables legal(const RecordedShot& s, const PhysicsParams& p, Variables x);
 

@@ -7,6 +7,7 @@
 #include "common/log.hpp"
 #include "fit/nelder_mead.hpp"
 #include "nineball/random.hpp"
+#include "physics/model/slate.hpp"
 
 namespace nineball::fit {
 namespace {
@@ -41,6 +42,15 @@ constexpr double kCueShare = 0.05;
 constexpr double kTipShare = 0.025;    // each of the nine starting tips
 constexpr double kWindowShare = 0.11;  // each longer window, shared by the shots it keeps
 constexpr double kLevelShare = 0.6;    // of what is left: the places, the cue level
+// A jump is far from any level fit (the cue ball flies, lands and hops): where balls may leave
+// the cloth, searches from these raised cues, each with the level fit's speed on the table, take
+// kJumpShare of what the elevation's restarts would have.
+constexpr double kJumpStartsDeg[] = {25.0, 40.0, 55.0};
+constexpr double kJumpShare = 0.4;
+constexpr double kJumpStartShare = 0.08;  // of that, each start's first fit
+// The flight and the landing after it: the window a jump's stroke is first fitted over (s past
+// the cue ball's first recorded event).
+constexpr double kJumpWindow = 0.5;
 // Searches whose errors lie within this factor of the best go on to the next window.
 constexpr double kClose = 1.2;
 
@@ -224,6 +234,28 @@ Found bestTip(const RecordedShot& s, Search& search, const Variables& cue, int e
   return starts.front();
 }
 
+// A jump struck at `elevation` from the recording's own first guess (its heading, and its first
+// speed on the table, which a ball in the air keeps: the cue's speed is that over
+// cos(elevation)), the tip at the centre (below it a raised tip scoops the ball): heading,
+// speed, elevation and strike fitted to the cue ball over its flight and landing, and judged
+// over the whole shot. `places`: the balls' places at the strike.
+Found jumpStart(const RecordedShot& s, const PhysicsParams& p, Search& search,
+                const Variables& places, double elevation, const Window& whole, int budget) {
+  Variables x = places;
+  x[kHeading] = s.heading;
+  x[kSpeed] = s.speed / std::cos(elevation);
+  x[kSide] = 0.0;
+  x[kHeight] = 0.0;
+  x[kElevation] = elevation;
+  x[kStrike] = std::clamp(s.cue_onset - s.cue_first_move / s.speed, s.earliest, s.latest);
+  Window flight = after(s, kJumpWindow);
+  flight.cue_only = true;
+  Found f = search.over({kHeading, kSpeed, kElevation, kStrike}, legal(s, p, x), kCoarseStep,
+                        flight, budget);
+  f.error = search.error(f.x, whole);
+  return f;
+}
+
 // The balls' places join the shot, and restarts about the best, each from a point a fine step
 // or so away, spend the rest of the budget: most with a level cue, then with the elevation,
 // kept only where it lowers the error by more than kElevationGain.
@@ -249,7 +281,22 @@ Found placesAndRestarts(const RecordedShot& s, const PhysicsParams& p, Search& s
     return from;
   };
   best = restarts(best, false, static_cast<int>(kLevelShare * search.left()));
-  const Found raised = restarts(best, true, search.left());
+  const bool jumps = physics::airborneAllowed(p);
+  Found raised =
+      restarts(best, true, static_cast<int>((jumps ? 1.0 - kJumpShare : 1.0) * search.left()));
+  if (jumps) {
+    // The jump starts judged over the whole shot; the best of them searched on.
+    const int each = static_cast<int>(kJumpStartShare * search.left());
+    Found jump;
+    jump.error = std::numeric_limits<double>::infinity();
+    for (double degrees : kJumpStartsDeg) {
+      const Found f = jumpStart(s, p, search, best.x, degrees * kDegree, whole, each);
+      if (f.error < jump.error) jump = f;
+    }
+    jump = search.over(everything(jump.x, true), jump.x, steps, whole, search.left() / 2);
+    jump = restarts(jump, true, search.left());
+    if (jump.error < raised.error) raised = jump;
+  }
   return raised.error < (1.0 - kElevationGain) * best.error ? raised : best;
 }
 
