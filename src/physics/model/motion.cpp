@@ -230,7 +230,6 @@ Box boxOf(const Path& path, double span) {
 Path pathFrom(const Arc& arc, double t, const PhysicsParams& p) {
   const Kinematics k = stateAt(arc, t, p);
   if (!arc.translating()) return {k.p, {}, {}};
-  if (arc.phase == Phase::Airborne) return {k.p, k.v, {}};
   return {k.p, k.v, p.cloth == ClothModel::Damping ? Vec2{} : arc.accel};
 }
 

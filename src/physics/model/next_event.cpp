@@ -63,9 +63,12 @@ Height heightFrom(const Arc& arc, double from, const PhysicsParams& p) {
 
 }  // namespace
 
-std::optional<NextEvent> EventSearch::contactInAir(std::size_t i, const Arc& a, const Path& pa,
-                                                   std::size_t j, const Arc& b, const Path& pb,
-                                                   double from, double span) const {
+std::optional<NextEvent> EventSearch::contactInAir(std::size_t i, const Arc& a, std::size_t j,
+                                                   const Arc& b) const {
+  const double from = std::max(a.t0, b.t0);
+  const double span = std::min(a.end(), b.end()) - from;
+  if (!(span >= 0.0)) return std::nullopt;  // an arc has ended: its own event comes first
+  const Path pa = pathFrom(a, from, physics), pb = pathFrom(b, from, physics);
   const Height ha = heightFrom(a, from, physics), hb = heightFrom(b, from, physics);
   const auto s = ballContactInAir(pa, ha, pb, hb, 2.0 * physics.ball_radius, span);
   if (!s) return std::nullopt;
@@ -86,15 +89,13 @@ std::optional<NextEvent> EventSearch::contactInAir(std::size_t i, const Arc& a, 
 std::optional<NextEvent> EventSearch::pairContact(std::size_t i, const Arc& a, std::size_t j,
                                                   const Arc& b) const {
   if (!a.translating() && !b.translating()) return std::nullopt;
+  if (a.phase == Phase::Airborne || b.phase == Phase::Airborne) return contactInAir(i, a, j, b);
   // Both paths from the later start: the answer depends on the two arcs alone.
   const double from = std::max(a.t0, b.t0);
   const double span = std::min(a.end(), b.end()) - from;
   if (!(span >= 0.0)) return std::nullopt;  // an arc has ended: its own event comes first
   const Clock clock = Clock::of(physics);
   const Path pa = pathFrom(a, from, physics), pb = pathFrom(b, from, physics);
-  if (a.phase == Phase::Airborne || b.phase == Phase::Airborne) {
-    return contactInAir(i, a, pa, j, b, pb, from, span);
-  }
   const auto s = ballContact(pa, pb, 2.0 * physics.ball_radius, clock.fromTime(span));
   if (!s) return std::nullopt;
   const Vec2 n = normalized(pb.at(*s) - pa.at(*s));

@@ -59,10 +59,12 @@ struct EventSearch {
                                        const Arc& b) const;
 
  private:
-  // pairContact when a ball of the pair is in the air: the contact in space.
-  std::optional<NextEvent> contactInAir(std::size_t i, const Arc& a, const Path& pa, std::size_t j,
-                                        const Arc& b, const Path& pb, double from,
-                                        double span) const;
+  // pairContact when a ball of the pair is in the air: the contact in space. Kept out of line
+  // and cold: inlined, it made pairContact too big to inline into the pair search of every
+  // shot on the cloth, which cost a flat break 0.9 % more instructions.
+  [[gnu::noinline, gnu::cold]] std::optional<NextEvent> contactInAir(std::size_t i, const Arc& a,
+                                                                     std::size_t j,
+                                                                     const Arc& b) const;
 };
 
 }  // namespace nineball::physics
