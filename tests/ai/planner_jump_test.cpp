@@ -25,18 +25,12 @@ using nineball::rules::contains;
 
 namespace {
 
-BallState placed(int id, Vec2 p) {
-  BallState b;
-  b.id = id;
-  b.pos = p;
-  return b;
-}
-
 // The 1 on its line to the top-right corner, the cue ball behind it and the 2 on the line
 // between them: the straight pot only by jumping the 2. The 3 and the 4 close the other lines.
 std::vector<BallState> blockedPot() {
-  return {placed(0, {-0.2, -0.35}), placed(2, {0.12, -0.15}), placed(1, {0.75, 0.24}),
-          placed(3, {0.55, 0.45}),  placed(4, {0.95, 0.05}),  placed(9, {-0.9, 0.4})};
+  return {BallState::at(0, {-0.2, -0.35}), BallState::at(2, {0.12, -0.15}),
+          BallState::at(1, {0.75, 0.24}),  BallState::at(3, {0.55, 0.45}),
+          BallState::at(4, {0.95, 0.05}),  BallState::at(9, {-0.9, 0.4})};
 }
 
 }  // namespace
@@ -94,8 +88,8 @@ TEST(PlannerJump, SnookerNeverJumpsForItIsAFoul) {
   // The red on its line to the top-right corner, the blue on the cue ball's line to it.
   MatchSetup setup;
   setup.setGame(nineball::rules::Game::Snooker);
-  setup.balls = {placed(0, {0.6, -0.07}), placed(19, {0.95, 0.22}), placed(1, {1.3, 0.5}),
-                 placed(21, {-1.2, 0.0})};
+  setup.balls = {BallState::at(0, {0.6, -0.07}), BallState::at(19, {0.95, 0.22}),
+                 BallState::at(1, {1.3, 0.5}), BallState::at(21, {-1.2, 0.0})};
   Match m(setup);
   Planner planner(Level::Master, 1);
   const Plan plan = planner.plan(planInputFrom(m));
