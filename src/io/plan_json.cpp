@@ -96,6 +96,8 @@ ordered_json planToJson(const ai::Plan& plan) {
   doc["heading_deg"] = headingDegrees(shot.heading_rad);
   doc["speed"] = shot.speed;
   doc["tip"] = {shot.tip.x, shot.tip.y};
+  // A raised cue (a jump, carom's swerve) is part of the shot; a level one is left unsaid.
+  if (shot.elevation_rad > 0.0) doc["elevation_deg"] = radToDeg(shot.elevation_rad);
   if (plan.turn.cue) doc["cue"] = {plan.turn.cue->x, plan.turn.cue->y};
   if (plan.turn.call) {
     doc["call"] = {{"ball", plan.turn.call->ball}, {"pocket", pocketName(plan.turn.call->pocket)}};

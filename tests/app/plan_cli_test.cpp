@@ -47,6 +47,32 @@ TEST(PlanCli, PrintsAShotThatSimPotsTheBallOnWith) {
   EXPECT_FALSE(pockets(result, 0));
 }
 
+// The 2 on the cue ball's line to the 1, which is on its line to the top-right corner: master
+// jumps it, and the printed shot carries the cue's elevation, so that sim plays the jump.
+TEST(PlanCli, AJumpPlanCarriesItsElevation) {
+  const char* blocked = R"({
+    "level": "master",
+    "balls": [{"id": 0, "x": -0.2, "y": -0.35}, {"id": 2, "x": 0.12, "y": -0.15},
+              {"id": 1, "x": 0.75, "y": 0.24}, {"id": 3, "x": 0.55, "y": 0.45},
+              {"id": 4, "x": 0.95, "y": 0.05}, {"id": 9, "x": -0.9, "y": 0.4}]
+  })";
+  const CliOutcome r = runOnDocument("plan", blocked);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto shot = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(shot.contains("elevation_deg")) << r.out;
+  EXPECT_GE(shot["elevation_deg"].get<double>(), 25.0);
+  auto scene = nlohmann::json::parse(blocked);
+  scene.erase("level");
+  scene["shot"] = shot;
+  const CliOutcome sim = runOnDocument("sim", scene.dump());
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const auto result = nlohmann::json::parse(sim.out);
+  EXPECT_TRUE(pockets(result, 1));
+  // And a level plan says nothing of the elevation.
+  const CliOutcome level = runOnDocument("plan", kStraightIn);
+  EXPECT_FALSE(nlohmann::json::parse(level.out).contains("elevation_deg")) << level.out;
+}
+
 // Three-cushion: the shot for the white (player A's, the game's first to play) that scores as
 // intended, checked by playing it through `nineball match` from the same balls.
 TEST(PlanCli, AThreeCushionPlanScoresAPointAsIntended) {
