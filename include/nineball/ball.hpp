@@ -27,6 +27,21 @@ struct BallState {
   /// then set too, as for every ball off the table, but names no pocket).
   bool off_table = false;
 
+  /// The `pocket` a ball off the table over a rail carries: every ball gone from the table has
+  /// `pocket` set, so that a check for a ball gone counts it too; this one names no pocket.
+  static constexpr PocketId kOffTablePocket = PocketId::TopLeft;
+
+  /// Takes the ball off the table: into `into`, or over a rail when nothing.
+  void takeOff(std::optional<PocketId> into) {
+    pocket = into.value_or(kOffTablePocket);
+    off_table = !into;
+  }
+  /// Puts a ball that was gone back on the table (spotted, placed by hand).
+  void backOnTable() {
+    pocket.reset();
+    off_table = false;
+  }
+
   /// Ball `id` at `pos`, moving at `vel` (at rest by default), no spin.
   static BallState at(int id, Vec2 pos, Vec2 vel = {}) {
     BallState b;

@@ -143,8 +143,7 @@ void Evaluator::respotBalls(Outcome& o) const {
         finder ? finder(spotted, table_, in_.physics.ball_radius, o.balls) : table_.footSpot();
     for (BallState& b : o.balls) {
       if (b.id != spotted) continue;
-      b.pocket.reset();
-      b.off_table = false;
+      b.backOnTable();
       b.pos = place;
     }
   }

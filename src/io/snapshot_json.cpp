@@ -125,8 +125,7 @@ std::vector<BallState> parseBallList(const json& v, const std::string& path,
       if (ball.off_table && ball.pocket) {
         refuse(member(at, "pocket"), "a ball off the table lies in no pocket");
       }
-      // Off the table, as every ball not on it (see BallState::off_table).
-      if (ball.off_table) ball.pocket = PocketId::TopLeft;
+      if (ball.off_table) ball.takeOff(std::nullopt);
     }
     balls.push_back(ball);
   }

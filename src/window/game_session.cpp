@@ -477,8 +477,7 @@ std::vector<BallState> GameSession::ballsToDraw() const {
     for (BallState& b : out) {
       if (b.id == kCueBall) {
         b.pos = *cue_.spot();
-        b.pocket.reset();
-        b.off_table = false;
+        b.backOnTable();
       }
     }
   }

@@ -108,8 +108,7 @@ bool PracticeTable::settle(const std::vector<BallState>& after) {
     b.vel = {};
     b.w = {};
     if (b.pocket) {
-      b.pocket.reset();
-      b.off_table = false;
+      b.backOnTable();
       b.pos = cue_from;
       cue_back = true;
     }

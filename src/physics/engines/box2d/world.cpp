@@ -281,7 +281,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
   void drop(std::size_t i, std::optional<PocketId> pocket) override {
     Ball& b = balls[i];
     b.pos = position(b);
-    b.pocket = pocket.value_or(PocketId::TopLeft);
+    b.pocket = pocket.value_or(BallState::kOffTablePocket);
     b.off_table = !pocket;
     world.DestroyBody(b.body);
     b.body = nullptr;
@@ -517,7 +517,7 @@ void World::addBall(const BallState& ball) {
   w.recorder.resize(w.balls.size());
   if (w.arc_log) w.arc_log->addBall(ball.id);
   if (ball.pocket || ball.off_table) {
-    w.balls.back().pocket = ball.pocket.value_or(PocketId::TopLeft);
+    w.balls.back().pocket = ball.pocket.value_or(BallState::kOffTablePocket);
     w.balls.back().off_table = ball.off_table;
     if (w.arc_log) w.arc_log->pocket(w.balls.size() - 1, w.time, ball.pos);
     return;

@@ -40,7 +40,7 @@ class ReferenceEngine final : public Engine,
     ball.state = b;
     ball.state.mass = b.mass.value_or(p_.ball_mass);
     ball.on_table = !b.pocket && !b.off_table;
-    if (b.off_table && !ball.state.pocket) ball.state.pocket = PocketId::TopLeft;
+    if (b.off_table && !ball.state.pocket) ball.state.takeOff(std::nullopt);
     ball.arc = physics::beginArc(run_.time, {b.pos, b.vel, b.w, b.z, b.vz}, p_);
     balls_.push_back(ball);
     if (!logging_) return;
@@ -69,8 +69,7 @@ class ReferenceEngine final : public Engine,
   void placeBall(int ball_id, Vec2 pos) override {
     Ball& b = balls_[indexOf(ball_id)];
     b.on_table = true;
-    b.state.pocket.reset();
-    b.state.off_table = false;
+    b.state.backOnTable();
     b.state.pos = pos;
     restart(b, physics::Kinematics{pos, {}, {}});
   }
@@ -221,9 +220,7 @@ class ReferenceEngine final : public Engine,
   void drop(std::size_t i, std::optional<PocketId> pocket) override {
     Ball& a = balls_[i];
     a.state.pos = now(a).p;
-    // Off the table over a rail: `pocket` marks it off the table and names no pocket.
-    a.state.pocket = pocket.value_or(PocketId::TopLeft);
-    a.state.off_table = !pocket;
+    a.state.takeOff(pocket);
     a.on_table = false;
     queue_.changed(i);
     if (i < log_.ids().size()) log_.pocket(i, run_.time, a.state.pos);
