@@ -7,7 +7,7 @@ packages=(cmake ninja-build g++ pkg-config
   nlohmann-json3-dev libcli11-dev libx11-dev fonts-dejavu-core xvfb xauth xdotool x11-apps x11-utils
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   python3-pip python3-venv python3-setuptools python3-wheel python3-tqdm
-  python3-distributed)
+  python3-distributed python3-mypy)
 
 missing=()
 for p in "${packages[@]}"; do

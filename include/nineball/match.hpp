@@ -24,6 +24,16 @@ class IllegalAction : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Where a rack given by its balls stands when play joins it in the middle: who is to shoot
+/// and what the rules carry from the turns before (a game state to start from).
+struct RackStanding {
+  rules::Player shooter = rules::Player::A;
+  bool ball_in_hand = false;  ///< the shooter places the cue ball first (pool's games)
+  int fouls[2] = {0, 0};      ///< consecutive fouls of A and B
+  rules::Groups groups;       ///< eight-ball's groups (open when unset)
+  int score[2] = {0, 0};      ///< points of A and B (the games that keep a score)
+};
+
 /// How a rack starts.
 struct MatchSetup {
   rules::Game game = defaultGame().id;
@@ -35,6 +45,9 @@ struct MatchSetup {
   StepParams step;
   /// A custom layout instead of the rack; the first turn is then an ordinary shot.
   std::optional<std::vector<BallState>> balls;
+  /// Where the rack of `balls` stands (none: A to shoot, nothing carried over). Only with
+  /// `balls`; Match refuses a standing its game cannot be in (IllegalAction).
+  std::optional<RackStanding> standing;
   /// The distance of a game played to points (GameDef::default_points; 0 for pool's games).
   int points = 0;
   /// Who plays the rack's first stroke (the break, the break-off): the later racks of a race
@@ -166,6 +179,7 @@ class Match {
   void restore(const MatchSnapshot& snapshot);
 
  private:
+  void joinStanding(const RackStanding& standing);
   void placeCue(Vec2 pos);
   void rerack();
   void spot(int ball);

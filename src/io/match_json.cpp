@@ -9,6 +9,7 @@
 #include "io/plan_json.hpp"
 #include "io/result_json.hpp"
 #include "io/scene_parts.hpp"
+#include "io/standing_json.hpp"
 #include "nineball/games.hpp"
 #include "nineball/scenes.hpp"
 #include "nineball/sim.hpp"
@@ -78,11 +79,29 @@ Race parseRace(const json& doc, rules::Game game) {
   return race;
 }
 
+// A standing the game cannot be in is refused naming the first standing key the script gave.
+void checkStanding(const MatchSetup& setup, const json& doc) {
+  const char* key = "shooter";
+  for (const char* k : kStandingKeys) {
+    if (optional(doc, k)) {
+      key = k;
+      break;
+    }
+  }
+  if (!setup.balls) refuse(key, "a rack joined in the middle needs its \"balls\"");
+  try {
+    const Match probe(setup);
+  } catch (const IllegalAction& e) {
+    refuse(key, e.what());
+  }
+}
+
 MatchScript parseMatchDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
   allowOnly(doc, "",
             {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns",
-             "points", "race_to", "breaks"});
+             "points", "race_to", "breaks", "shooter", "ball_in_hand", "fouls", "groups",
+             "score"});
   MatchScript script;
   MatchSetup& setup = script.setup;
   setup.setGame(gameField(doc));
@@ -128,6 +147,8 @@ MatchScript parseMatchDocument(const json& doc) {
                           " rack and the cue ball (" + *problem + ")");
     }
   }
+  setup.standing = parseStanding(doc);
+  if (setup.standing) checkStanding(setup, doc);
   static const json kNoTurns = json::array();
   const json& turns =
       computer_plays && !optional(doc, "turns") ? kNoTurns : required(doc, "", "turns");

@@ -115,6 +115,45 @@ Match::Match(const MatchSetup& setup)
   rack_ = rules::Rack(setup.game, setup.rules, objectBalls(balls), !setup.balls);
   rack_.setTargetPoints(setup.points);
   rack_.setOpener(setup.opener);
+  if (setup.standing) joinStanding(*setup.standing);
+}
+
+// The rack's state as `standing` says, checked against what the game can be in.
+void Match::joinStanding(const RackStanding& standing) {
+  const GameDef& def = gameDef(rack_.game());
+  if (!setup_.balls) throw IllegalAction("a rack's standing needs its balls");
+  if (standing.ball_in_hand && !def.cue_in_hand) {
+    throw IllegalAction(std::string(def.name) + " has no ball in hand");
+  }
+  if ((standing.groups.a || standing.groups.b) && !def.groups) {
+    throw IllegalAction(std::string(def.name) + " has no groups");
+  }
+  if (standing.groups.a.has_value() != standing.groups.b.has_value() ||
+      (standing.groups.a && *standing.groups.a == *standing.groups.b)) {
+    throw IllegalAction("groups: each player takes the group the other does not");
+  }
+  for (const int f : standing.fouls) {
+    if (f < 0 || f > 2) throw IllegalAction("fouls: a count of 0, 1 or 2 (three lose the rack)");
+  }
+  const bool scored = standing.score[0] != 0 || standing.score[1] != 0;
+  // The games that keep a score: carom's, played to points, and snooker's frames.
+  if (scored && def.default_points == 0 && !def.snookers) {
+    throw IllegalAction(std::string(def.name) + " keeps no score");
+  }
+  for (const int points : standing.score) {
+    if (points < 0 || (rack_.targetPoints() > 0 && points >= rack_.targetPoints())) {
+      throw IllegalAction("score: from 0 to less than the distance played to");
+    }
+  }
+  rules::RackState s = rack_.state();
+  s.shooter = standing.shooter;
+  s.ball_in_hand = standing.ball_in_hand;
+  s.fouls[0] = standing.fouls[0];
+  s.fouls[1] = standing.fouls[1];
+  s.groups = standing.groups;
+  s.score[0] = standing.score[0];
+  s.score[1] = standing.score[1];
+  rack_.setState(s);
 }
 
 Match::~Match() = default;
