@@ -51,9 +51,18 @@ py::object plainValue(py::handle o) {
   return py::reinterpret_borrow<py::object>(o);
 }
 
+// Deeper than any scene, recording or script is nested (a scene's deepest is 4): a document
+// nested deeper (or holding itself) is refused before anything recurses through it.
+constexpr int kMaxNesting = 64;
+
 // The first number in `o` that JSON cannot hold (NaN or an infinity), as "balls[0].x"; empty
 // when there is none. JSON text would only say where in the text the parser stopped.
-std::string nonFiniteAt(py::handle given, const std::string& path) {
+std::string nonFiniteAt(py::handle given, const std::string& path, int depth = 0) {
+  if (depth > kMaxNesting) {
+    throw py::value_error((path.empty() ? std::string("scene") : path) + ": nested deeper than " +
+                          std::to_string(kMaxNesting) +
+                          " levels (a dict or list that holds itself?)");
+  }
   const py::object o = plainValue(given);  // a numpy array is looked into as its list
   if (py::isinstance<py::float_>(o)) {
     return std::isfinite(o.cast<double>()) ? std::string() : path;
@@ -61,13 +70,14 @@ std::string nonFiniteAt(py::handle given, const std::string& path) {
   if (py::isinstance<py::dict>(o)) {
     for (auto item : o.cast<py::dict>()) {
       const std::string key = py::str(item.first).cast<std::string>();
-      const std::string found = nonFiniteAt(item.second, path.empty() ? key : path + "." + key);
+      const std::string found =
+          nonFiniteAt(item.second, path.empty() ? key : path + "." + key, depth + 1);
       if (!found.empty()) return found;
     }
   } else if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
     std::size_t i = 0;
     for (py::handle v : o) {
-      const std::string found = nonFiniteAt(v, path + "[" + std::to_string(i++) + "]");
+      const std::string found = nonFiniteAt(v, path + "[" + std::to_string(i++) + "]", depth + 1);
       if (!found.empty()) return found;
     }
   }
@@ -177,10 +187,37 @@ py::dict traceToPython(const Trace& trace) {
   return out;
 }
 
+// What of a scene a result needs to go on from where it stopped (continue_from): its table,
+// physics and step as given, and the masses of its balls.
+py::dict settingOf(py::handle given) {
+  const py::object scene = py::isinstance<py::str>(given)
+                               ? py::module_::import("json").attr("loads")(given)
+                               : py::reinterpret_borrow<py::object>(given);
+  py::dict out;
+  if (!py::isinstance<py::dict>(scene)) return out;
+  const py::dict d = scene.cast<py::dict>();
+  for (const char* key : {"table", "physics", "step"}) {
+    if (d.contains(key)) out[key] = d[key];
+  }
+  py::list masses;
+  if (d.contains("balls") && py::isinstance<py::list>(d["balls"])) {
+    for (py::handle b : d["balls"]) {
+      if (py::isinstance<py::dict>(b) && b.cast<py::dict>().contains("mass")) {
+        py::dict one;
+        one["id"] = b.cast<py::dict>()["id"];
+        one["mass"] = b.cast<py::dict>()["mass"];
+        masses.append(one);
+      }
+    }
+  }
+  out["balls"] = masses;
+  return out;
+}
+
 // The result document of `nineball sim`, as Python objects (a nineball.Result, which keeps the
 // physics the run used for state_at); the trace (which can be large) goes straight from the
 // samples, not through JSON text.
-py::object resultToPython(SimResult result, const PhysicsParams& physics) {
+py::object resultToPython(SimResult result, const PhysicsParams& physics, py::handle scene) {
   const py::object loads = py::module_::import("json").attr("loads");
   std::optional<Trace> trace = std::move(result.trace);
   result.trace.reset();
@@ -198,7 +235,9 @@ py::object resultToPython(SimResult result, const PhysicsParams& physics) {
       }
     }
   }
-  return py::module_::import("nineball").attr("Result")(doc, physicsJsonText(physics));
+  py::object out = py::module_::import("nineball").attr("Result")(doc, physicsJsonText(physics));
+  out.attr("_setting") = settingOf(scene);
+  return out;
 }
 
 // A result that breaks its promises (a ball off the table, a number not finite) is a defect
@@ -209,57 +248,6 @@ void checkResult(const Scene& scene, const SimResult& result, const std::string&
   }
 }
 
-// How often a waiting call looks for Ctrl-C.
-constexpr std::chrono::milliseconds kSignalPoll{25};
-
-// Runs `work` on a thread of its own, the GIL released, and looks for a signal (Ctrl-C, a
-// notebook's "interrupt kernel") every kSignalPoll meanwhile: on one, the flag handed to
-// `work` stops its runs at their next event, and once they have stopped the handler's
-// exception (KeyboardInterrupt) is raised, the unfinished results dropped. Without a thread
-// to be had it runs where it is, uninterruptible as before.
-void runInterruptibly(const std::function<void(const std::atomic<bool>*)>& work) {
-  std::atomic<bool> cancel{false};
-  std::exception_ptr failure;
-  bool done = false;
-  bool interrupted = false;
-  std::mutex m;
-  std::condition_variable finished;
-  {
-    const py::gil_scoped_release unlocked;
-    std::thread worker;
-    try {
-      worker = std::thread([&] {
-        try {
-          work(&cancel);
-        } catch (...) {
-          failure = std::current_exception();
-        }
-        const std::lock_guard<std::mutex> lock(m);
-        done = true;
-        finished.notify_all();
-      });
-    } catch (const std::system_error&) {
-      work(nullptr);
-      return;
-    }
-    for (;;) {
-      {
-        std::unique_lock<std::mutex> lock(m);
-        if (finished.wait_for(lock, kSignalPoll, [&] { return done; })) break;
-      }
-      const py::gil_scoped_acquire locked;
-      if (PyErr_CheckSignals() != 0) {
-        interrupted = true;
-        cancel = true;
-        break;
-      }
-    }
-    worker.join();
-  }
-  if (interrupted) throw py::error_already_set();
-  if (failure) std::rethrow_exception(failure);
-}
-
 py::object simulateOne(py::handle scene) {
   const Scene s = parse(scene, "");
   SimResult r;
@@ -268,20 +256,7 @@ py::object simulateOne(py::handle scene) {
     r = simulate(s);
   });
   checkResult(s, r, "");
-  return resultToPython(std::move(r), s.physics);
-}
-
-// `threads` as given, checked: an int (not a bool) of 0 (one per core) up to the cores there
-// are; more would only queue behind each other, and thousands could fail to start.
-int threadCount(py::handle threads) {
-  if (!py::isinstance<py::int_>(threads) || py::isinstance<py::bool_>(threads)) {
-    throw py::type_error("threads: expected an int, found " +
-                         py::str(py::type::of(threads).attr("__name__")).cast<std::string>());
-  }
-  const long long n = threads.cast<long long>();
-  const long long cores = std::max(1u, std::thread::hardware_concurrency());
-  if (n < 0) throw py::value_error("threads: must be >= 0 (0: one per core)");
-  return static_cast<int>(std::min(n, cores));
+  return resultToPython(std::move(r), s.physics, scene);
 }
 
 py::list simulateMany(py::handle scenes, py::handle threads_given, std::size_t first_index) {
@@ -297,9 +272,11 @@ py::list simulateMany(py::handle scenes, py::handle threads_given, std::size_t f
   }
   const int threads = threadCount(threads_given);
   std::vector<Scene> parsed;
+  std::vector<py::object> given;
   std::size_t i = 0;
   for (py::handle scene : scenes) {
     parsed.push_back(parse(scene, "scenes[" + std::to_string(first_index + i) + "]: "));
+    given.push_back(py::reinterpret_borrow<py::object>(scene));
     ++i;
   }
   std::vector<SimResult> results;
@@ -308,7 +285,7 @@ py::list simulateMany(py::handle scenes, py::handle threads_given, std::size_t f
   py::list out;
   for (std::size_t k = 0; k < results.size(); ++k) {
     checkResult(parsed[k], results[k], "scenes[" + std::to_string(first_index + k) + "]: ");
-    out.append(resultToPython(std::move(results[k]), parsed[k].physics));
+    out.append(resultToPython(std::move(results[k]), parsed[k].physics, given[k]));
   }
   return out;
 }
@@ -617,6 +594,70 @@ std::string toJson(py::handle doc) {
 
 }  // namespace
 
+// `threads` as given, checked: an int (not a bool) of 0 (one per core) up to the cores there
+// are; more would only queue behind each other, and thousands could fail to start.
+int threadCount(py::handle threads) {
+  if (!py::isinstance<py::int_>(threads) || py::isinstance<py::bool_>(threads)) {
+    throw py::type_error("threads: expected an int, found " +
+                         py::str(py::type::of(threads).attr("__name__")).cast<std::string>());
+  }
+  const long long n = threads.cast<long long>();
+  const long long cores = std::max(1u, std::thread::hardware_concurrency());
+  if (n < 0) throw py::value_error("threads: must be >= 0 (0: one per core)");
+  return static_cast<int>(std::min(n, cores));
+}
+
+// How often a waiting call looks for Ctrl-C.
+constexpr std::chrono::milliseconds kSignalPoll{25};
+
+// Runs `work` on a thread of its own, the GIL released, and looks for a signal (Ctrl-C, a
+// notebook's "interrupt kernel") every kSignalPoll meanwhile: on one, the flag handed to
+// `work` stops its runs at their next event, and once they have stopped the handler's
+// exception (KeyboardInterrupt) is raised, the unfinished results dropped. Without a thread
+// to be had it runs where it is, uninterruptible as before.
+void runInterruptibly(const std::function<void(const std::atomic<bool>*)>& work) {
+  std::atomic<bool> cancel{false};
+  std::exception_ptr failure;
+  bool done = false;
+  bool interrupted = false;
+  std::mutex m;
+  std::condition_variable finished;
+  {
+    const py::gil_scoped_release unlocked;
+    std::thread worker;
+    try {
+      worker = std::thread([&] {
+        try {
+          work(&cancel);
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        const std::lock_guard<std::mutex> lock(m);
+        done = true;
+        finished.notify_all();
+      });
+    } catch (const std::system_error&) {
+      work(nullptr);
+      return;
+    }
+    for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(m);
+        if (finished.wait_for(lock, kSignalPoll, [&] { return done; })) break;
+      }
+      const py::gil_scoped_acquire locked;
+      if (PyErr_CheckSignals() != 0) {
+        interrupted = true;
+        cancel = true;
+        break;
+      }
+    }
+    worker.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (failure) std::rethrow_exception(failure);
+}
+
 Scene parse(py::handle scene, const std::string& where) {
   const std::string text = sceneText(scene, where);
   // The command line's bound on what it reads, so that both take the same scenes.
@@ -638,6 +679,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = NINEBALL_VERSION;
   m.attr("PRESETS") = py::tuple(py::cast(nineball::PhysicsParams::presetNames()));
   m.attr("TABLES") = py::tuple(py::cast(nineball::TableDef::names()));
+  m.attr("EVENT_TYPES") = nineball::python::eventTypeNames();
   m.def("simulate", &nineball::python::simulateOne, py::arg("scene"),
         "Simulates one scene (a dict or JSON text) and returns the result dict.");
   m.def("continue_from", &nineball::python::continueFrom, py::arg("scene"), py::arg("result"),
@@ -673,6 +715,15 @@ PYBIND11_MODULE(_core, m) {
   m.def("record", &nineball::python::recordOf, py::arg("scene"), py::arg("names"), py::arg("hz"),
         py::arg("noise"), py::arg("strike"), py::arg("seed"),
         "The scene recorded as a tracker would: a recorded shot.");
+  // WIP nineball::python::defineEnv(m);
+  m.def("simulate_arrays", &nineball::python::simulateArrays, py::arg("scene"), py::arg("places"),
+        py::arg("shots"), py::arg("ids"), py::arg("threads") = 0,
+        "Ball places (n x balls x 2) and strokes (n x 5) on the scene's table: the final states, "
+        "event counts and event times as arrays.");
+  m.def("batch_arrays", &nineball::python::batchArrays, py::arg("scenes"), py::arg("threads") = 0,
+        py::arg("first_index") = 0, "Scenes in, simulate_arrays' arrays out.");
+  m.def("state_at_times", &nineball::python::stateAtTimes, py::arg("result"), py::arg("times"),
+        py::arg("scene"), "A traced run's balls at each instant of an array, as arrays.");
   m.def("simulate_many", &nineball::python::simulateMany, py::arg("scenes"), py::arg("threads") = 0,
         py::arg("first_index") = 0,
         "Checks every scene first (ValueError naming scenes[i] and the field), then simulates "

@@ -6,12 +6,14 @@ installed. A bad scene raises ValueError with the command line's message, naming
 
 - simulate(scene): one scene.
 - simulate_many(scenes, threads=0): many, in order, on every core.
-- continue_from(scene, result, shot=None, until=None): the scene that goes on from a result.
+- continue_from(result, shot=None, until=None): the scene that goes on from a result.
 - to_json(doc): a result or scene as JSON text, numpy arrays as lists.
 - state_at(result, t, scene=None): every ball at any instant of a traced run, exactly.
 - iter_simulate(scenes, threads=0, chunk=256, progress=None): results streamed in order,
   at most a chunk held at a time; a progress bar (tqdm) for long batches.
-- simulate_batch(scenes, threads=0): final states and event counts as numpy arrays.
+- simulate_batch(scenes, threads=0): final states, spins, event counts and times as arrays.
+- simulate_arrays(places, shots, ids=None, ...): arrays of ball places and strokes in, arrays out.
+- nineball.env: game environments for learning agents (make, make_vec).
 - Table(table="9ft", physics=None): the table as the physics builds it.
 - rack(game="nine-ball", seed=1, table="9ft"): the balls of a standard rack.
 - plan(scene, level=None, game=None, ...): the shot the computer would play.
@@ -29,7 +31,7 @@ formats: docs/cli.md; this package: docs/python.md.
 
 import itertools
 import json
-from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Union
+from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Sequence, Union
 
 from . import _core
 
@@ -61,7 +63,7 @@ class Result(dict):
 TABLES = _core.TABLES
 
 __all__ = ["TABLES", "simulate", "simulate_many", "continue_from", "to_json", "state_at", "iter_simulate",
-           "simulate_batch", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
+           "simulate_batch", "simulate_arrays", "Table", "Pocket", "rack", "plan", "match", "preset", "PRESETS", "Scene",
            "Result", "record", "fit", "calibrate",
            "__version__"]
 
@@ -93,14 +95,23 @@ def simulate_many(scenes: Iterable[Scene], threads: int = 0) -> List[Result]:
     return _core.simulate_many(scenes, threads)
 
 
-def continue_from(scene: Scene, result: Result, shot: Optional[Mapping[str, Any]] = None,
+def continue_from(scene: Any, result: Optional[Mapping[str, Any]] = None,
+                  shot: Optional[Mapping[str, Any]] = None,
                   until: Optional[float] = None) -> Dict[str, Any]:
-    """The scene that goes on from where ``result`` (of ``scene``) stopped.
+    """The scene that goes on from where a result stopped: ``continue_from(result)`` (a result
+    simulate returned knows its scene's table, physics and step) or ``continue_from(scene,
+    result)`` (a result read back from JSON, with the scene it came from).
 
-    It keeps ``scene``'s table, physics and step, puts every ball still on the table where and
-    as the result left it (its mass from ``scene``), and adds ``shot`` and ``until`` when given
+    It keeps the scene's table, physics and step, puts every ball still on the table where and
+    as the result left it (its mass from the scene), and adds ``shot`` and ``until`` when given
     (else the balls roll on to rest). Feed it to simulate.
     """
+    if result is None:
+        setting = getattr(scene, "_setting", None)
+        if setting is None:
+            raise TypeError("continue_from(result) takes a result simulate returned; for a plain "
+                            "dict pass the scene it came from: continue_from(scene, result)")
+        scene, result = setting, scene
     return _core.continue_from(scene, result, shot, until)
 
 
@@ -126,6 +137,11 @@ def state_at(result: Mapping[str, Any], t: float,
     ``result`` must carry a trace; ``scene`` (the scene it came from) is needed only when
     ``result`` is a plain dict (read back from JSON, say), for its physics. ``t`` outside the
     run (or past a truncated trace's end) raises ValueError.
+
+    ``t`` may be an array (or list) of instants: the answer is then a dict of numpy arrays,
+    ``t``, ``ids`` (the trace's balls), ``x``, ``y``, ``vx``, ``vy``, ``z``, ``vz`` (instants x
+    balls), ``w`` (instants x balls x 3) and ``phase`` (instants x balls, strings): about 3 us
+    an instant, where a call per instant costs some 150 us.
     """
     if scene is None:
         physics = getattr(result, "_physics_json", None)
@@ -137,6 +153,8 @@ def state_at(result: Mapping[str, Any], t: float,
         scene = {"physics": scene.get("physics", {}), "balls": []}
     else:
         scene = {"physics": json.loads(scene).get("physics", {}), "balls": []}
+    if isinstance(t, (list, tuple)) or hasattr(t, "__array__") and getattr(t, "ndim", 0) > 0:
+        return _core.state_at_times(result, t, scene)
     if isinstance(t, bool) or not isinstance(t, (int, float)) and not hasattr(t, "__float__"):
         raise TypeError("t: expected a number of seconds, found " + type(t).__name__)
     return _core.state_at(result, float(t), scene)
@@ -194,51 +212,103 @@ def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
 
 def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
                    progress: Optional[bool] = None) -> Dict[str, Any]:
-    """Simulates ``scenes`` and returns their final states as numpy arrays.
+    """Simulates ``scenes`` and returns their final states as numpy arrays, without a dict per
+    shot: the arrays of simulate_arrays, a row per scene, a column per ball id met in any of
+    them (NaN, or False, where a scene has no such ball).
 
-    Streams as iter_simulate does and keeps only the numbers: ``ids`` (every ball id met,
-    sorted), ``x``, ``y``, ``vx``, ``vy`` (scenes x balls, m and m/s; NaN where a scene has no
-    such ball), ``pocketed`` (scenes x balls, bool: in a pocket or off the table), ``time``
-    (simulated seconds), ``partial``
-    (bool), and ``events`` (scenes x event types, the counts, with ``event_types`` naming the
-    columns). Needs numpy.
+    Streams ``chunk`` scenes at a time as iter_simulate does (memory holds one chunk's
+    results); a bad scene raises ValueError naming its index. Needs numpy.
     """
     import numpy as np
 
-    rows = []
-    ids = set()
-    types = set()
-    for r in iter_simulate(scenes, threads, chunk, progress):
-        balls = {b["id"]: (b["x"], b["y"], b["vx"], b["vy"],
-                           b["pocket"] is not None or b.get("off_table", False))
-                 for b in r["balls"]}
-        counts: Dict[str, int] = {}
-        for e in r["events"]:
-            counts[e["type"]] = counts.get(e["type"], 0) + 1
-        ids.update(balls)
-        types.update(counts)
-        rows.append((balls, counts, r["time"], r["partial"]))
-    ids_sorted = sorted(ids)
-    types_sorted = sorted(types)
-    column = {b: i for i, b in enumerate(ids_sorted)}
-    n, m = len(rows), len(ids_sorted)
-    out = {name: np.full((n, m), np.nan) for name in ("x", "y", "vx", "vy")}
-    pocketed = np.zeros((n, m), dtype=bool)
-    events = np.zeros((n, len(types_sorted)), dtype=np.int64)
-    time = np.zeros(n)
-    partial = np.zeros(n, dtype=bool)
-    for k, (balls, counts, t, part) in enumerate(rows):
-        for b, (x, y, vx, vy, down) in balls.items():
-            j = column[b]
-            out["x"][k, j], out["y"][k, j], out["vx"][k, j], out["vy"][k, j] = x, y, vx, vy
-            pocketed[k, j] = down
-        for j, name in enumerate(types_sorted):
-            events[k, j] = counts.get(name, 0)
-        time[k] = t
-        partial[k] = part
-    out.update(ids=np.array(ids_sorted, dtype=np.int64), pocketed=pocketed, time=time,
-               partial=partial, events=events, event_types=types_sorted)
+    if isinstance(scenes, (dict, str, bytes)):
+        raise TypeError("scenes: expected an iterable of scenes, found one "
+                        + ("dict" if isinstance(scenes, dict) else "string")
+                        + " (use simulate, or [scene])")
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise ValueError("chunk: expected an int >= 1, found " + repr(chunk))
+    total = len(scenes) if hasattr(scenes, "__len__") else None
+    bar = _progress_bar(total, progress)
+    source = iter(scenes)
+    parts: List[Dict[str, Any]] = []
+    done = 0
+    try:
+        while True:
+            block = list(itertools.islice(source, chunk))
+            if not block:
+                break
+            parts.append(_core.batch_arrays(block, threads, done))
+            done += len(block)
+            if bar is not None:
+                bar.update(len(block))
+    finally:
+        if bar is not None:
+            bar.close()
+    return _merge_arrays(parts, np)
+
+
+def _merge_arrays(parts: List[Dict[str, Any]], np: Any) -> Dict[str, Any]:
+    """The chunks' arrays stacked, their ball columns lined up by id."""
+    ids = np.unique(np.concatenate([p["ids"] for p in parts])) if parts else np.zeros(0, np.int64)
+    n = sum(len(p["time"]) for p in parts)
+    m = len(ids)
+    out: Dict[str, Any] = {"ids": ids.astype(np.int64), "event_types": _core.EVENT_TYPES}
+    for name in ("x", "y", "vx", "vy", "pocket_time"):
+        out[name] = np.full((n, m), np.nan)
+    out["w"] = np.full((n, m, 3), np.nan)
+    out["pocketed"] = np.zeros((n, m), dtype=bool)
+    for name, dtype in (("time", float), ("partial", bool)):
+        out[name] = np.concatenate([p[name] for p in parts]) if parts else np.zeros(0, dtype)
+    for name, dtype in (("events", np.int64), ("first_event_time", float)):
+        width = len(_core.EVENT_TYPES)
+        out[name] = (np.concatenate([p[name] for p in parts]) if parts
+                     else np.zeros((0, width), dtype))
+    row = 0
+    for p in parts:
+        rows = slice(row, row + len(p["time"]))
+        cols = np.searchsorted(ids, p["ids"])
+        for name in ("x", "y", "vx", "vy", "pocket_time", "w", "pocketed"):
+            out[name][rows, cols] = p[name]
+        row += len(p["time"])
     return out
+
+
+def simulate_arrays(places: Any, shots: Any, ids: Optional[Sequence[int]] = None,
+                    table: Union[str, Mapping[str, Any], None] = None,
+                    physics: Optional[Mapping[str, Any]] = None,
+                    step: Optional[Mapping[str, Any]] = None, threads: int = 0) -> Dict[str, Any]:
+    """Sweeps with arrays in and arrays out: no scene or result dict per shot.
+
+    ``places``: ball places, an array of shape (n, balls, 2) in metres (NaN for a ball not on
+    the table in that row), or (balls, 2) for the same layout in every row; ``shots``: (n, 5),
+    each row ``heading_deg``, ``speed`` (m/s), ``side``, ``height`` (the tip, fractions of R)
+    and ``elevation_deg``, struck on the cue ball; ``ids``: the balls' ids, in the order of
+    ``places``' columns (default 0, 1, ...; the cue ball, 0, among them). ``table``,
+    ``physics`` and ``step`` as a scene's.
+
+    Returns a dict of numpy arrays, a row per shot: ``ids``; ``x``, ``y``, ``vx``, ``vy`` (n x
+    balls, the final states), ``w`` (n x balls x 3, rad/s), ``pocketed`` (n x balls: in a
+    pocket or off the table), ``pocket_time`` (n x balls, s, NaN when it stayed up), ``time``,
+    ``partial`` (n), ``events`` (n x event types, counts), ``first_event_time`` (n x event
+    types, s, NaN when none) and ``event_types`` (the columns' names). Each row is checked as
+    a scene is (ValueError "row i: ..."); the runs go on ``threads`` threads, the GIL released.
+    """
+    import numpy as np
+
+    shots_a = np.ascontiguousarray(shots, dtype=float)
+    if shots_a.ndim == 1:
+        shots_a = shots_a[None, :]
+    places_a = np.asarray(places, dtype=float)
+    if places_a.ndim == 2:
+        places_a = np.broadcast_to(places_a, (len(shots_a),) + places_a.shape)
+    places_a = np.ascontiguousarray(places_a)
+    if ids is None:
+        ids = list(range(places_a.shape[1] if places_a.ndim == 3 else 0))
+    scene: Dict[str, Any] = {"balls": []}
+    for key, value in (("table", table), ("physics", physics), ("step", step)):
+        if value is not None:
+            scene[key] = value
+    return _core.simulate_arrays(scene, places_a, shots_a, [int(i) for i in ids], threads)
 
 
 class Pocket:
