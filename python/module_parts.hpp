@@ -36,6 +36,8 @@ py::dict simulateArrays(py::handle base_scene,
 py::list eventTypeNames();
 /// Scenes in, the same arrays out.
 py::dict batchArrays(py::handle scenes, py::handle threads, std::size_t first_index);
+/// Every ball of a traced run at time t, a dict each.
+py::list stateAt(py::handle result, double t, py::handle scene);
 /// A traced run's balls at each instant of `times`, as arrays.
 py::dict stateAtTimes(py::handle result,
                       const py::array_t<double, py::array::c_style | py::array::forcecast>& times,
