@@ -17,7 +17,6 @@
 namespace nineball::python {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr EventType kEventTypes[] = {EventType::BallBall, EventType::Cushion,  EventType::Pocket,
                                      EventType::AllAtRest, EventType::Miscue,  EventType::Airborne,
                                      EventType::Land,      EventType::OffTable};

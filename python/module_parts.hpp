@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include <cstdint>
@@ -17,6 +18,9 @@
 namespace nineball::python {
 
 namespace py = pybind11;
+
+/// What an array holds where there is no value (a ball not on the table, no such event).
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A scene given as a dict (or its JSON text), refused with the command line's message (a
 /// ValueError, `where` before it).

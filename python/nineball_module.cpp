@@ -591,7 +591,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("record", &nineball::python::recordOf, py::arg("scene"), py::arg("names"), py::arg("hz"),
         py::arg("noise"), py::arg("strike"), py::arg("seed"),
         "The scene recorded as a tracker would: a recorded shot.");
-  // WIP nineball::python::defineEnv(m);
+  nineball::python::defineEnv(m);
   m.def("simulate_arrays", &nineball::python::simulateArrays, py::arg("scene"), py::arg("places"),
         py::arg("shots"), py::arg("ids"), py::arg("threads") = 0,
         "Ball places (n x balls x 2) and strokes (n x 5) on the scene's table: the final states, "

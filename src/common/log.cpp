@@ -29,6 +29,11 @@ std::shared_ptr<spdlog::logger> logger(const std::string& name) {
   return created;
 }
 
+spdlog::logger& physicsLogger() {
+  static const std::shared_ptr<spdlog::logger> kept = logger("physics");
+  return *kept;
+}
+
 bool setLogLevel(const std::string& level) {
   const auto parsed = spdlog::level::from_str(level);
   // from_str maps anything unknown to "off", so only accept "off" when it was asked for.

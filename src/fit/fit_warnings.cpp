@@ -9,9 +9,6 @@
 namespace nineball::fit {
 namespace {
 
-// A ball has moved once it lies this far from where it stood: five times a good tracker's
-// noise, as the first guess of the strike counts a move (m).
-constexpr double kMoved = 0.02;
 // Two balls' centres are never nearer than a diameter: samples of two balls this near at one
 // instant, kOnePlaceRun instants running, are one ball tracked twice (m).
 constexpr double kOnePlace = 0.005;
@@ -22,8 +19,6 @@ constexpr int kOnePlaceRun = 3;
 constexpr double kCheckShare = 0.03;
 constexpr double kStillFalling = 0.02;
 constexpr double kNegligible = 1e-4;
-// A simulation at least this long (s), so that a recording that ends at the strike still runs.
-constexpr double kMinRun = 1e-3;
 
 Vec2 sampleOf(const RecordedPath& b, std::size_t i) {
   return {b.x[i], b.y[i]};

@@ -96,9 +96,8 @@ std::optional<std::string> recordingFault(const Recording& r) {
 namespace fit {
 namespace {
 
-// A ball has moved once it lies this far from where it stood, at two samples running: five
-// times a good tracker's noise, and twice over, so that noise alone almost never moves it (m).
-constexpr double kMoved = 0.02;
+// A ball has moved once it lies kMoved from where it stood at two samples running: twice over,
+// so that noise alone almost never moves it.
 // Samples this near where a ball stood are the ball at rest seen through the tracker's noise:
 // with 5 mm on each coordinate, 1 % of them fall further out (m).
 constexpr double kStill = 0.012;

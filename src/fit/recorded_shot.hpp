@@ -12,6 +12,12 @@ namespace nineball::fit {
 /// samples may imply (no cue strikes harder than a hard break).
 constexpr double kMinSpeed = 0.05;
 constexpr double kMaxSpeed = 12.0;
+/// A ball has moved once it lies this far from where it stood (m): five times a good tracker's
+/// noise (the recording's reading and the fit's warnings count moves alike).
+constexpr double kMoved = 0.02;
+/// A simulation runs at least this long (s), so that a recording (or a window of it) that ends
+/// at the strike still runs.
+constexpr double kMinRun = 1e-3;
 
 /// What a recording says before any simulation: which ball was struck, where every ball
 /// stood at the strike, and a first guess of the strike from the cue ball's early samples.

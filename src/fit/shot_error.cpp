@@ -15,8 +15,6 @@ constexpr double kEarlyCueWeight = 1.5;
 constexpr double kMaxElevation = 60.0 * kPi / 180.0;  // the steepest jump a cue plays
 // Inside the miscue limit by this share, so that a tip on the search's edge still strikes.
 constexpr double kTipMargin = 0.95;
-// A simulation at least this long (s), so that a window that ends at the strike still runs.
-constexpr double kMinRun = 1e-3;
 // How far a searched place may stray from where the samples put the ball (m): a tracker
 // places a ball at rest to a few millimetres, and a search left free trades centimetres of a
 // ball's place, which a few samples at rest barely see, against a better fit of a chaotic end.

@@ -12,13 +12,6 @@
 namespace nineball::window {
 namespace {
 
-Vec2 pocketCentre(const GameSession& s, PocketId id) {
-  for (const Pocket& p : s.match().world().table().pockets) {
-    if (p.id == id) return p.drop_centre;
-  }
-  return {};
-}
-
 // Ten-ball after its break: every shot is called.
 MatchSetup tenBall() {
   MatchSetup setup;

@@ -11,13 +11,6 @@
 namespace nineball::window {
 namespace {
 
-Vec2 pocketCentre(const GameSession& s, PocketId id) {
-  for (const Pocket& p : s.match().world().table().pockets) {
-    if (p.id == id) return p.drop_centre;
-  }
-  return {};
-}
-
 // Ten-ball from a layout (no break): the 1 in front of the top-right pocket, the cue ball
 // behind it on the line to the pocket, the 10 far away.
 MatchSetup tenBallLayout() {

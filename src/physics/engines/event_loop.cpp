@@ -28,7 +28,7 @@ void spend(RunState& run, std::size_t count, std::size_t cap) {
                          ? std::to_string(limits::kMaxPieces) + " pieces"
                          : std::to_string(cap) +
                                " contacts in one step (a run of contacts that makes no progress)";
-  logger("physics")->info(
+  physicsLogger().info(
       "t={:.6f}: work budget spent ({} events, {} in this run; {} pieces); stopped", run.time,
       run.resolved, count, run.pieces);
 }
@@ -84,7 +84,7 @@ bool stepTowardRest(LoopEngine& engine, EventQueue& queue, RunState& run, double
 
 void noteStillMoving(const LoopEngine& engine, const RunState& run, double max_time) {
   if (!engine.settled() && !run.exhausted) {
-    logger("physics")->info("balls still moving after {} s of simulated time; stopped", max_time);
+    physicsLogger().info("balls still moving after {} s of simulated time; stopped", max_time);
   }
 }
 

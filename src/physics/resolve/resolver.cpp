@@ -62,7 +62,7 @@ void Resolver::ballEvent(double t, const EngineBalls& balls, std::size_t i, std:
   e.va = va;
   e.vb = vb;
   events_.push_back(e);
-  logger("physics")->trace("t={:.6f} ball {} - ball {}", t, e.a, e.b);
+  physicsLogger().trace("t={:.6f} ball {} - ball {}", t, e.a, e.b);
 }
 
 void Resolver::placeApart(EngineBalls& balls, std::size_t i, std::size_t j, Kinematics sa,
@@ -275,7 +275,7 @@ void Resolver::ballEventOf(EventType type, double t, const EngineBalls& balls, s
   e.va = v;
   e.at = at;
   events_.push_back(e);
-  logger("physics")->trace("t={:.6f} ball {} {}", t, e.a, eventTypeName(type));
+  physicsLogger().trace("t={:.6f} ball {} {}", t, e.a, eventTypeName(type));
 }
 
 void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, Vec2 v, Vec2 at) {
@@ -286,7 +286,7 @@ void Resolver::cushionEvent(double t, const EngineBalls& balls, std::size_t i, V
   e.va = v;
   e.at = at;
   events_.push_back(e);
-  logger("physics")->trace("t={:.6f} ball {} - cushion", t, e.a);
+  physicsLogger().trace("t={:.6f} ball {} - cushion", t, e.a);
 }
 
 // The ball's centre is over the fall edge. With the "fall" model it may yet be thrown back out
@@ -303,7 +303,7 @@ void Resolver::pocket(double t, EngineBalls& balls, std::size_t i, PocketId pock
   e.a = balls.id(i);
   e.pocket = pocket;
   events_.push_back(e);
-  logger("physics")->debug("t={:.6f} ball {} pocketed in {}", t, e.a, pocketName(pocket));
+  physicsLogger().debug("t={:.6f} ball {} pocketed in {}", t, e.a, pocketName(pocket));
 }
 
 // True when the ball comes back out (and is set back on the table); false when it is caught.
@@ -320,7 +320,7 @@ bool Resolver::thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId 
   }
   for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v, fall.out.p);
   balls.restart(i, fall.out);
-  logger("physics")->debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)",
+  physicsLogger().debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)",
                            t, balls.id(i), pocketName(pocket), fall.wall_contacts.size(),
                            fall.t_out);
   return true;

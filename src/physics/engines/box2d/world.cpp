@@ -349,9 +349,9 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     } else {
       if (hit.impulse <= 0.0) {
         // Box2D found no contact to push on (a touch it rounds away).
-        logger("physics")->debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
+        physicsLogger().debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
       } else {
-        logger("physics")->debug("t={:.6f} ball {}: Box2D's bounce gained energy; by hand", time,
+        physicsLogger().debug("t={:.6f} ball {}: Box2D's bounce gained energy; by hand", time,
                                  b.id);
       }
       hit.normal = predicted;
@@ -403,7 +403,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
       }
       return true;
     }
-    logger("physics")->debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand", time,
+    physicsLogger().debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand", time,
                              a.id, b.id, hits.empty() ? 0.0 : closing);
     return false;
   }
@@ -432,7 +432,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     resolveUnchecked(e);
     const double after = contact ? energyOnTable() : 0.0;
     if (contact && after > before * (1.0 + 1e-6) + 1e-15) {
-      logger("physics")->critical("t={:.9f}: a {} contact of ball {} raised the energy {} -> {} J",
+      physicsLogger().critical("t={:.9f}: a {} contact of ball {} raised the energy {} -> {} J",
                                   time,
                                   e.kind == NextEvent::Kind::Cushion ? "cushion" : "ball-ball",
                                   balls[e.i].id, before, after);
