@@ -1,8 +1,9 @@
 """A draw shot, cell by cell: the worked example of docs/python.md.
 
 The cells (``# %%``, the percent format that Jupyter, VS Code and jupytext open as a notebook)
-are the ones docs/python.md shows, with their printed output and pictures. Run as a script it
-saves the three pictures in --out (a folder) and checks what the text says about them.
+are the ones docs/python.md shows, with their printed output and pictures; each imports what it
+uses. Run as a script it saves the three pictures in --out (a folder) and checks what the text
+says about them; opened as a notebook the pictures go to the notebook's folder.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/worked_example.py --out build/examples
 """
@@ -12,14 +13,17 @@ import sys
 
 import matplotlib
 
-matplotlib.use("Agg")
+if "ipykernel" not in sys.modules:  # a script draws off screen; a notebook shows its pictures
+    matplotlib.use("Agg")
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--out", default=".", help="folder for the pictures")
-OUT = parser.parse_args().out
+# parse_known_args: a notebook's kernel has arguments of its own (-f kernel.json).
+OUT = parser.parse_known_args()[0].out
 os.makedirs(OUT, exist_ok=True)
 
 # %% 1. The table, and a half-ball cut on the 1 into the top-right corner
+import os
 import numpy as np
 import matplotlib.pyplot as plt
 import nineball

@@ -24,6 +24,8 @@ installed. A bad scene raises ValueError with the command line's message, naming
 - calibrate(shots, params, holdout=0.5, ...): physics parameters fitted to recorded shots.
 - Result: what the simulations return, a dict that keeps its run's physics (.physics).
 - nineball.dask.simulate(client, scenes): a sweep on a Dask cluster (optional).
+- nineball.plot: pictures of tables, shots and fits, and animations (matplotlib).
+- nineball.types: the scene, result, recording and answers as TypedDicts, for type checkers.
 
 Ctrl-C stops a run at its next event and raises KeyboardInterrupt. The scene and result
 formats: docs/cli.md; this package: docs/python.md.
@@ -31,32 +33,97 @@ formats: docs/cli.md; this package: docs/python.md.
 
 import itertools
 import json
-from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Sequence, Union
+from typing import (TYPE_CHECKING, Any, Dict, Iterable, Iterator, List, Literal, Mapping,
+                    Optional, Sequence, Sized, Tuple, TypeVar, Union, cast, overload)
 
 from . import _core
+from . import types
 
 __version__: str = _core.__version__
 
 #: A scene of ``nineball sim``: a dict (numpy numbers and arrays allowed) or its JSON text.
-Scene = Union[Mapping[str, Any], str]
+#: nineball.types.Scene spells out its fields for a type checker.
+Scene = Union[types.Scene, Mapping[str, Any], str]
+
+_T = TypeVar("_T")
+
+if TYPE_CHECKING:
+    # A checker sees a dict of str to object whose documented keys have their own types
+    # (the overloads below); at run time Result is a plain dict subclass, indexing at C speed.
+    _ResultBase = Dict[str, object]
+else:
+    _ResultBase = dict
 
 
-class Result(dict):
+class Result(_ResultBase):
     """A result of ``nineball sim`` as Python objects: the dict the command prints.
 
     It also remembers the physics its run used (``physics``), which state_at reads; it
     pickles (to Dask workers and back) and ``json.dumps`` as the plain dict it is.
+
+    To a type checker its documented keys have the types of nineball.types.ResultDoc
+    (``r["balls"]`` is a List[ResultBall], ``r.get("trace")`` an Optional[Dict[str,
+    TraceColumns]]) and any other key is an ``object``.
     """
 
-    def __init__(self, doc: Mapping[str, Any] = (), physics_json: Optional[str] = None):
+    if TYPE_CHECKING:
+        # The keys of types.ResultDoc, one overload each (a TypedDict can hold no property,
+        # and no class is both a TypedDict and a dict subclass). tests/python/test_types.py
+        # checks that each reads as ResultDoc's does.
+        @overload
+        def __getitem__(self, key: Literal["time"]) -> float: ...
+        @overload
+        def __getitem__(self, key: Literal["steps"]) -> int: ...
+        @overload
+        def __getitem__(self, key: Literal["wall_ms"]) -> float: ...
+        @overload
+        def __getitem__(self, key: Literal["end"]) -> types.End: ...
+        @overload
+        def __getitem__(self, key: Literal["partial"]) -> bool: ...
+        @overload
+        def __getitem__(self, key: Literal["balls"]) -> List[types.ResultBall]: ...
+        @overload
+        def __getitem__(self, key: Literal["events"]) -> List[types.Event]: ...
+        @overload
+        def __getitem__(self, key: Literal["trace"]) -> Dict[str, types.TraceColumns]: ...
+        @overload
+        def __getitem__(self, key: Literal["trace_truncated"]) -> bool: ...
+        @overload
+        def __getitem__(self, key: str) -> object: ...
+
+        def __getitem__(self, key: str) -> object:
+            return super().__getitem__(key)
+
+        # dict.get's own overloads cannot be matched one for one by these, hence the ignore.
+        @overload  # type: ignore[override]
+        def get(self, key: Literal["trace"]) -> Optional[Dict[str, types.TraceColumns]]: ...
+        @overload
+        def get(self, key: Literal["trace"],
+                default: _T) -> Union[Dict[str, types.TraceColumns], _T]: ...
+        @overload
+        def get(self, key: Literal["trace_truncated"]) -> Optional[bool]: ...
+        @overload
+        def get(self, key: Literal["trace_truncated"], default: _T) -> Union[bool, _T]: ...
+        @overload
+        def get(self, key: str) -> Optional[object]: ...
+        @overload
+        def get(self, key: str, default: _T) -> Union[object, _T]: ...
+
+        def get(self, key: str, default: object = None) -> object:
+            return super().get(key, default)
+
+    def __init__(self, doc: Union[Mapping[str, object], Iterable[Tuple[str, object]]] = (),
+                 physics_json: Optional[str] = None) -> None:
         super().__init__(doc)
         self._physics_json = physics_json
 
     @property
-    def physics(self) -> Optional[Dict[str, Any]]:
+    def physics(self) -> Optional[types.Physics]:
         """The physics the run used, every parameter, as a scene's "physics" object (a copy);
         None for a result built from a plain dict."""
-        return None if self._physics_json is None else json.loads(self._physics_json)
+        if self._physics_json is None:
+            return None
+        return cast(types.Physics, json.loads(self._physics_json))
 
 
 #: The named tables, as a scene's "table" takes them.
@@ -97,7 +164,7 @@ def simulate_many(scenes: Iterable[Scene], threads: int = 0) -> List[Result]:
 
 def continue_from(scene: Any, result: Optional[Mapping[str, Any]] = None,
                   shot: Optional[Mapping[str, Any]] = None,
-                  until: Optional[float] = None) -> Dict[str, Any]:
+                  until: Optional[float] = None) -> types.Scene:
     """The scene that goes on from where a result stopped: ``continue_from(result)`` (a result
     simulate returned knows its scene's table, physics and step) or ``continue_from(scene,
     result)`` (a result read back from JSON, with the scene it came from).
@@ -120,8 +187,16 @@ def to_json(doc: Union[Result, Mapping[str, Any]]) -> str:
     return _core.to_json(doc)
 
 
+@overload
 def state_at(result: Mapping[str, Any], t: float,
-             scene: Optional[Scene] = None) -> List[Dict[str, Any]]:
+             scene: Optional[Scene] = None) -> List[types.BallState]: ...
+@overload
+def state_at(result: Mapping[str, Any], t: Union[Sequence[float], types.FloatArray],
+             scene: Optional[Scene] = None) -> Dict[str, Any]: ...
+
+
+def state_at(result: Mapping[str, Any], t: Any,
+             scene: Optional[Scene] = None) -> Union[List[types.BallState], Dict[str, Any]]:
     """Every ball of a traced run at time ``t`` (s), exactly: one dict per ball, in the
     trace's order, with ``id``, ``x``, ``y`` (m), ``vx``, ``vy`` (m/s), ``z`` (m, the height
     above resting on the cloth), ``vz`` (m/s), ``w`` ([wx, wy, wz], rad/s), ``phase``
@@ -160,7 +235,7 @@ def state_at(result: Mapping[str, Any], t: float,
     return _core.state_at(result, float(t), scene)
 
 
-def _progress_bar(total: Optional[int], progress: Optional[bool]):
+def _progress_bar(total: Optional[int], progress: Optional[bool]) -> Any:
     """A tqdm bar (the notebook's in a notebook), or None."""
     wanted = progress if progress is not None else (total is not None and total >= PROGRESS_FROM)
     if not wanted:
@@ -191,7 +266,7 @@ def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
                         + " (use simulate, or [scene])")
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise ValueError("chunk: expected an int >= 1, found " + repr(chunk))
-    total = len(scenes) if hasattr(scenes, "__len__") else None
+    total = len(scenes) if isinstance(scenes, Sized) else None
     bar = _progress_bar(total, progress)
     source = iter(scenes)
     done = 0
@@ -315,12 +390,12 @@ class Pocket:
     """One pocket as built: its mouth between two jaw points, and the drop circle (a ball whose
     centre enters it is pocketed). Points are (x, y) in metres, the table's centre at 0."""
 
-    def __init__(self, d: Mapping[str, Any]):
-        self.id: str = d["id"]
-        self.jaw_a = tuple(d["jaw_a"])
-        self.jaw_b = tuple(d["jaw_b"])
-        self.outward = tuple(d["outward"])
-        self.drop_centre = tuple(d["drop_centre"])
+    def __init__(self, d: types.PocketGeometry) -> None:
+        self.id: types.PocketName = d["id"]
+        self.jaw_a: Tuple[float, ...] = tuple(d["jaw_a"])
+        self.jaw_b: Tuple[float, ...] = tuple(d["jaw_b"])
+        self.outward: Tuple[float, ...] = tuple(d["outward"])
+        self.drop_centre: Tuple[float, ...] = tuple(d["drop_centre"])
         self.drop_radius: float = d["drop_radius"]
 
     def __repr__(self) -> str:
@@ -339,8 +414,8 @@ class Table:
     an n x 2 numpy array), ``head_string_x``, ``foot_spot``, ``head_spot``, ``centre_spot``.
     """
 
-    def __init__(self, table: Union[str, Mapping[str, Any]] = "9ft",
-                 physics: Optional[Mapping[str, Any]] = None):
+    def __init__(self, table: Union[str, types.TableSpec, Mapping[str, Any]] = "9ft",
+                 physics: Optional[Union[types.Physics, Mapping[str, Any]]] = None) -> None:
         scene: Dict[str, Any] = {"balls": [], "table": table}
         if physics is not None:
             scene["physics"] = physics
@@ -354,20 +429,21 @@ class Table:
         self.pockets: List[Pocket] = [Pocket(p) for p in g["pockets"]]
         try:
             import numpy as np
-            self.cushion_loop: Any = np.array(g["cushion_loop"])
+            # An n x 2 array (a list of [x, y] without numpy, which a checker is not told).
+            self.cushion_loop: types.FloatArray = np.array(g["cushion_loop"])
         except ImportError:
-            self.cushion_loop = g["cushion_loop"]
+            self.cushion_loop = cast(types.FloatArray, g["cushion_loop"])
         self.head_string_x: float = g["head_string_x"]
-        self.foot_spot = tuple(g["foot_spot"])
-        self.head_spot = tuple(g["head_spot"])
-        self.centre_spot = tuple(g["centre_spot"])
+        self.foot_spot: Tuple[float, ...] = tuple(g["foot_spot"])
+        self.head_spot: Tuple[float, ...] = tuple(g["head_spot"])
+        self.centre_spot: Tuple[float, ...] = tuple(g["centre_spot"])
 
     def __repr__(self) -> str:
         return f"Table({self.length} m x {self.width} m, {len(self.pockets)} pockets)"
 
 
 def rack(game: str = "nine-ball", seed: int = 1,
-         table: Union[str, Mapping[str, Any]] = "9ft") -> List[Dict[str, Any]]:
+         table: Union[str, types.TableSpec, Mapping[str, Any]] = "9ft") -> List[types.Ball]:
     """The object balls of ``game``'s standard rack, as a scene's ``balls`` (no cue ball).
 
     ``seed`` orders the balls as the game orders them (the same seed, the same rack as the
@@ -378,7 +454,8 @@ def rack(game: str = "nine-ball", seed: int = 1,
 
 
 def plan(scene: Scene, level: Optional[str] = None, game: Optional[str] = None,
-         rules: Optional[str] = None, ball_in_hand: Optional[bool] = None) -> Dict[str, Any]:
+         rules: Optional[str] = None,
+         ball_in_hand: Optional[bool] = None) -> types.PlanAnswer:
     """The shot the computer would play from ``scene``, as ``nineball plan`` prints it.
 
     ``level``: one of beginner, casual, club, league, advanced, pro, master (default master);
@@ -400,7 +477,7 @@ def plan(scene: Scene, level: Optional[str] = None, game: Optional[str] = None,
 PRESETS = _core.PRESETS
 
 
-def preset(name: str = "real") -> Dict[str, Any]:
+def preset(name: str = "real") -> types.Physics:
     """The physics preset ``name`` as a scene's ``physics`` object: its models by name and
     every parameter they read, SI units. Change what you study and pass it back::
 
@@ -411,7 +488,7 @@ def preset(name: str = "real") -> Dict[str, Any]:
     return _core.preset(name)
 
 
-def match(script: Scene) -> Dict[str, Any]:
+def match(script: Union[types.MatchScript, Mapping[str, Any], str]) -> types.MatchResult:
     """A rack played from a match script, as ``nineball match`` prints it.
 
     The script (docs/cli.md, "nineball match"): ``game``, ``rules``, ``seed``, the table and
@@ -423,7 +500,7 @@ def match(script: Scene) -> Dict[str, Any]:
 
 
 #: Recorded shots: one dict, a list of them, or their JSON (or JSON Lines) text.
-Shots = Union[Mapping[str, Any], Iterable[Mapping[str, Any]], str]
+Shots = Union[types.Recording, Mapping[str, Any], Iterable[Mapping[str, Any]], str]
 
 
 def _shots(shots: Shots) -> Any:
@@ -433,7 +510,7 @@ def _shots(shots: Shots) -> Any:
 
 
 def record(scene: Scene, names: Optional[List[str]] = None, hz: float = 50.0,
-           noise: float = 0.005, strike: float = 0.5, seed: int = 1) -> Dict[str, Any]:
+           noise: float = 0.005, strike: float = 0.5, seed: int = 1) -> types.Recording:
     """The scene (with a shot) as a tracker would record it: a recorded shot for fit.
 
     Every ball at every frame (``hz`` per second) from 0 to the end of the run, read off the
@@ -448,7 +525,7 @@ def record(scene: Scene, names: Optional[List[str]] = None, hz: float = 50.0,
 
 
 def fit(shots: Shots, evals: int = 12000, objective: str = "full", seed: int = 1,
-        threads: int = 0) -> List[Dict[str, Any]]:
+        threads: int = 0) -> List[types.FitAnswer]:
     """The shot that best reproduces each recorded shot, as ``nineball fit`` prints it.
 
     Each answer: ``id``, ``scene`` (a complete scene: simulate it to see the fit), ``names``
@@ -467,7 +544,7 @@ def fit(shots: Shots, evals: int = 12000, objective: str = "full", seed: int = 1
 
 def calibrate(shots: Shots, params: Iterable[str], holdout: float = 0.5, seed: int = 1,
               evals: int = 6000, refit_evals: int = 900, candidates: int = 60,
-              threads: int = 0) -> Dict[str, Any]:
+              threads: int = 0) -> types.CalibrateAnswer:
     """Physics parameters calibrated to recorded shots of one table, as ``nineball calibrate``
     prints it.
 
