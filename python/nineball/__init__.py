@@ -192,11 +192,11 @@ def state_at(result: Mapping[str, Any], t: float,
              scene: Optional[Scene] = None) -> List[types.BallState]: ...
 @overload
 def state_at(result: Mapping[str, Any], t: Union[Sequence[float], types.FloatArray],
-             scene: Optional[Scene] = None) -> Dict[str, Any]: ...
+             scene: Optional[Scene] = None) -> types.StatesAtTimes: ...
 
 
 def state_at(result: Mapping[str, Any], t: Any,
-             scene: Optional[Scene] = None) -> Union[List[types.BallState], Dict[str, Any]]:
+             scene: Optional[Scene] = None) -> Union[List[types.BallState], types.StatesAtTimes]:
     """Every ball of a traced run at time ``t`` (s), exactly: one dict per ball, in the
     trace's order, with ``id``, ``x``, ``y`` (m), ``vx``, ``vy`` (m/s), ``z`` (m, the height
     above resting on the cloth), ``vz`` (m/s), ``w`` ([wx, wy, wz], rad/s), ``phase``
@@ -286,7 +286,7 @@ def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
 
 
 def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
-                   progress: Optional[bool] = None) -> Dict[str, Any]:
+                   progress: Optional[bool] = None) -> types.SweepArrays:
     """Simulates ``scenes`` and returns their final states as numpy arrays, without a dict per
     shot: the arrays of simulate_arrays, a row per scene, a column per ball id met in any of
     them (NaN, or False, where a scene has no such ball).
@@ -302,7 +302,7 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
                         + " (use simulate, or [scene])")
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise ValueError("chunk: expected an int >= 1, found " + repr(chunk))
-    total = len(scenes) if hasattr(scenes, "__len__") else None
+    total = len(scenes) if isinstance(scenes, Sized) else None
     bar = _progress_bar(total, progress)
     source = iter(scenes)
     parts: List[Dict[str, Any]] = []
@@ -312,7 +312,7 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
             block = list(itertools.islice(source, chunk))
             if not block:
                 break
-            parts.append(_core.batch_arrays(block, threads, done))
+            parts.append(cast(Dict[str, Any], _core.batch_arrays(block, threads, done)))
             done += len(block)
             if bar is not None:
                 bar.update(len(block))
@@ -322,12 +322,12 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
     return _merge_arrays(parts, np)
 
 
-def _merge_arrays(parts: List[Dict[str, Any]], np: Any) -> Dict[str, Any]:
+def _merge_arrays(parts: List[Dict[str, Any]], np: Any) -> types.SweepArrays:
     """The chunks' arrays stacked, their ball columns lined up by id."""
     ids = np.unique(np.concatenate([p["ids"] for p in parts])) if parts else np.zeros(0, np.int64)
     n = sum(len(p["time"]) for p in parts)
     m = len(ids)
-    out: Dict[str, Any] = {"ids": ids.astype(np.int64), "event_types": _core.EVENT_TYPES}
+    out: Dict[str, Any] = {"ids": ids.astype(np.int64), "event_types": list(_core.EVENT_TYPES)}
     for name in ("x", "y", "vx", "vy", "pocket_time"):
         out[name] = np.full((n, m), np.nan)
     out["w"] = np.full((n, m, 3), np.nan)
@@ -345,13 +345,14 @@ def _merge_arrays(parts: List[Dict[str, Any]], np: Any) -> Dict[str, Any]:
         for name in ("x", "y", "vx", "vy", "pocket_time", "w", "pocketed"):
             out[name][rows, cols] = p[name]
         row += len(p["time"])
-    return out
+    return cast(types.SweepArrays, out)
 
 
 def simulate_arrays(places: Any, shots: Any, ids: Optional[Sequence[int]] = None,
                     table: Union[str, Mapping[str, Any], None] = None,
                     physics: Optional[Mapping[str, Any]] = None,
-                    step: Optional[Mapping[str, Any]] = None, threads: int = 0) -> Dict[str, Any]:
+                    step: Optional[Mapping[str, Any]] = None,
+                    threads: int = 0) -> types.SweepArrays:
     """Sweeps with arrays in and arrays out: no scene or result dict per shot.
 
     ``places``: ball places, an array of shape (n, balls, 2) in metres (NaN for a ball not on

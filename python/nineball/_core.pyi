@@ -8,7 +8,8 @@ import numpy.typing
 
 from . import Result
 from .types import (Ball, BallState, CalibrateAnswer, FitAnswer, MatchResult, Physics,
-                    PlanAnswer, Recording, Scene, ScriptTurn, TableGeometry)
+                    PlanAnswer, Recording, Scene, ScriptTurn, StatesAtTimes, SweepArrays,
+                    TableGeometry)
 
 # A scene, script or result as the core reads it: a dict (numpy numbers and arrays allowed)
 # or its JSON text.
@@ -44,11 +45,11 @@ def record(scene: _Doc, names: List[str], hz: float, noise: float, strike: float
 EVENT_TYPES: List[str]
 
 def simulate_arrays(scene: _Doc, places: numpy.typing.ArrayLike, shots: numpy.typing.ArrayLike,
-                    ids: List[int], threads: int = ...) -> Dict[str, Any]: ...
+                    ids: List[int], threads: int = ...) -> SweepArrays: ...
 def batch_arrays(scenes: Iterable[_Doc], threads: int = ...,
-                 first_index: int = ...) -> Dict[str, Any]: ...
+                 first_index: int = ...) -> SweepArrays: ...
 def state_at_times(result: Mapping[str, Any], times: numpy.typing.ArrayLike,
-                   scene: _Doc) -> Dict[str, Any]: ...
+                   scene: _Doc) -> StatesAtTimes: ...
 
 # The game environments' tables (python/module_env.cpp), behind nineball.env.
 GAMES: Tuple[str, ...]

@@ -2,8 +2,10 @@
 
     from dask.distributed import Client, LocalCluster
     import nineball.dask
-    client = Client(LocalCluster(n_workers=2))        # or Client("tcp://scheduler:8786")
-    results = nineball.dask.simulate(client, scenes)
+
+    if __name__ == "__main__":  # a LocalCluster's workers import this script again
+        client = Client(LocalCluster(n_workers=2))    # or Client("tcp://scheduler:8786")
+        results = nineball.dask.simulate(client, scenes)
 
 The scenes are cut into chunks; each chunk runs on a worker with the compiled core
 (nineball.simulate_many, the GIL released) and the results come back in the scenes' order.
@@ -12,12 +14,15 @@ optional: ``import nineball`` never imports it, only this module does (Debian:
 python3-distributed).
 """
 
-from typing import Any, Dict, List, Mapping, Sequence, Union
+from typing import TYPE_CHECKING, Any, List, Mapping, Sequence, Union
+
+if TYPE_CHECKING:
+    from . import Result
 
 __all__ = ["simulate"]
 
 
-def _simulate_chunk(scenes: List[Any], threads: int, first_index: int) -> List[Dict[str, Any]]:
+def _simulate_chunk(scenes: List[Any], threads: int, first_index: int) -> List["Result"]:
     # Runs on a worker: imports the worker's own nineball.
     from nineball import _core
 
@@ -25,7 +30,7 @@ def _simulate_chunk(scenes: List[Any], threads: int, first_index: int) -> List[D
 
 
 def simulate(client: Any, scenes: Sequence[Union[Mapping[str, Any], str]], chunk: int = 64,
-             threads: int = 1) -> List[Dict[str, Any]]:
+             threads: int = 1) -> List["Result"]:
     """Simulates ``scenes`` on the cluster behind ``client`` (a dask.distributed.Client);
     the results in the scenes' order, as nineball.simulate_many returns them.
 
@@ -44,7 +49,7 @@ def simulate(client: Any, scenes: Sequence[Union[Mapping[str, Any], str]], chunk
     starts = list(range(0, len(scenes), chunk))
     futures = client.map(_simulate_chunk, [scenes[i:i + chunk] for i in starts],
                          [threads] * len(starts), starts, pure=False)
-    results: List[Dict[str, Any]] = []
+    results: List["Result"] = []
     try:
         for future in futures:
             results.extend(future.result())

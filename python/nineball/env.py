@@ -25,7 +25,7 @@ the same methods and spaces of their own (``nineball.env.spaces``).
 
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
-from . import _core
+from . import _core, types
 from . import env_spaces as spaces
 
 __all__ = ["make", "make_vec", "Env", "VecEnv", "FlatActions", "GridActions", "NAMES",
@@ -50,7 +50,7 @@ MAX_SPEED = 14.0
 #: The highest cue elevation (degrees).
 MAX_ELEVATION_DEG = 89.0
 
-Observation = Dict[str, Any]
+Observation = types.Observation
 Action = Mapping[str, Any]
 
 try:  # Gymnasium when it is there: its base classes and spaces.
@@ -87,7 +87,7 @@ def _spaces_for(tables: Any, n: Optional[int]) -> Tuple[Any, Any]:
     return observation, action
 
 
-def _observation(raw: Tuple[Any, Any, Any], row: Optional[int] = None) -> Observation:
+def _observation(raw: Sequence[Any], row: Optional[int] = None) -> Observation:
     balls, on_table, state = raw[0], raw[1], raw[2]
     if row is not None:
         balls, on_table, state = balls[row], on_table[row], state[row]
@@ -166,7 +166,7 @@ class VecEnv:
                 "opponent_turns": raw[9], "winner": raw[10]}
         return _observation(raw), raw[3], raw[4], raw[5], info
 
-    def teacher(self, level: str = "master") -> List[Optional[Dict[str, Any]]]:
+    def teacher(self, level: str = "master") -> List[Optional["types.ScriptTurn"]]:
         """The computer's turn at ``level`` for each table's position, as intended (no errors):
         an action dict, None for a table whose episode is over."""
         return self._tables.teacher(level)
@@ -181,7 +181,7 @@ class VecEnv:
         pass
 
 
-class Env(_EnvBase):  # type: ignore[misc, valid-type]
+class Env(_EnvBase):  # type: ignore[misc]
     """One table, Gymnasium's ``Env``: ``reset(seed=None, options=None) -> (obs, info)`` and
     ``step(action) -> (obs, reward, terminated, truncated, info)``; the action a dict of a match
     turn's fields. ``info``: ``executed`` (the stroke as played, the action's keys), ``legal``,
@@ -231,7 +231,7 @@ class Env(_EnvBase):  # type: ignore[misc, valid-type]
         return (_observation((obs["balls"], obs["on_table"], obs["state"]), 0),
                 float(reward[0]), bool(terminated[0]), bool(truncated[0]), info)
 
-    def teacher(self, level: str = "master") -> Optional[Dict[str, Any]]:
+    def teacher(self, level: str = "master") -> Optional["types.ScriptTurn"]:
         """The computer's turn at ``level`` for the position, as intended: an action."""
         return self._vec.teacher(level)[0]
 

@@ -28,13 +28,19 @@ if TYPE_CHECKING:
     FloatArray = numpy.typing.NDArray[numpy.float64]
     #: A trace column of words (the phases).
     StrArray = numpy.typing.NDArray[numpy.str_]
+    #: Flags (on the table, pocketed, partial) and counts and ids.
+    BoolArray = numpy.typing.NDArray[numpy.bool_]
+    IntArray = numpy.typing.NDArray[numpy.int64]
 else:
     # At run time (typing.get_type_hints) without importing numpy; checkers see the arrays.
     FloatArray = Sequence[float]
     StrArray = Sequence[str]
+    BoolArray = Sequence[bool]
+    IntArray = Sequence[int]
 
 __all__ = [
-    "FloatArray", "StrArray", "PocketName", "Phase", "EventType", "End",
+    "FloatArray", "StrArray", "BoolArray", "IntArray", "SweepArrays", "StatesAtTimes",
+    "Observation", "PocketName", "Phase", "EventType", "End",
     "Ball", "BallFriction", "Physics", "TableSpec", "Shot", "Call", "Step", "TraceRequest",
     "Scene", "PlanScene",
     "ResultBall", "Event", "TraceColumns", "ResultDoc", "BallState",
@@ -537,3 +543,48 @@ class MatchResult(_MatchResultRequired, total=False):
     score: Dict[str, Union[CaromScore, SnookerScore]]
     points_remaining: int
     snookers_required: Dict[str, bool]
+
+
+class SweepArrays(TypedDict):
+    """simulate_arrays' and simulate_batch's answer: a row per shot, a column per ball of
+    ``ids`` (NaN, or False, where a shot has no such ball), a column per event type of
+    ``event_types``."""
+
+    ids: IntArray
+    x: FloatArray
+    y: FloatArray
+    vx: FloatArray
+    vy: FloatArray
+    w: FloatArray
+    pocketed: BoolArray
+    pocket_time: FloatArray
+    time: FloatArray
+    partial: BoolArray
+    events: IntArray
+    event_types: List[str]
+    first_event_time: FloatArray
+
+
+class StatesAtTimes(TypedDict):
+    """state_at over an array of instants: a row per instant, a column per ball of ``ids``."""
+
+    t: FloatArray
+    ids: IntArray
+    x: FloatArray
+    y: FloatArray
+    vx: FloatArray
+    vy: FloatArray
+    z: FloatArray
+    vz: FloatArray
+    w: FloatArray
+    phase: StrArray
+
+
+class Observation(TypedDict):
+    """A game environment's observation (nineball.env): every ball's place (m; 0 off the
+    table), whether it is on the table, and the rules' state (nineball.env.STATE_NAMES); a
+    vector environment's have a row per table first."""
+
+    balls: FloatArray
+    on_table: BoolArray
+    state: FloatArray

@@ -40,8 +40,8 @@ bool keepsScore(rules::Game game) {
 }
 
 // The pot task's opening: the cue ball and the 1 anywhere on the bed they fit, apart.
-std::vector<BallState> randomPot(const TableDef& def, double r, std::uint64_t& rng) {
-  const TableGeometry table = buildTable(def, r);
+std::vector<BallState> randomPot(const TableGeometry& table, double r, std::uint64_t& rng) {
+  const TableDef& def = table.def;
   auto place = [&] {
     for (;;) {
       const Vec2 p{uniform(rng, -def.length / 2 + r, def.length / 2 - r),
@@ -119,6 +119,7 @@ TableEnv::TableEnv(EnvSpec spec) : spec_(std::move(spec)) {
     ids_ = {kCueBall, kPotBall};
   }
   std::sort(ids_.begin(), ids_.end());
+  geometry_ = std::make_unique<TableGeometry>(buildTable(spec_.table, spec_.physics.ball_radius));
   reset(1);
 }
 
@@ -155,7 +156,7 @@ void TableEnv::reset(std::uint64_t seed, const std::optional<MatchSetup>& start)
     setup.physics = spec_.physics;
     setup.step = spec_.step;
     setup.seed = splitmix64(rng_) % 1000000007ull;
-    if (!spec_.game) setup.balls = randomPot(setup.table, setup.physics.ball_radius, rng_);
+    if (!spec_.game) setup.balls = randomPot(*geometry_, setup.physics.ball_radius, rng_);
   }
   match_ = std::make_unique<Match>(setup);
   if (spec_.opponent) {

@@ -8,6 +8,7 @@
 
 #include "nineball/match.hpp"
 #include "nineball/planner.hpp"
+#include "nineball/table.hpp"
 
 // One table of a game environment for learning agents: an episode is a rack of a game (the agent
 // against the computer, or both sides itself) or one stroke of the potting task; a step is one
@@ -105,6 +106,7 @@ class TableEnv {
   EnvSpec spec_;
   std::unique_ptr<Match> match_;
   std::unique_ptr<ai::Planner> opponent_;
+  std::unique_ptr<TableGeometry> geometry_;  // built once: where the pot task's balls fit
   std::vector<int> ids_;
   std::uint64_t rng_ = 1;
   int turns_ = 0;
