@@ -90,8 +90,10 @@ struct LevelSettings {
   double cut_growth = 0.0;
   double reach_growth = 0.0;
   double pace_growth = 0.0;
-  double speed_noise = 0.0;          ///< standard deviation of the executed speed, relative
-  double speed_noise_ms = 0.0;       ///< ... and in m/s (the tournaments' noise)
+  double speed_noise = 0.0;  ///< standard deviation of the executed speed, relative
+  /// ... and of the cue stick's speed, m/s (the tournaments' noise: the ball's speed follows
+  /// from the stick's by the stroke, executeStroke)
+  double speed_noise_ms = 0.0;
   double elevation_noise_deg = 0.0;  ///< standard deviation of the executed cue elevation
   double tip_noise_m = 0.0;          ///< ... of each tip offset, m on the ball
   bool noise_on_break = false;       ///< the break cued with the whole noise (else a third)
@@ -105,21 +107,42 @@ struct LevelSettings {
 struct ExecutionNoise {
   double aim_deg = 0.0;        ///< standard deviation of the heading
   double elevation_deg = 0.0;  ///< ... of the cue's elevation
-  double speed_ms = 0.0;       ///< ... of the speed, m/s
+  double speed_ms = 0.0;       ///< ... of the cue stick's speed, m/s (not the ball's)
   double tip_m = 0.0;          ///< ... of each tip offset, m on the ball
 
-  /// The computer-pool tournaments' (Computer Olympiad eight-ball, 2005-2008: Smith, "PickPocket:
-  /// a computer billiards shark", Artificial Intelligence 171, 2007; Archibald, Altman and
-  /// Shoham, "Analysis of a winning computational billiards player", IJCAI 2009): Gaussian,
-  /// 0.1 degree of aim, 0.125 degree of elevation, 0.075 m/s of speed, 0.5 mm of each tip
-  /// offset, on every shot.
-  static ExecutionNoise olympiad();
-  /// "olympiad", or "none" (every shot struck as planned, to measure a level's choices apart
-  /// from its cueing); nothing for any other name ("level", the level's own, is the caller's).
+  /// The computer-pool tournaments' (the Computer Olympiad's eight-ball, 2005-2008, played in
+  /// FastFiz: Noise.h, GaussianNoise; Smith, "PickPocket: a computer billiards shark", Artificial
+  /// Intelligence 171, 2007; Archibald, Altman and Shoham, "Analysis of a winning computational
+  /// billiards player", IJCAI 2009): Gaussian, on every shot, 0.125 degree of aim, 0.1 degree
+  /// of elevation, 0.075 m/s of the cue stick's speed and 0.5 mm of each tip offset; every
+  /// deviation `magnitude` times that (FastFiz's magnitude, 5 for "olympiad-5x").
+  static ExecutionNoise olympiad(double magnitude = 1.0);
+  /// "none" (every shot struck as planned, to measure a level's choices apart from its
+  /// cueing), "olympiad" or "olympiad-5x"; nothing for any other name ("level", the level's
+  /// own, is the caller's).
   static std::optional<ExecutionNoise> named(const std::string& name);
+  /// The names `named` knows, in order: "none", "olympiad", "olympiad-5x".
+  static std::vector<std::string> names();
   /// The settings with this noise in place of their own.
   void applyTo(LevelSettings& s) const;
 };
+
+/// What makes a stroke hard for the stroke model: the cut on the first ball (degrees, 0 straight)
+/// and the cue ball's distance to it (m); both 0 when not aimed at a ball directly.
+struct StrokeDifficulty {
+  double cut_deg = 0.0;
+  double reach_m = 0.0;
+  bool is_break = false;
+  bool is_jump = false;
+};
+/// The cueing errors of a named model: a level's name ("beginner" ... "master": its own errors),
+/// "none", "olympiad" or "olympiad-5x"; nothing for another name.
+std::optional<LevelSettings> cueingNamed(const std::string& name);
+/// The names cueingNamed knows, in order (levels first).
+std::vector<std::string> cueingNames();
+/// `intended` as a player with the cueing errors of `s` strikes it, the draws taken from `rng`.
+Shot executeStroke(const Shot& intended, const LevelSettings& s, const StrokeDifficulty& d,
+                   const PhysicsParams& physics, std::uint64_t& rng);
 
 /// The position to plan for: the table, the balls and the rules' state of the rack.
 struct PlanInput {
@@ -206,8 +229,8 @@ class Planner {
   /// play on, false to re-rack). Takes the table when its best shot from there is worth at least
   /// what the opponent would get.
   bool shootAfterPushOut(const PlanInput& in);
-  /// The plan as this level cues it: heading and speed with the level's noise, drawn from the
-  /// planner's own seeded generator.
+  /// The plan as this level cues it (executeStroke, with the plan's cut and reach), drawn from
+  /// the planner's own seeded generator.
   TurnInput execute(const Plan& plan);
   /// A whole turn of a match for the player to move: the pending decision, or a planned and
   /// executed shot (a push-out when that is worth more than any shot).
@@ -231,7 +254,7 @@ class Planner {
   LevelSettings settings_;
   std::uint64_t rng_state_;
   int threads_;
-  double ball_radius_ = PhysicsParams{}.ball_radius;  // of the last plan, for the tip's noise
+  PhysicsParams physics_;  // of the last plan, for the stroke's noise (the ball's size and mass)
   long simulations_ = 0;
   double think_seconds_ = 0.0;
   double last_think_seconds_ = 0.0;

@@ -102,28 +102,36 @@ void measureStroke(const PlanInput& in, double ball_radius, Plan& plan) {
   plan.reach_m = std::max(0.0, length(to_first) - 2.0 * ball_radius);
 }
 
-// The shot as struck with `s`'s errors, `scale` of them (a third on a softened break) and the
-// aim's grown by `growth`. The draws come from `rng` in a fixed order; the tournaments' terms
-// are drawn only where set, so that a level's own draws (and with them every match it plays)
-// stay as they were.
-Shot strike(Shot shot, const LevelSettings& s, double scale, double growth, double ball_radius,
-            double elevation_sd_deg, std::uint64_t& rng) {
-  const double aim_error = gaussian(rng);
-  const double speed_error = gaussian(rng);
-  shot.heading_rad += scale * growth * degToRad(s.aim_noise_deg) * aim_error;
-  double speed = shot.speed * (1.0 + scale * s.speed_noise * speed_error);
-  if (s.speed_noise_ms > 0.0) speed += scale * s.speed_noise_ms * gaussian(rng);
-  shot.speed = std::clamp(speed, kMinExecutedSpeed, kMaxExecutedSpeed);
-  if (elevation_sd_deg > 0.0) {
-    const double e = shot.elevation_rad + scale * degToRad(elevation_sd_deg) * gaussian(rng);
-    shot.elevation_rad = std::clamp(e, 0.0, degToRad(kMaxExecutedElevationDeg));
-  }
-  if (s.tip_noise_m > 0.0) {
-    const double k = scale * s.tip_noise_m / ball_radius;
-    shot.tip.x += k * gaussian(rng);
-    shot.tip.y += k * gaussian(rng);
-  }
-  return shot;
+// FastFiz's cue weighs 600 g (Table::CUE_MASS in fastfiz/include/FastFiz.h, used by its
+// CueStrikeEvent): the tournaments' speed noise is on that cue's speed.
+constexpr double kTournamentCueMass = 0.600;  // kg
+
+// The cue ball's speed (Shot::speed: the impulse over the ball's mass) per m/s of the cue
+// stick's, as FastFiz strikes (Leckie and Greenspan's eq. 1): v = 2 V / (1 + m/M + 5/(2R^2)
+// (a^2 + b^2 cos^2 t + c^2 sin^2 t - 2 b c cos t sin t)), a and b the tip's offsets across and
+// up in the table's frame, c = sqrt(R^2 - a^2 - b^2), t the elevation. The bracket is the
+// square of the impulse's lever arm, b cos t - c sin t being the tip's height seen along the
+// cue; nineball's tip is seen along the cue, so the bracket is R^2 (side^2 + height^2) at any
+// elevation. (FastFiz's 0.999425 on the bracket, to match its predecessor, is left out.)
+double ballSpeedPerStickSpeed(Vec2 tip, double ball_mass) {
+  return 2.0 / (1.0 + ball_mass / kTournamentCueMass + 2.5 * dot(tip, tip));
+}
+
+// How much larger than on an easy stroke the heading's error is on this one.
+double aimGrowth(const LevelSettings& s, const StrokeDifficulty& d, double speed) {
+  const double sin_cut = std::sin(degToRad(d.cut_deg));
+  const double pace = std::max(0.0, speed / kPaceReference - 1.0);
+  return (1.0 + s.cut_growth * sin_cut * sin_cut) * (1.0 + s.reach_growth * d.reach_m) *
+         (1.0 + s.pace_growth * pace);
+}
+
+StrokeDifficulty difficultyOf(const Plan& plan) {
+  StrokeDifficulty d;
+  d.cut_deg = plan.cut_deg;
+  d.reach_m = plan.reach_m;
+  d.is_break = plan.kind == ShotKind::Break;
+  d.is_jump = plan.kind == ShotKind::Jump;
+  return d;
 }
 
 // A break under the whole noise (the tournaments') is judged by striking each candidate that
@@ -133,17 +141,19 @@ Shot strike(Shot shot, const LevelSettings& s, double scale, double growth, doub
 // them. (Judging every shot so instead of by the grid cleared fewer racks: 21 of 100, not 26.)
 constexpr int kNoisySamples = 24;
 constexpr std::uint64_t kNoisySeed = 0x6e6f697379627265;  // fixed: plans stay repeatable
+constexpr StrokeDifficulty kBreakStroke{0.0, 0.0, true, false};
 
 // `ranked`: every break candidate, best first (ties go to the better ranked).
 RobustChoice chooseBreakUnderNoise(const std::vector<Candidate>& cands,
                                    const std::vector<std::size_t>& ranked, const Evaluator& eval,
-                                   const LevelSettings& s, double ball_radius, int threads) {
+                                   const LevelSettings& s, const PhysicsParams& physics,
+                                   int threads) {
   const std::size_t n = ranked.size() * kNoisySamples;
   std::vector<double> worth(n, 0.0);
   parallelFor(n, threads, [&](std::size_t j) {
     const Candidate& c = cands[ranked[j / kNoisySamples]];
     std::uint64_t rng = kNoisySeed + j % kNoisySamples;
-    worth[j] = eval.value(c, strike(c.shot, s, 1.0, 1.0, ball_radius, s.elevation_noise_deg, rng));
+    worth[j] = eval.value(c, executeStroke(c.shot, s, kBreakStroke, physics, rng));
   });
   RobustChoice best;
   best.simulations = static_cast<long>(n);
@@ -160,14 +170,6 @@ RobustChoice chooseBreakUnderNoise(const std::vector<Candidate>& cands,
     }
   }
   return best;
-}
-
-// How much larger than on an easy stroke the heading's error is on this one.
-double aimGrowth(const LevelSettings& s, const Plan& plan, double speed) {
-  const double sin_cut = std::sin(degToRad(plan.cut_deg));
-  const double pace = std::max(0.0, speed / kPaceReference - 1.0);
-  return (1.0 + s.cut_growth * sin_cut * sin_cut) * (1.0 + s.reach_growth * plan.reach_m) *
-         (1.0 + s.pace_growth * pace);
 }
 
 }  // namespace
@@ -196,19 +198,24 @@ Planner::Planner(Level level, const ExecutionNoise& noise, std::uint64_t seed, i
   noise.applyTo(settings_);
 }
 
-ExecutionNoise ExecutionNoise::olympiad() {
+ExecutionNoise ExecutionNoise::olympiad(double magnitude) {
   ExecutionNoise n;
-  n.aim_deg = 0.1;
-  n.elevation_deg = 0.125;
-  n.speed_ms = 0.075;
-  n.tip_m = 0.0005;
+  n.aim_deg = 0.125 * magnitude;
+  n.elevation_deg = 0.1 * magnitude;
+  n.speed_ms = 0.075 * magnitude;
+  n.tip_m = 0.0005 * magnitude;
   return n;
 }
 
 std::optional<ExecutionNoise> ExecutionNoise::named(const std::string& name) {
-  if (name == "olympiad") return olympiad();
   if (name == "none") return ExecutionNoise{};
+  if (name == "olympiad") return olympiad();
+  if (name == "olympiad-5x") return olympiad(5.0);
   return std::nullopt;
+}
+
+std::vector<std::string> ExecutionNoise::names() {
+  return {"none", "olympiad", "olympiad-5x"};
 }
 
 void ExecutionNoise::applyTo(LevelSettings& s) const {
@@ -230,10 +237,62 @@ void ExecutionNoise::applyTo(LevelSettings& s) const {
   }
 }
 
+std::optional<LevelSettings> cueingNamed(const std::string& name) {
+  for (Level level : allLevels()) {
+    if (name == levelName(level)) return LevelSettings::of(level);
+  }
+  const auto noise = ExecutionNoise::named(name);
+  if (!noise) return std::nullopt;
+  LevelSettings s;  // the search's fields a default's: only the cueing errors are meant
+  noise->applyTo(s);
+  return s;
+}
+
+std::vector<std::string> cueingNames() {
+  std::vector<std::string> names;
+  for (Level level : allLevels()) names.emplace_back(levelName(level));
+  for (const std::string& name : ExecutionNoise::names()) names.push_back(name);
+  return names;
+}
+
+// The draws come from `rng` in a fixed order; the tournaments' terms (the stick's speed, the
+// elevation on a stroke that is not a jump) are drawn only where set, so that a level's own draws,
+// and with them every match it plays, stay as they were.
+Shot executeStroke(const Shot& intended, const LevelSettings& s, const StrokeDifficulty& d,
+                   const PhysicsParams& physics, std::uint64_t& rng) {
+  const double scale = d.is_break && !s.noise_on_break ? kBreakNoiseScale : 1.0;
+  const double growth = d.is_break ? 1.0 : aimGrowth(s, d, intended.speed);
+  const double elevation_sd_deg = d.is_jump ? s.jump_elevation_noise_deg : s.elevation_noise_deg;
+  Shot shot = intended;
+  const double aim_error = gaussian(rng);
+  const double speed_error = gaussian(rng);
+  shot.heading_rad += scale * growth * degToRad(s.aim_noise_deg) * aim_error;
+  double speed = shot.speed * (1.0 + scale * s.speed_noise * speed_error);
+  const double stick_error = s.speed_noise_ms > 0.0 ? gaussian(rng) : 0.0;
+  if (elevation_sd_deg > 0.0) {
+    const double e = shot.elevation_rad + scale * degToRad(elevation_sd_deg) * gaussian(rng);
+    shot.elevation_rad = std::clamp(e, 0.0, degToRad(kMaxExecutedElevationDeg));
+  }
+  if (s.tip_noise_m > 0.0) {
+    const double k = scale * s.tip_noise_m / physics.ball_radius;
+    shot.tip.x += k * gaussian(rng);
+    shot.tip.y += k * gaussian(rng);
+  }
+  if (s.speed_noise_ms > 0.0) {
+    // The error is on the stick: back from the ball's speed to the stick's with the tip meant,
+    // the error added, and on to the ball's with the tip struck.
+    const double stick = speed / ballSpeedPerStickSpeed(intended.tip, physics.ball_mass) +
+                         scale * s.speed_noise_ms * stick_error;
+    speed = stick * ballSpeedPerStickSpeed(shot.tip, physics.ball_mass);
+  }
+  shot.speed = std::clamp(speed, kMinExecutedSpeed, kMaxExecutedSpeed);
+  return shot;
+}
+
 Plan Planner::plan(const PlanInput& in) {
   if (gameDef(in.rack.game()).family == GameFamily::Carom) return planCaromShot(in);
   const auto started = std::chrono::steady_clock::now();
-  ball_radius_ = in.physics.ball_radius;
+  physics_ = in.physics;
   const TableGeometry table = buildTable(in.table, in.physics.ball_radius);
   const Evaluator eval(in, table,
                        std::max(kMinJudgingAimDeg, kJudgingAimOfNoise * settings_.aim_noise_deg),
@@ -268,8 +327,7 @@ Plan Planner::plan(const PlanInput& in) {
     choice.index = order.front();
     choice.value = values[choice.index];
     if (breaking && settings_.noise_on_break) {
-      choice =
-          chooseBreakUnderNoise(cands, order, eval, settings_, in.physics.ball_radius, threads_);
+      choice = chooseBreakUnderNoise(cands, order, eval, settings_, in.physics, threads_);
       sims += choice.simulations;
       return choice;
     }
@@ -333,7 +391,7 @@ bool Planner::shootAfterPushOut(const PlanInput& in) {
 
 Plan Planner::planCaromShot(const PlanInput& in) {
   const auto started = std::chrono::steady_clock::now();
-  ball_radius_ = in.physics.ball_radius;
+  physics_ = in.physics;
   long sims = 0;
   Plan plan = planCarom(in, settings_, threads_, sims);
   simulations_ += sims;
@@ -345,13 +403,7 @@ Plan Planner::planCaromShot(const PlanInput& in) {
 
 TurnInput Planner::execute(const Plan& plan) {
   TurnInput turn = plan.turn;
-  const bool softened = plan.kind == ShotKind::Break && !settings_.noise_on_break;
-  const double scale = softened ? kBreakNoiseScale : 1.0;
-  const double growth =
-      plan.kind == ShotKind::Break ? 1.0 : aimGrowth(settings_, plan, turn.shot.speed);
-  const double elevation_sd = plan.kind == ShotKind::Jump ? settings_.jump_elevation_noise_deg
-                                                          : settings_.elevation_noise_deg;
-  turn.shot = strike(turn.shot, settings_, scale, growth, ball_radius_, elevation_sd, rng_state_);
+  turn.shot = executeStroke(turn.shot, settings_, difficultyOf(plan), physics_, rng_state_);
   return turn;
 }
 

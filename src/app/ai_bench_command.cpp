@@ -216,11 +216,13 @@ CLI::App* addAiBenchCommand(CLI::App& app, AiBenchOptions& options) {
   cmd->add_option("--threads", options.threads, "Workers simulating candidates")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
-  cmd->add_option(
-         "--noise", options.noise,
-         "Cueing errors: the level's own, none, or the computer-pool tournaments' (olympiad: "
-         "0.1 deg aim, 0.125 deg elevation, 0.075 m/s, 0.5 mm tip)")
-      ->check(CLI::IsMember({"level", "none", "olympiad"}))
+  std::vector<std::string> noises{"level"};
+  for (const std::string& name : ai::ExecutionNoise::names()) noises.push_back(name);
+  cmd->add_option("--noise", options.noise,
+                  "Cueing errors: the level's own, none, or the computer-pool tournaments' "
+                  "(olympiad: 0.125 deg aim, 0.1 deg elevation, 0.075 m/s on the cue stick, "
+                  "0.5 mm tip; olympiad-5x: five times each)")
+      ->check(CLI::IsMember(noises))
       ->capture_default_str();
   cmd->add_flag("--json", options.json, "Print one JSON object instead of the report");
   cmd->add_option("--versus", options.versus,

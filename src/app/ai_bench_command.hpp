@@ -19,8 +19,8 @@ struct AiBenchOptions {
   int racks = -1;
   std::uint64_t seed = 1;  ///< first seed of the positions and the racks
   int threads = 2;         ///< workers simulating candidates
-  /// "level" (the level's own cueing errors) or "olympiad" (the computer-pool tournaments'
-  /// noise, ai::ExecutionNoise::olympiad, in place of the level's).
+  /// "level" (the level's own cueing errors) or a name of ai::ExecutionNoise::names ("none",
+  /// "olympiad": the computer-pool tournaments' noise, "olympiad-5x") in place of the level's.
   std::string noise = "level";
   bool json = false;  ///< one JSON object on stdout instead of the report
   /// "A,B": instead of the level's racks, `racks` whole racks between levels A and B, the

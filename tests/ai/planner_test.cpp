@@ -142,34 +142,6 @@ TEST(Planner, ExecutionNoiseGrowsFromHardToEasy) {
   EXPECT_LT(spread[1], spread[2]);
 }
 
-TEST(Planner, TheOlympiadNoiseIsTheTournamentsGaussian) {
-  // 0.1 deg of aim, 0.125 deg of elevation, 0.075 m/s, 0.5 mm of each tip offset, on every
-  // shot; measured over 4000 executions, each deviation within 5 % (the sampling error of a
-  // standard deviation from 4000 draws is about 1 %).
-  Planner planner(Level::Master, ExecutionNoise::olympiad(), 7);
-  Plan plan;
-  plan.kind = ShotKind::Break;  // the break too: no softening
-  plan.turn.shot = nineball::Shot::withSpeed(30.0, 5.0);
-  plan.turn.shot.elevation_rad = nineball::degToRad(10.0);
-  double aim = 0, speed = 0, elevation = 0, tip_x = 0, tip_y = 0;
-  constexpr int kDraws = 4000;
-  for (int k = 0; k < kDraws; ++k) {
-    const nineball::Shot s = planner.execute(plan).shot;
-    const auto sq = [](double v) { return v * v; };
-    aim += sq(nineball::radToDeg(s.heading_rad - plan.turn.shot.heading_rad));
-    speed += sq(s.speed - 5.0);
-    elevation += sq(nineball::radToDeg(s.elevation_rad) - 10.0);
-    tip_x += sq(s.tip.x * nineball::PhysicsParams{}.ball_radius);
-    tip_y += sq(s.tip.y * nineball::PhysicsParams{}.ball_radius);
-  }
-  const auto sd = [&](double sum) { return std::sqrt(sum / kDraws); };
-  EXPECT_NEAR(sd(aim), 0.1, 0.005);
-  EXPECT_NEAR(sd(speed), 0.075, 0.00375);
-  EXPECT_NEAR(sd(elevation), 0.125, 0.00625);
-  EXPECT_NEAR(sd(tip_x), 0.0005, 0.000025);
-  EXPECT_NEAR(sd(tip_y), 0.0005, 0.000025);
-}
-
 namespace {
 
 // The standard deviation of the executed heading, degrees, over 4000 strokes of `plan`.

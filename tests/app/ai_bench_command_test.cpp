@@ -40,13 +40,16 @@ TEST(AiBenchJson, OneObjectWithEveryFieldOfTheContract) {
 }
 
 TEST(AiBenchJson, TheTournamentNoiseIsNamedAndChangesTheCueing) {
-  const nlohmann::ordered_json level =
-      benchJson("--game eight-ball --level hard --positions 3 --racks 1");
-  const nlohmann::ordered_json olympiad =
-      benchJson("--game eight-ball --level hard --positions 3 --racks 1 --noise olympiad");
+  const std::string racks = "--game eight-ball --level hard --positions 3 --racks 2";
+  const nlohmann::ordered_json level = benchJson(racks);
+  const nlohmann::ordered_json olympiad = benchJson(racks + " --noise olympiad");
+  const nlohmann::ordered_json five = benchJson(racks + " --noise olympiad-5x");
   EXPECT_EQ(olympiad["noise"], "olympiad");
-  // The same seeds and planner, other cueing errors: the racks are played out differently.
+  EXPECT_EQ(five["noise"], "olympiad-5x");
+  // The same seeds and planner, other cueing errors: the racks are played out differently
+  // (one rack alone a master under the Olympiad's noise clears as with its own).
   EXPECT_NE(level["shots"], olympiad["shots"]);
+  EXPECT_NE(olympiad["shots"], five["shots"]);
   const nlohmann::ordered_json none =
       benchJson("--game nine-ball --level beginner --positions 6 --racks 0 --noise none");
   const nlohmann::ordered_json own =
