@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/limits.hpp"
 #include "module_parts.hpp"
+#include "nineball/table.hpp"
 #include "nineball/sim.hpp"
 
 namespace nineball::python {
@@ -38,7 +41,7 @@ py::dict pack(const std::vector<SimResult>& results, const std::vector<int>& ids
   py::array_t<double> x({n, m}), y({n, m}), vx({n, m}), vy({n, m}), pocket_t({n, m});
   py::array_t<double> w({n, m, py::ssize_t{3}});
   py::array_t<bool> pocketed({n, m}), partial(n);
-  py::array_t<double> time(n), first_t({n, kTypes});
+  py::array_t<double> time(n), wall_ms(n), first_t({n, kTypes});
   py::array_t<long long> events({n, kTypes});
   auto X = x.mutable_unchecked<2>(), Y = y.mutable_unchecked<2>();
   auto VX = vx.mutable_unchecked<2>(), VY = vy.mutable_unchecked<2>();
@@ -79,6 +82,7 @@ py::dict pack(const std::vector<SimResult>& results, const std::vector<int>& ids
       }
     }
     time.mutable_at(i) = r.time;
+    wall_ms.mutable_at(i) = r.wall_ms;
     partial.mutable_at(i) = r.partial();
   }
   py::dict out;
@@ -91,6 +95,7 @@ py::dict pack(const std::vector<SimResult>& results, const std::vector<int>& ids
   out["pocketed"] = pocketed;
   out["pocket_time"] = pocket_t;
   out["time"] = time;
+  out["wall_ms"] = wall_ms;
   out["partial"] = partial;
   out["events"] = events;
   out["event_types"] = eventTypeNames();
@@ -105,7 +110,24 @@ std::vector<SimResult> runAll(const std::vector<Scene>& scenes, int threads) {
   return results;
 }
 
-// Every scene built from the base scene, the places and the strokes, checked.
+// Why a stroke row cannot be struck, or nothing: the bounds a scene's "shot" has.
+std::optional<std::string> strokeProblem(double heading_deg, double speed, double side,
+                                         double height, double elevation_deg) {
+  if (!std::isfinite(heading_deg)) return "heading_deg: expected a finite number";
+  if (!(speed >= 0.0 && speed <= limits::kMaxSpeed)) {
+    return "speed: must be >= 0 and <= " + std::to_string(limits::kMaxSpeed) + " m/s";
+  }
+  if (!(side * side + height * height <= 1.0)) {
+    return "tip: must lie on the ball: side^2 + height^2 <= 1";
+  }
+  if (!(elevation_deg >= 0.0 && elevation_deg <= 89.0)) {
+    return "elevation_deg: must be >= 0 and <= 89";
+  }
+  return std::nullopt;
+}
+
+// Every scene built from the base scene, the places and the strokes, checked (the table
+// built once for all of them).
 std::vector<Scene> scenesOf(const Scene& base, const Doubles& places, const Doubles& shots,
                             const std::vector<int>& ids) {
   const auto m = static_cast<py::ssize_t>(ids.size());
@@ -118,6 +140,7 @@ std::vector<Scene> scenesOf(const Scene& base, const Doubles& places, const Doub
     throw py::value_error("shots: expected an array of shape (" + std::to_string(n) +
                           ", 5): heading_deg, speed, side, height, elevation_deg");
   }
+  const TableGeometry table = buildTable(base.table, base.physics.ball_radius);
   const auto P = places.unchecked<3>();
   const auto S = shots.unchecked<2>();
   std::vector<Scene> scenes(static_cast<std::size_t>(n), base);
@@ -131,11 +154,14 @@ std::vector<Scene> scenesOf(const Scene& base, const Doubles& places, const Doub
       b.pos = {P(i, j, 0), P(i, j, 1)};
       s.balls.push_back(b);
     }
+    if (const auto problem = strokeProblem(S(i, 0), S(i, 1), S(i, 2), S(i, 3), S(i, 4))) {
+      throw py::value_error("row " + std::to_string(i) + ": " + *problem);
+    }
     Shot shot = Shot::withSpeed(S(i, 0), S(i, 1));
     shot.tip = {S(i, 2), S(i, 3)};
     shot.elevation_rad = S(i, 4) * 3.14159265358979323846 / 180.0;
     s.shot = shot;
-    if (const auto problem = validateScene(s)) {
+    if (const auto problem = validateBalls(s, table)) {
       throw py::value_error("row " + std::to_string(i) + ": " + *problem);
     }
   }

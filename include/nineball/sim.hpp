@@ -76,5 +76,8 @@ std::optional<std::string> resultFault(const Scene& scene, const SimResult& resu
 /// Empty when the scene can be simulated, else a message naming the field and the reason
 /// (balls overlapping, off the table, duplicate ids, shot without a cue ball, ...).
 std::optional<std::string> validateScene(const Scene& scene);
+/// validateScene's checks of the balls and the shot's cue ball alone, on `table` (the scene's
+/// table built, once for many scenes that share it; their settings checked once).
+std::optional<std::string> validateBalls(const Scene& scene, const TableGeometry& table);
 
 }  // namespace nineball

@@ -332,7 +332,7 @@ def _merge_arrays(parts: List[Dict[str, Any]], np: Any) -> types.SweepArrays:
         out[name] = np.full((n, m), np.nan)
     out["w"] = np.full((n, m, 3), np.nan)
     out["pocketed"] = np.zeros((n, m), dtype=bool)
-    for name, dtype in (("time", float), ("partial", bool)):
+    for name, dtype in (("time", float), ("wall_ms", float), ("partial", bool)):
         out[name] = np.concatenate([p[name] for p in parts]) if parts else np.zeros(0, dtype)
     for name, dtype in (("events", np.int64), ("first_event_time", float)):
         width = len(_core.EVENT_TYPES)
@@ -365,9 +365,10 @@ def simulate_arrays(places: Any, shots: Any, ids: Optional[Sequence[int]] = None
     Returns a dict of numpy arrays, a row per shot: ``ids``; ``x``, ``y``, ``vx``, ``vy`` (n x
     balls, the final states), ``w`` (n x balls x 3, rad/s), ``pocketed`` (n x balls: in a
     pocket or off the table), ``pocket_time`` (n x balls, s, NaN when it stayed up), ``time``,
-    ``partial`` (n), ``events`` (n x event types, counts), ``first_event_time`` (n x event
-    types, s, NaN when none) and ``event_types`` (the columns' names). Each row is checked as
-    a scene is (ValueError "row i: ..."); the runs go on ``threads`` threads, the GIL released.
+    ``wall_ms`` (the engine's own time), ``partial`` (n), ``events`` (n x event types, counts),
+    ``first_event_time`` (n x event types, s, NaN when none) and ``event_types`` (the columns'
+    names). Each row is checked as a scene is (ValueError "row i: ..."); the runs go on
+    ``threads`` threads, the GIL released.
     """
     import numpy as np
 

@@ -559,6 +559,7 @@ class SweepArrays(TypedDict):
     pocketed: BoolArray
     pocket_time: FloatArray
     time: FloatArray
+    wall_ms: FloatArray
     partial: BoolArray
     events: IntArray
     event_types: List[str]

@@ -80,8 +80,11 @@ std::optional<std::string> checkSettings(const Scene& scene) {
 
 std::optional<std::string> validateScene(const Scene& scene) {
   if (auto problem = checkSettings(scene)) return problem;
+  return validateBalls(scene, buildTable(scene.table, scene.physics.ball_radius));
+}
+
+std::optional<std::string> validateBalls(const Scene& scene, const TableGeometry& table) {
   const double r = scene.physics.ball_radius;
-  const TableGeometry table = buildTable(scene.table, r);
   std::set<int> ids;
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
     const BallState& b = scene.balls[i];

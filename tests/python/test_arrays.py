@@ -69,6 +69,13 @@ def test_simulate_arrays_names_the_row_and_the_shape_it_refuses():
         nineball.simulate_arrays(places, shots[:, :3])
     with pytest.raises(ValueError, match="ids: the strokes strike the cue ball"):
         nineball.simulate_arrays(places, shots, ids=[1, 2])
+    for column, value, field in ((1, 15.0, "speed"), (1, np.nan, "speed"), (0, np.inf, "heading"),
+                                 (2, 0.9, "tip"), (4, 90.0, "elevation_deg")):
+        bad = shots.copy()
+        bad[1, 3] = 0.9 if field == "tip" else bad[1, 3]
+        bad[1, column] = value
+        with pytest.raises(ValueError, match=r"row 1: " + field):
+            nineball.simulate_arrays(places, bad)
 
 
 def test_simulate_batch_keeps_spins_and_event_times_and_lines_up_ids():
