@@ -102,21 +102,6 @@ void measureStroke(const PlanInput& in, double ball_radius, Plan& plan) {
   plan.reach_m = std::max(0.0, length(to_first) - 2.0 * ball_radius);
 }
 
-// FastFiz's cue weighs 600 g (Table::CUE_MASS in fastfiz/include/FastFiz.h, used by its
-// CueStrikeEvent): the tournaments' speed noise is on that cue's speed.
-constexpr double kTournamentCueMass = 0.600;  // kg
-
-// The cue ball's speed (Shot::speed: the impulse over the ball's mass) per m/s of the cue
-// stick's, as FastFiz strikes (Leckie and Greenspan's eq. 1): v = 2 V / (1 + m/M + 5/(2R^2)
-// (a^2 + b^2 cos^2 t + c^2 sin^2 t - 2 b c cos t sin t)), a and b the tip's offsets across and
-// up in the table's frame, c = sqrt(R^2 - a^2 - b^2), t the elevation. The bracket is the
-// square of the impulse's lever arm, b cos t - c sin t being the tip's height seen along the
-// cue; nineball's tip is seen along the cue, so the bracket is R^2 (side^2 + height^2) at any
-// elevation. (FastFiz's 0.999425 on the bracket, to match its predecessor, is left out.)
-double ballSpeedPerStickSpeed(Vec2 tip, double ball_mass) {
-  return 2.0 / (1.0 + ball_mass / kTournamentCueMass + 2.5 * dot(tip, tip));
-}
-
 // How much larger than on an easy stroke the heading's error is on this one.
 double aimGrowth(const LevelSettings& s, const StrokeDifficulty& d, double speed) {
   const double sin_cut = std::sin(degToRad(d.cut_deg));
@@ -173,6 +158,21 @@ RobustChoice chooseBreakUnderNoise(const std::vector<Candidate>& cands,
 }
 
 }  // namespace
+
+// FastFiz's cue weighs 600 g (Table::CUE_MASS in fastfiz/include/FastFiz.h, used by its
+// CueStrikeEvent): the tournaments' speed noise is on that cue's speed.
+constexpr double kTournamentCueMass = 0.600;  // kg
+
+// The cue ball's speed (Shot::speed: the impulse over the ball's mass) per m/s of the cue
+// stick's, as FastFiz strikes (Leckie and Greenspan's eq. 1): v = 2 V / (1 + m/M + 5/(2R^2)
+// (a^2 + b^2 cos^2 t + c^2 sin^2 t - 2 b c cos t sin t)), a and b the tip's offsets across and
+// up in the table's frame, c = sqrt(R^2 - a^2 - b^2), t the elevation. The bracket is the
+// square of the impulse's lever arm, b cos t - c sin t being the tip's height seen along the
+// cue; nineball's tip is seen along the cue, so the bracket is R^2 (side^2 + height^2) at any
+// elevation. (FastFiz's 0.999425 on the bracket, to match its predecessor, is left out.)
+double ballSpeedPerStickSpeed(Vec2 tip, double ball_mass) {
+  return 2.0 / (1.0 + ball_mass / kTournamentCueMass + 2.5 * dot(tip, tip));
+}
 
 PlanInput planInputFrom(const Match& match) {
   PlanInput in;
@@ -334,7 +334,7 @@ Plan Planner::plan(const PlanInput& in) {
     const std::size_t top = std::min<std::size_t>(order.size(), std::max(robust_top, 0));
     if (settings_.robust_steps > 0 && top > 0) {
       const std::vector<std::size_t> ranked(order.begin(), order.begin() + top);
-      choice = chooseRobustly(cands, ranked, eval, settings_, threads_,
+      choice = chooseRobustly(cands, ranked, eval, settings_, in.physics.ball_mass, threads_,
                               breaking ? kBreakNoiseScale : 1.0, !breaking, gains);
       sims += choice.simulations;
     }

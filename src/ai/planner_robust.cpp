@@ -22,8 +22,9 @@ constexpr int kMaxShiftSteps = 2;
 
 RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
                             const std::vector<std::size_t>& ranked, const Evaluator& eval,
-                            const LevelSettings& level, int threads, double error_scale,
-                            bool centre, const std::vector<double>& position_gain) {
+                            const LevelSettings& level, double ball_mass, int threads,
+                            double error_scale, bool centre,
+                            const std::vector<double>& position_gain) {
   const int m = level.robust_steps;
   const int aims = 2 * m + 1;
   const std::size_t per = static_cast<std::size_t>(aims * kSpeedCount);
@@ -37,8 +38,10 @@ RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
     Shot shot = c.shot;
     shot.heading_rad += a * step;
     if (level.speed_noise_ms > 0.0) {
-      // A speed error in m/s (the tournaments' noise) weighs most on the softest strokes.
-      const double sd = std::hypot(speed_error * c.shot.speed, error_scale * level.speed_noise_ms);
+      // A speed error in m/s (the tournaments' noise, on the cue stick) weighs most on the
+      // softest strokes.
+      const double on_ball = ballSpeedPerStickSpeed(c.shot.tip, ball_mass) * level.speed_noise_ms;
+      const double sd = std::hypot(speed_error * c.shot.speed, error_scale * on_ball);
       shot.speed = std::max(0.0, c.shot.speed + kSpeedErrors[s] * sd);
     } else {
       shot.speed *= 1.0 + kSpeedErrors[s] * speed_error;

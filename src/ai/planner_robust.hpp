@@ -25,9 +25,16 @@ struct RobustChoice {
 /// check's deviations (the break is cued more precisely); `centre` false keeps the aim as is.
 /// `position_gain[i]` (when not empty) is what a look one shot further ahead added to
 /// candidate i's worth when it keeps the table; it is added to every grid point that does.
+/// A speed error in m/s (LevelSettings::speed_noise_ms, the tournaments') is the cue stick's:
+/// it reaches the ball as ballSpeedPerStickSpeed of the candidate's tip says (`ball_mass`, kg).
 RobustChoice chooseRobustly(const std::vector<Candidate>& cands,
                             const std::vector<std::size_t>& ranked, const Evaluator& eval,
-                            const LevelSettings& level, int threads, double error_scale,
-                            bool centre, const std::vector<double>& position_gain = {});
+                            const LevelSettings& level, double ball_mass, int threads,
+                            double error_scale, bool centre,
+                            const std::vector<double>& position_gain = {});
+
+/// The cue ball's speed per m/s of the cue stick's, as the tournaments' simulator (FastFiz)
+/// strikes with a `tip` offset (fractions of R) and its 600 g cue.
+double ballSpeedPerStickSpeed(Vec2 tip, double ball_mass);
 
 }  // namespace nineball::ai
