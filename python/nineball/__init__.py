@@ -260,6 +260,14 @@ def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
     for a tqdm bar, False for none, None for one when tqdm is installed and the batch (with a
     len()) has at least PROGRESS_FROM scenes.
     """
+    for block, first in _chunked(scenes, chunk, progress):
+        yield from _core.simulate_many(block, threads, first)
+
+
+def _chunked(scenes: Iterable[Scene], chunk: int,
+             progress: Optional[bool]) -> Iterator[Tuple[List[Scene], int]]:
+    """The scenes ``chunk`` at a time, each block with the index of its first scene in the
+    whole batch; the progress bar (see iter_simulate) moves once a block has been used."""
     if isinstance(scenes, (dict, str, bytes)):
         raise TypeError("scenes: expected an iterable of scenes, found one "
                         + ("dict" if isinstance(scenes, dict) else "string")
@@ -275,11 +283,10 @@ def iter_simulate(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
             block = list(itertools.islice(source, chunk))
             if not block:
                 return
-            results = _core.simulate_many(block, threads, done)
+            yield block, done
             done += len(block)
             if bar is not None:
                 bar.update(len(block))
-            yield from results
     finally:
         if bar is not None:
             bar.close()
@@ -296,29 +303,8 @@ def simulate_batch(scenes: Iterable[Scene], threads: int = 0, chunk: int = 256,
     """
     import numpy as np
 
-    if isinstance(scenes, (dict, str, bytes)):
-        raise TypeError("scenes: expected an iterable of scenes, found one "
-                        + ("dict" if isinstance(scenes, dict) else "string")
-                        + " (use simulate, or [scene])")
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise ValueError("chunk: expected an int >= 1, found " + repr(chunk))
-    total = len(scenes) if isinstance(scenes, Sized) else None
-    bar = _progress_bar(total, progress)
-    source = iter(scenes)
-    parts: List[Dict[str, Any]] = []
-    done = 0
-    try:
-        while True:
-            block = list(itertools.islice(source, chunk))
-            if not block:
-                break
-            parts.append(cast(Dict[str, Any], _core.batch_arrays(block, threads, done)))
-            done += len(block)
-            if bar is not None:
-                bar.update(len(block))
-    finally:
-        if bar is not None:
-            bar.close()
+    parts = [cast(Dict[str, Any], _core.batch_arrays(block, threads, first))
+             for block, first in _chunked(scenes, chunk, progress)]
     return _merge_arrays(parts, np)
 
 
