@@ -159,7 +159,7 @@ std::vector<Scene> scenesOf(const Scene& base, const Doubles& places, const Doub
     }
     Shot shot = Shot::withSpeed(S(i, 0), S(i, 1));
     shot.tip = {S(i, 2), S(i, 3)};
-    shot.elevation_rad = S(i, 4) * 3.14159265358979323846 / 180.0;
+    shot.elevation_rad = degToRad(S(i, 4));
     s.shot = shot;
     if (const auto problem = validateBalls(s, table)) {
       throw py::value_error("row " + std::to_string(i) + ": " + *problem);

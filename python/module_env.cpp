@@ -28,7 +28,6 @@ using nlohmann::json;
 
 // A flat action's columns: heading_deg, speed, side, height, elevation_deg, cue_x, cue_y.
 constexpr py::ssize_t kActionColumns = 7;
-constexpr double kDegPerRad = 57.29577951308232;
 
 json jsonOf(py::handle o, const std::string& where) {
   const py::object dumps = py::module_::import("json").attr("dumps");
@@ -253,9 +252,9 @@ class Tables {
       const bool stroke = o.executed.kind != TurnInput::Kind::Decision;
       const Shot& s = o.executed.shot;
       const double row[kActionColumns] = {
-          stroke ? s.heading_rad * kDegPerRad : kNaN, stroke ? s.speed : kNaN,
+          stroke ? radToDeg(s.heading_rad) : kNaN, stroke ? s.speed : kNaN,
           stroke ? s.tip.x : kNaN, stroke ? s.tip.y : kNaN,
-          stroke ? s.elevation_rad * kDegPerRad : kNaN,
+          stroke ? radToDeg(s.elevation_rad) : kNaN,
           o.executed.cue ? o.executed.cue->x : kNaN, o.executed.cue ? o.executed.cue->y : kNaN};
       for (py::ssize_t c = 0; c < kActionColumns; ++c) ex(i, c) = row[c];
     }

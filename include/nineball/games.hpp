@@ -122,6 +122,8 @@ struct GameDef {
 
   /// True when it is played by `rules`.
   bool playedBy(rules::RuleSet rules) const;
+  /// The players score points: the games played to a distance (carom's) and snooker's frames.
+  bool keepsScore() const { return default_points > 0 || snookers; }
 };
 
 /// Every game, in the order the menu offers them; the first is the default.

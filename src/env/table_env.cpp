@@ -22,6 +22,9 @@ namespace {
 constexpr int kPotBall = 1;
 // The pot task's balls are placed at least this far apart (m), clear of each other.
 constexpr double kPotClearance = 0.005;
+// A stroke with the cue raised past this (rad, some 6 degrees: a jump or a swerve, never a
+// level stroke's rest on the rail) errs in elevation as a level's jump does.
+constexpr double kJumpElevationRad = 0.1;
 
 int side(rules::Player p) {
   return p == rules::Player::A ? 0 : 1;
@@ -32,11 +35,6 @@ int ballsGone(const std::vector<int>& before, const std::vector<int>& after) {
   return static_cast<int>(std::count_if(before.begin(), before.end(), [&](int b) {
     return std::find(after.begin(), after.end(), b) == after.end();
   }));
-}
-
-bool keepsScore(rules::Game game) {
-  const GameDef& def = gameDef(game);
-  return def.default_points > 0 || def.snookers;
 }
 
 // The pot task's opening: the cue ball and the 1 anywhere on the bed they fit, apart.
@@ -192,7 +190,7 @@ ai::StrokeDifficulty TableEnv::difficultyOf(const Shot& shot) const {
     if (travel < nearest) {
       nearest = travel;
       d.reach_m = std::max(0.0, travel);
-      d.cut_deg = std::asin(std::sqrt(off2) / r2) * 180.0 / M_PI;
+      d.cut_deg = radToDeg(std::asin(std::sqrt(off2) / r2));
     }
   }
   return d;
@@ -229,7 +227,7 @@ StepOutcome TableEnv::step(const Action& action) {
   if (action.kind != TurnInput::Kind::Decision) {
     ai::StrokeDifficulty d = difficultyOf(action.shot);
     d.is_break = match_->rack().isBreak();
-    d.is_jump = action.shot.elevation_rad > 0.1;
+    d.is_jump = action.shot.elevation_rad > kJumpElevationRad;
     out.executed.shot = ai::executeStroke(action.shot, spec_.cueing, d, spec_.physics, rng_);
   }
   const TurnRecord record = match_->play(out.executed);
@@ -237,7 +235,7 @@ StepOutcome TableEnv::step(const Action& action) {
   out.legal = record.verdict.legal();
   if (action.kind != TurnInput::Kind::Decision) {
     out.potted = ballsGone(before, match_->rack().ballsOnTable());
-    if (keepsScore(game)) {
+    if (gameDef(game).keepsScore()) {
       out.reward += spec_.rewards.point * (match_->rack().score(shooter) - score_before);
     } else if (out.legal) {
       out.reward += spec_.rewards.pot * out.potted;

@@ -136,8 +136,7 @@ void Match::joinStanding(const RackStanding& standing) {
     if (f < 0 || f > 2) throw IllegalAction("fouls: a count of 0, 1 or 2 (three lose the rack)");
   }
   const bool scored = standing.score[0] != 0 || standing.score[1] != 0;
-  // The games that keep a score: carom's, played to points, and snooker's frames.
-  if (scored && def.default_points == 0 && !def.snookers) {
+  if (scored && !def.keepsScore()) {
     throw IllegalAction(std::string(def.name) + " keeps no score");
   }
   for (const int points : standing.score) {
