@@ -166,3 +166,34 @@ def test_custom_rewards_are_paid():
                           (-2.0 if not info["legal"] else 0.0))
     with pytest.raises(ValueError, match="rewards.bonus: unknown reward"):
         nenv.make("pot", rewards={"bonus": 1.0})
+
+
+def test_with_gymnasium_installed_every_environment_is_registered_and_its_env(monkeypatch):
+    """Gymnasium is not in Debian: a stand-in with its names shows what nineball.env does
+    when it is there."""
+    import importlib
+    import sys
+    import types as pytypes
+
+    registered = {}
+    gym = pytypes.ModuleType("gymnasium")
+
+    class GymEnv:
+        pass
+
+    gym.Env = GymEnv
+    gym.spaces = nenv.spaces
+    gym.registry = registered
+    gym.register = lambda id, entry_point, kwargs: registered.setdefault(id, (entry_point,
+                                                                              kwargs))
+    monkeypatch.setitem(sys.modules, "gymnasium", gym)
+    try:
+        reloaded = importlib.reload(nenv)
+        assert registered["nineball/EightBall-v0"] == ("nineball.env:make",
+                                                       {"name": "eight-ball"})
+        assert registered["nineball/Pot-v0"] == ("nineball.env:make", {"name": "pot"})
+        assert len(registered) == len(reloaded.NAMES)
+        assert isinstance(reloaded.make("pot"), GymEnv)
+    finally:
+        monkeypatch.delitem(sys.modules, "gymnasium")
+        importlib.reload(nenv)
