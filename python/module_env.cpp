@@ -28,6 +28,9 @@ using nlohmann::json;
 
 // A flat action's columns: heading_deg, speed, side, height, elevation_deg, cue_x, cue_y.
 constexpr py::ssize_t kActionColumns = 7;
+// More tables than any learner steps at once (each holds a match and its engine): a larger n is
+// a mistake, refused before the memory goes.
+constexpr std::size_t kMaxTables = 10000;
 
 json jsonOf(py::handle o, const std::string& where) {
   const py::object dumps = py::module_::import("json").attr("dumps");
@@ -39,8 +42,11 @@ json jsonOf(py::handle o, const std::string& where) {
                  }),
                  py::arg("allow_nan") = false)
                .cast<std::string>();
-  } catch (const py::error_already_set&) {
-    throw py::value_error(where + ": expected a dict of numbers, lists and strings");
+  } catch (const py::error_already_set& e) {
+    // NaN or an infinity ("Out of range float values..."), a dict holding itself ("Circular
+    // reference detected"), an object JSON has no word for.
+    throw py::value_error(where + ": expected a dict of finite numbers, lists and strings (" +
+                          std::string(py::str(e.value())) + ")");
   }
   return io::readJson(text);
 }
@@ -61,7 +67,12 @@ env::Rewards rewardsOf(py::handle given) {
       throw py::value_error("rewards." + key +
                             ": unknown reward (expected pot, point, foul, win or loss)");
     }
-    const double v = py::float_(py::reinterpret_borrow<py::object>(item.second)).cast<double>();
+    const py::handle value = item.second;
+    const bool number = (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||
+                         py::hasattr(value, "__float__")) &&
+                        !py::isinstance<py::bool_>(value) && !py::isinstance<py::str>(value);
+    if (!number) throw py::type_error("rewards." + key + ": expected a number");
+    const double v = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
     if (!std::isfinite(v)) throw py::value_error("rewards." + key + ": expected a finite number");
     *slot = v;
   }
@@ -70,10 +81,10 @@ env::Rewards rewardsOf(py::handle given) {
 
 class Tables {
  public:
-  Tables(const std::string& name, std::size_t n, const std::optional<std::string>& opponent,
+  Tables(const std::string& name, long long n, const std::optional<std::string>& opponent,
          const std::string& noise, const std::string& engine, std::uint64_t seed,
          py::handle threads, py::handle rewards, int max_turns)
-      : tables_(specOf(name, opponent, noise, engine, rewards, max_turns), n, seed,
+      : tables_(specOf(name, opponent, noise, engine, rewards, max_turns), checkedSize(n), seed,
                 threadCount(threads)) {}
 
   std::size_t size() const { return tables_.size(); }
@@ -159,6 +170,14 @@ class Tables {
   double lastStepSeconds() const { return last_step_seconds_; }
 
  private:
+  static std::size_t checkedSize(long long n) {
+    if (n < 1 || n > static_cast<long long>(kMaxTables)) {
+      throw py::value_error("n: expected from 1 to " + std::to_string(kMaxTables) +
+                            " tables, found " + std::to_string(n));
+    }
+    return static_cast<std::size_t>(n);
+  }
+
   static env::EnvSpec specOf(const std::string& name, const std::optional<std::string>& opponent,
                              const std::string& noise, const std::string& engine,
                              py::handle rewards, int max_turns) {
@@ -286,7 +305,7 @@ void defineEnv(py::module_& m) {
   m.attr("GAMES") = py::tuple(py::cast(gameNames()));
   m.attr("NOISE_MODELS") = py::tuple(py::cast(ai::cueingNames()));
   py::class_<Tables>(m, "Tables")
-      .def(py::init<const std::string&, std::size_t, const std::optional<std::string>&,
+      .def(py::init<const std::string&, long long, const std::optional<std::string>&,
                     const std::string&, const std::string&, std::uint64_t, py::handle, py::handle,
                     int>(),
            py::arg("name"), py::arg("n"), py::arg("opponent"), py::arg("noise"),

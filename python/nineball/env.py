@@ -132,8 +132,8 @@ class VecEnv:
                  noise: Optional[str] = None, seed: Optional[int] = None, threads: int = 0,
                  rewards: Optional[Mapping[str, float]] = None, max_turns: int = 200,
                  autoreset: bool = True, engine: str = "reference"):
-        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise ValueError("n: expected an int >= 1, found " + repr(n))
+        if isinstance(n, bool) or not isinstance(n, int):
+            raise TypeError("n: expected an int, found " + type(n).__name__)
         self.name = name
         self.num_envs = n
         self.autoreset = autoreset
@@ -158,10 +158,17 @@ class VecEnv:
         return _observation(raw), {}
 
     def step(self, actions: Any) -> Tuple[Observation, Any, Any, Any, Dict[str, Any]]:
+        import numpy as np
+
         if isinstance(actions, (list, tuple)) and actions and isinstance(actions[0], Mapping):
             raw = self._tables.step_dicts(list(actions), self.autoreset)
         else:
-            raw = self._tables.step_array(actions, self.autoreset)
+            try:
+                rows = np.asarray(actions, dtype=float)
+            except (TypeError, ValueError):
+                raise TypeError("actions: expected a (n, 7) array of numbers (ACTION_COLUMNS) "
+                                "or a list of n action dicts") from None
+            raw = self._tables.step_array(rows, self.autoreset)
         info = {"executed": raw[6], "legal": raw[7], "potted": raw[8],
                 "opponent_turns": raw[9], "winner": raw[10]}
         return _observation(raw), raw[3], raw[4], raw[5], info

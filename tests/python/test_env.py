@@ -138,6 +138,15 @@ def test_an_action_the_rules_refuse_names_the_table_and_the_field():
         nenv.make("nine-pin")
     with pytest.raises(ValueError, match="opponent: unknown level"):
         nenv.make("nine-ball", opponent="grandmaster")
+    with pytest.raises(ValueError, match=r"actions\[0\]: expected a dict of finite numbers"):
+        vec.step([{"heading_deg": float("nan"), "speed": 1}, {"heading_deg": 0, "speed": 8}])
+    with pytest.raises(TypeError, match="actions: expected a"):
+        vec.step("hello")
+    for n in (0, -3, 10**7):
+        with pytest.raises(ValueError, match="n: expected from 1 to 10000 tables"):
+            nenv.make_vec("pot", n)
+    with pytest.raises(TypeError, match="rewards.pot: expected a number"):
+        nenv.make("pot", rewards={"pot": "x"})
 
 
 def test_flat_and_grid_actions_drive_a_vector_environment():
