@@ -138,6 +138,7 @@ class Tables {
     for (std::size_t i = 0; i < size(); ++i) {
       const std::string where = "actions[" + std::to_string(i) + "]";
       const env::TableEnv& t = tables_.at(i);
+      if (t.over()) continue;  // a table standing still: its action (None will do) is ignored
       try {
         actions[i] = io::parseTurn(jsonOf(given[i], where), where, t.spec().physics.ball_mass,
                                    t.match().rack().game());
@@ -232,7 +233,7 @@ class Tables {
     } catch (const io::ParseError& e) {
       throw py::value_error(e.message);
     }
-    if (t.over()) throw py::value_error(where + ": the episode is over: reset the environment");
+    if (t.over()) return env::Action{};  // a table standing still: its action is ignored
     const Vec2 cue{rows(r, 5), rows(r, 6)};
     // A flat action's place counts only when the ball is in hand and may go there.
     if (std::isfinite(cue.x) && std::isfinite(cue.y) && t.match().cueInHand() &&
@@ -268,13 +269,14 @@ class Tables {
       potted.mutable_at(i) = o.potted;
       opponent_turns.mutable_at(i) = o.opponent_turns;
       winner.mutable_at(i) = !o.winner ? -1 : *o.winner == rules::Player::A ? 0 : 1;
-      const bool stroke = o.executed.kind != TurnInput::Kind::Decision;
+      const bool stroke = !o.idle && o.executed.kind != TurnInput::Kind::Decision;
       const Shot& s = o.executed.shot;
       const double row[kActionColumns] = {
           stroke ? radToDeg(s.heading_rad) : kNaN, stroke ? s.speed : kNaN,
           stroke ? s.tip.x : kNaN, stroke ? s.tip.y : kNaN,
           stroke ? radToDeg(s.elevation_rad) : kNaN,
-          o.executed.cue ? o.executed.cue->x : kNaN, o.executed.cue ? o.executed.cue->y : kNaN};
+          stroke && o.executed.cue ? o.executed.cue->x : kNaN,
+          stroke && o.executed.cue ? o.executed.cue->y : kNaN};
       for (py::ssize_t c = 0; c < kActionColumns; ++c) ex(i, c) = row[c];
     }
     const py::tuple obs = observation();

@@ -120,7 +120,10 @@ class VecEnv:
     placing the ball in hand; a place the ball cannot go, a call or a decision left out is
     filled as the beginner computer would) or a list of n action dicts (checked: a ValueError
     names the table and the field). A table whose episode ends starts its next at once
-    (``autoreset``); the step's rewards, flags and info are the ended episode's. Returns the
+    (``autoreset``); the step's rewards, flags and info are the ended episode's, its observation
+    the new episode's first. Without ``autoreset`` a table whose episode is over stands still
+    until ``reset`` (its action ignored: None will do; it reports terminated, reward 0, its
+    executed row NaN), so that an evaluation steps until every table is done. Returns the
     observations (a dict of arrays, a row per table), rewards, terminated, truncated and info
     (``executed``: the strokes as played, a (n, 7) array; ``legal``, ``potted``,
     ``opponent_turns``, ``winner``: -1 none, 0 A, 1 B).
@@ -160,7 +163,8 @@ class VecEnv:
     def step(self, actions: Any) -> Tuple[Observation, Any, Any, Any, Dict[str, Any]]:
         import numpy as np
 
-        if isinstance(actions, (list, tuple)) and actions and isinstance(actions[0], Mapping):
+        if isinstance(actions, (list, tuple)) and actions and all(
+                a is None or isinstance(a, Mapping) for a in actions):
             raw = self._tables.step_dicts(list(actions), self.autoreset)
         else:
             try:
@@ -206,12 +210,14 @@ class Env(_EnvBase):  # type: ignore[misc]
         self.table_size = self._vec.table_size
         self.observation_space = self._vec.single_observation_space
         self.action_space = self._vec.single_action_space
+        self._over = False
 
     def reset(self, *, seed: Optional[int] = None,
               options: Optional[Mapping[str, Any]] = None) -> Tuple[Observation, Dict[str, Any]]:
         """A new episode. ``options["start"]``: the position to start from (``balls`` and the
         standing keys of a match script), else the game's rack (a random pot)."""
         start = None if options is None else options.get("start")
+        self._over = False
         try:
             obs, info = self._vec.reset(seed=seed, options={"starts": [start]})
         except ValueError as e:
@@ -223,6 +229,8 @@ class Env(_EnvBase):  # type: ignore[misc]
         import numpy as np
 
         given: Optional[Mapping[str, Any]] = action if isinstance(action, Mapping) else None
+        if self._over:
+            raise ValueError("action: the episode is over: reset the environment")
         try:
             if given is not None:
                 obs, reward, terminated, truncated, vinfo = self._vec.step([given])
@@ -231,6 +239,7 @@ class Env(_EnvBase):  # type: ignore[misc]
                     np.asarray(action, dtype=float).reshape(1, len(ACTION_COLUMNS)))
         except ValueError as e:
             raise ValueError(str(e).replace("actions[0]", "action", 1)) from None
+        self._over = bool(terminated[0])
         info = {"executed": _executed(vinfo["executed"][0], given),
                 "legal": bool(vinfo["legal"][0]), "potted": int(vinfo["potted"][0]),
                 "opponent_turns": int(vinfo["opponent_turns"][0]),

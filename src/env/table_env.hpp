@@ -62,6 +62,9 @@ struct StepOutcome {
   int potted = 0;           ///< balls the agent potted
   int opponent_turns = 0;   ///< the computer's turns played after it
   std::optional<rules::Player> winner;
+  /// The table's episode was already over (a vector of tables without autoreset): nothing
+  /// was played.
+  bool idle = false;
 };
 
 /// One table.

@@ -33,6 +33,11 @@ void VecTables::reset(std::optional<std::uint64_t> seed,
 std::vector<StepOutcome> VecTables::step(const std::vector<Action>& actions, bool autoreset) {
   std::vector<StepOutcome> out(tables_.size());
   parallelFor(tables_.size(), threads_, [&](std::size_t i) {
+    if (tables_[i].over()) {
+      out[i].idle = true;
+      out[i].terminated = true;
+      return;
+    }
     out[i] = tables_[i].step(actions[i]);
     if (autoreset && (out[i].terminated || out[i].truncated)) resetTable(i);
   });

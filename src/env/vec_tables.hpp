@@ -25,7 +25,8 @@ class VecTables {
              const std::vector<std::optional<MatchSetup>>& starts = {});
   /// One turn of the agent on every table, side by side (the actions already checked with
   /// TableEnv::actionProblem). With `autoreset`, a table whose episode ended starts its next
-  /// at once (the outcome is the ended episode's).
+  /// at once (the outcome is the ended episode's); without, a table whose episode is over
+  /// stands still, its action ignored (StepOutcome::idle), until reset.
   std::vector<StepOutcome> step(const std::vector<Action>& actions, bool autoreset);
 
  private:

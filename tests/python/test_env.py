@@ -206,3 +206,18 @@ def test_with_gymnasium_installed_every_environment_is_registered_and_its_env(mo
     finally:
         monkeypatch.delitem(sys.modules, "gymnasium")
         importlib.reload(nenv)
+
+
+def test_without_autoreset_a_finished_table_stands_still_until_reset():
+    vec = nenv.make_vec("pot", 3, seed=6, autoreset=False)
+    obs, _ = vec.reset(seed=6)
+    strokes = np.array([[0.0, 1.0, 0.0, 0.0, 0.0, np.nan, np.nan]] * 3)
+    _, _, terminated, _, info = vec.step(strokes)
+    assert terminated.all() and not np.isnan(info["executed"][:, 1]).any()
+    after, reward, terminated, _, info = vec.step([None, None, None])
+    assert terminated.all() and (reward == 0).all() and np.isnan(info["executed"]).all()
+    again, _, _, _, _ = vec.step(strokes)
+    assert np.array_equal(again["balls"], after["balls"])
+    vec.reset()
+    _, _, terminated, _, info = vec.step(strokes)
+    assert not np.isnan(info["executed"][:, 1]).any()
