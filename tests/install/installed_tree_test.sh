@@ -44,8 +44,9 @@ expected=$(printf '%s\n' ./cmake/nineball/nineballConfig.cmake ./cmake/nineball/
   fail "lib holds: $libs (expected the two libraries and the CMake package)"
 if [[ -n $python ]]; then
   modules=$(cd "$prefix/lib" && find . -type f -path "./python*" | sort)
-  expected=$(printf '%s\n' "./${site#lib/}/nineball/__init__.py" "./${site#lib/}/nineball/_core.pyi" \
-    "./${site#lib/}/nineball/dask.py" "./${site#lib/}/nineball/py.typed" | sort)
+  # The package's files are those of python/nineball in the source tree.
+  expected=$(cd "$(dirname "$0")/../../python/nineball" && ls | grep -v __pycache__ |
+    sed "s|^|./${site#lib/}/nineball/|" | sort)
   so=$(echo "$modules" | grep '/nineball/_core\..*\.so$')
   [[ -n $so && $(echo "$modules" | grep -v '/nineball/_core\..*\.so$') == "$expected" ]] ||
     fail "lib holds: $modules (expected the package nineball alone, in $site)"

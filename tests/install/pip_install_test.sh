@@ -32,12 +32,16 @@ if ! NINEBALL_BUILD_TYPE=Debug "$work/venv/bin/pip" install --no-build-isolation
 fi
 
 cd "$work"
-out=$("$work/venv/bin/python" - <<'PY'
+# The package's files are those of python/nineball in the source, and the compiled core.
+package_files=$(cd "$work/src/python/nineball" && ls | grep -v __pycache__ | sort | tr '\n' ' ')
+out=$(PACKAGE_FILES="$package_files" "$work/venv/bin/python" - <<'PY'
 import inspect, os, pydoc, sys
-import nineball
+import nineball, nineball.env
 assert nineball.__file__.startswith(sys.prefix), nineball.__file__
 files = sorted(f for f in os.listdir(os.path.dirname(nineball.__file__)) if f != "__pycache__")
-assert [f for f in files if not f.startswith("_core.cpython")] == ["__init__.py", "_core.pyi", "dask.py", "py.typed"], files
+expected = sorted(os.environ["PACKAGE_FILES"].split())
+assert [f for f in files if not f.startswith("_core.cpython")] == expected, (files, expected)
+assert nineball.env.make("pot").step({"heading_deg": 0.0, "speed": 1.0})[2]
 r = nineball.simulate({"balls": [{"id": 0, "x": 0, "y": 0}], "shot": {"heading_deg": 0, "speed": 1}})
 for name in ("simulate", "simulate_many", "continue_from", "to_json"):
     assert inspect.signature(getattr(nineball, name)).parameters, name
