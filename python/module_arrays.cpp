@@ -14,13 +14,13 @@
 
 #include "common/limits.hpp"
 #include "module_parts.hpp"
-#include "nineball/table.hpp"
 #include "nineball/sim.hpp"
+#include "nineball/table.hpp"
 
 namespace nineball::python {
 namespace {
 
-constexpr EventType kEventTypes[] = {EventType::BallBall, EventType::Cushion,  EventType::Pocket,
+constexpr EventType kEventTypes[] = {EventType::BallBall,  EventType::Cushion, EventType::Pocket,
                                      EventType::AllAtRest, EventType::Miscue,  EventType::Airborne,
                                      EventType::Land,      EventType::OffTable};
 constexpr py::ssize_t kTypes = sizeof(kEventTypes) / sizeof(kEventTypes[0]);

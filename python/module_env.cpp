@@ -37,9 +37,9 @@ json jsonOf(py::handle o, const std::string& where) {
   std::string text;
   try {
     text = dumps(o, py::arg("default") = py::cpp_function([](py::handle v) -> py::object {
-                   if (py::hasattr(v, "tolist")) return v.attr("tolist")();
-                   throw py::type_error("not a JSON value");
-                 }),
+                      if (py::hasattr(v, "tolist")) return v.attr("tolist")();
+                      throw py::type_error("not a JSON value");
+                    }),
                  py::arg("allow_nan") = false)
                .cast<std::string>();
   } catch (const py::error_already_set& e) {
@@ -145,7 +145,8 @@ class Tables {
       } catch (const io::ParseError& e) {
         throw py::value_error(e.message);
       }
-      if (auto problem = t.actionProblem(actions[i])) throw py::value_error(where + ": " + *problem);
+      if (auto problem = t.actionProblem(actions[i]))
+        throw py::value_error(where + ": " + *problem);
     }
     return run(actions, autoreset);
   }
@@ -158,8 +159,8 @@ class Tables {
       const py::gil_scoped_release unlocked;
       for (std::size_t i = 0; i < size(); ++i) {
         const env::TableEnv& t = tables_.at(i);
-        texts[i] = t.over() ? "null"
-                            : io::turnToJson(t.teacher(*level), t.match().rack().game()).dump();
+        texts[i] =
+            t.over() ? "null" : io::turnToJson(t.teacher(*level), t.match().rack().game()).dump();
       }
     }
     py::list out;
@@ -271,12 +272,13 @@ class Tables {
       winner.mutable_at(i) = !o.winner ? -1 : *o.winner == rules::Player::A ? 0 : 1;
       const bool stroke = !o.idle && o.executed.kind != TurnInput::Kind::Decision;
       const Shot& s = o.executed.shot;
-      const double row[kActionColumns] = {
-          stroke ? radToDeg(s.heading_rad) : kNaN, stroke ? s.speed : kNaN,
-          stroke ? s.tip.x : kNaN, stroke ? s.tip.y : kNaN,
-          stroke ? radToDeg(s.elevation_rad) : kNaN,
-          stroke && o.executed.cue ? o.executed.cue->x : kNaN,
-          stroke && o.executed.cue ? o.executed.cue->y : kNaN};
+      const double row[kActionColumns] = {stroke ? radToDeg(s.heading_rad) : kNaN,
+                                          stroke ? s.speed : kNaN,
+                                          stroke ? s.tip.x : kNaN,
+                                          stroke ? s.tip.y : kNaN,
+                                          stroke ? radToDeg(s.elevation_rad) : kNaN,
+                                          stroke && o.executed.cue ? o.executed.cue->x : kNaN,
+                                          stroke && o.executed.cue ? o.executed.cue->y : kNaN};
       for (py::ssize_t c = 0; c < kActionColumns; ++c) ex(i, c) = row[c];
     }
     const py::tuple obs = observation();
@@ -310,9 +312,8 @@ void defineEnv(py::module_& m) {
       .def(py::init<const std::string&, long long, const std::optional<std::string>&,
                     const std::string&, const std::string&, std::uint64_t, py::handle, py::handle,
                     int>(),
-           py::arg("name"), py::arg("n"), py::arg("opponent"), py::arg("noise"),
-           py::arg("engine"), py::arg("seed"), py::arg("threads"), py::arg("rewards"),
-           py::arg("max_turns"))
+           py::arg("name"), py::arg("n"), py::arg("opponent"), py::arg("noise"), py::arg("engine"),
+           py::arg("seed"), py::arg("threads"), py::arg("rewards"), py::arg("max_turns"))
       .def("__len__", &Tables::size)
       .def_property_readonly("ids", &Tables::ids)
       .def_property_readonly("table_size", &Tables::tableSize)

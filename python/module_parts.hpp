@@ -6,12 +6,11 @@
 #include <pybind11/pybind11.h>
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <limits>
-#include <vector>
-
-#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "nineball/scenes.hpp"
 
@@ -32,10 +31,11 @@ int threadCount(py::handle threads);
 /// handed) on Ctrl-C and raising KeyboardInterrupt once it has stopped.
 void runInterruptibly(const std::function<void(const std::atomic<bool>*)>& work);
 /// Ball places and strokes as arrays in, final states and event counts and times out.
-py::dict simulateArrays(py::handle base_scene,
-                        const py::array_t<double, py::array::c_style | py::array::forcecast>& places,
-                        const py::array_t<double, py::array::c_style | py::array::forcecast>& shots,
-                        const std::vector<int>& ids, py::handle threads);
+py::dict simulateArrays(
+    py::handle base_scene,
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& places,
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& shots,
+    const std::vector<int>& ids, py::handle threads);
 /// The event types' names, in the order of the arrays' event columns.
 py::list eventTypeNames();
 /// Scenes in, the same arrays out.

@@ -66,7 +66,6 @@ std::map<std::string, py::object> pocketsOf(const py::dict& result) {
   return pockets;
 }
 
-
 // One ball's trace read once into C++: its samples column by column.
 struct BallColumns {
   int id = 0;
@@ -100,7 +99,8 @@ BallColumns columnsOf(const std::string& key, const py::dict& ball) {
   const bool heights = ball.contains("z") && ball.contains("vz");
   c.z = heights ? doublesOf(ball, "z", key, n) : std::vector<double>(n, 0.0);
   c.vz = heights ? doublesOf(ball, "vz", key, n) : std::vector<double>(n, 0.0);
-  if (!ball.contains("w")) throw py::value_error("result: trace[\"" + key + "\"] has no \"w\" column");
+  if (!ball.contains("w"))
+    throw py::value_error("result: trace[\"" + key + "\"] has no \"w\" column");
   const Doubles w = Doubles::ensure(py::object(ball["w"]));
   if (!w || w.ndim() != 2 || static_cast<std::size_t>(w.shape(0)) != n || w.shape(1) != 3) {
     throw py::value_error("result: trace[\"" + key + "\"][\"w\"] is not n x 3 spins");
@@ -212,7 +212,8 @@ py::dict stateAtTimes(py::handle result_given, const Doubles& times, py::handle 
   const PhysicsParams physics = parse(scene, "scene: ").physics;
   std::vector<BallColumns> balls;
   for (auto item : result["trace"].cast<py::dict>()) {
-    balls.push_back(columnsOf(py::str(item.first).cast<std::string>(), item.second.cast<py::dict>()));
+    balls.push_back(
+        columnsOf(py::str(item.first).cast<std::string>(), item.second.cast<py::dict>()));
   }
   const py::ssize_t n = times.shape(0);
   const auto m = static_cast<py::ssize_t>(balls.size());

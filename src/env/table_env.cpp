@@ -12,8 +12,8 @@
 namespace nineball::env {
 
 const char* const kStateNames[kStateSize] = {
-    "shooter",       "agent_to_shoot", "ball_in_hand",   "behind_head_string", "break",
-    "ball_on",       "call_required",  "decision",       "fouls_shooter",      "fouls_other",
+    "shooter",       "agent_to_shoot", "ball_in_hand", "behind_head_string", "break",
+    "ball_on",       "call_required",  "decision",     "fouls_shooter",      "fouls_other",
     "group_shooter", "score_shooter",  "score_other"};
 
 namespace {
@@ -173,8 +173,8 @@ ai::StrokeDifficulty TableEnv::difficultyOf(const Shot& shot) const {
   ai::StrokeDifficulty d;
   const std::vector<BallState> balls = match_->balls();
   const int cue_id = match_->rack().cueBall();
-  const auto cue = std::find_if(balls.begin(), balls.end(),
-                                [&](const BallState& b) { return b.id == cue_id; });
+  const auto cue =
+      std::find_if(balls.begin(), balls.end(), [&](const BallState& b) { return b.id == cue_id; });
   if (cue == balls.end() || cue->pocket) return d;
   const double r2 = 2.0 * spec_.physics.ball_radius;
   const Vec2 dir = fromAngle(shot.heading_rad);
@@ -291,20 +291,19 @@ void TableEnv::observe(double* places, std::uint8_t* on_table, double* state) co
   const rules::Rack& rack = match_->rack();
   const rules::Player s = rack.shooter();
   const std::optional<rules::Group> group = rack.groups().of(s);
-  const double values[kStateSize] = {
-      static_cast<double>(side(s)),
-      s == agentSide() ? 1.0 : 0.0,
-      match_->cueInHand() ? 1.0 : 0.0,
-      match_->cueBehindHeadString() ? 1.0 : 0.0,
-      rack.isBreak() ? 1.0 : 0.0,
-      static_cast<double>(rack.ballOn()),
-      rack.callRequired() ? 1.0 : 0.0,
-      static_cast<double>(static_cast<int>(rack.pendingDecision())),
-      static_cast<double>(rack.consecutiveFouls(s)),
-      static_cast<double>(rack.consecutiveFouls(rules::other(s))),
-      group ? (*group == rules::Group::Solids ? 1.0 : 2.0) : 0.0,
-      static_cast<double>(rack.score(s)),
-      static_cast<double>(rack.score(rules::other(s)))};
+  const double values[kStateSize] = {static_cast<double>(side(s)),
+                                     s == agentSide() ? 1.0 : 0.0,
+                                     match_->cueInHand() ? 1.0 : 0.0,
+                                     match_->cueBehindHeadString() ? 1.0 : 0.0,
+                                     rack.isBreak() ? 1.0 : 0.0,
+                                     static_cast<double>(rack.ballOn()),
+                                     rack.callRequired() ? 1.0 : 0.0,
+                                     static_cast<double>(static_cast<int>(rack.pendingDecision())),
+                                     static_cast<double>(rack.consecutiveFouls(s)),
+                                     static_cast<double>(rack.consecutiveFouls(rules::other(s))),
+                                     group ? (*group == rules::Group::Solids ? 1.0 : 2.0) : 0.0,
+                                     static_cast<double>(rack.score(s)),
+                                     static_cast<double>(rack.score(rules::other(s)))};
   std::copy(values, values + kStateSize, state);
 }
 

@@ -26,8 +26,8 @@ struct Rewards {
 
 /// What an environment is: the task, who the agent plays, how its strokes err.
 struct EnvSpec {
-  std::string name;          ///< a game's name, or "pot"
-  std::optional<rules::Game> game;  ///< none: the potting task
+  std::string name;                   ///< a game's name, or "pot"
+  std::optional<rules::Game> game;    ///< none: the potting task
   std::optional<ai::Level> opponent;  ///< none: the agent plays both players
   std::string noise = "none";         ///< cueing errors, by ai::cueingNamed's names
   ai::LevelSettings cueing;           ///< ... as settings

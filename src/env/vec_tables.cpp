@@ -25,9 +25,8 @@ void VecTables::reset(std::optional<std::uint64_t> seed,
     seed_ = *seed;
     std::fill(episodes_.begin(), episodes_.end(), 0);
   }
-  parallelFor(tables_.size(), threads_, [&](std::size_t i) {
-    resetTable(i, i < starts.size() ? starts[i] : std::nullopt);
-  });
+  parallelFor(tables_.size(), threads_,
+              [&](std::size_t i) { resetTable(i, i < starts.size() ? starts[i] : std::nullopt); });
 }
 
 std::vector<StepOutcome> VecTables::step(const std::vector<Action>& actions, bool autoreset) {

@@ -100,8 +100,7 @@ MatchScript parseMatchDocument(const json& doc) {
   if (!doc.is_object()) refuse("script", "expected an object, found " + describe(doc));
   allowOnly(doc, "",
             {"game", "rules", "seed", "table", "physics", "step", "balls", "players", "turns",
-             "points", "race_to", "breaks", "shooter", "ball_in_hand", "fouls", "groups",
-             "score"});
+             "points", "race_to", "breaks", "shooter", "ball_in_hand", "fouls", "groups", "score"});
   MatchScript script;
   MatchSetup& setup = script.setup;
   setup.setGame(gameField(doc));

@@ -70,9 +70,11 @@ TEST(StandingJson, AStandingTheGameCannotBeInIsRefusedByName) {
   EXPECT_EQ(with("fouls", {{"A", 3}}), "fouls.A: must be >= 0 and <= 2, found 3");
   EXPECT_EQ(with("score", {{"A", 2}}), "score: eight-ball keeps no score");
   EXPECT_EQ(with("shooter", "C"), "shooter: expected \"A\" or \"B\", found \"C\"");
-  EXPECT_EQ(with("fouls", {{"C", 1}}).rfind("fouls.C: unknown player", 0), 0u) << with("fouls", {{"C", 1}});
-  EXPECT_EQ(refusal({{"game", "nine-ball"}, {"ball_in_hand", true}, {"turns", ordered_json::array()}}),
-            "ball_in_hand: a rack joined in the middle needs its \"balls\"");
+  EXPECT_EQ(with("fouls", {{"C", 1}}).rfind("fouls.C: unknown player", 0), 0u)
+      << with("fouls", {{"C", 1}});
+  EXPECT_EQ(
+      refusal({{"game", "nine-ball"}, {"ball_in_hand", true}, {"turns", ordered_json::array()}}),
+      "ball_in_hand: a rack joined in the middle needs its \"balls\"");
   EXPECT_EQ(refusal({{"game", "three-cushion"},
                      {"balls",
                       {{{"id", 0}, {"x", -0.5}, {"y", 0.0}},

@@ -320,9 +320,8 @@ bool Resolver::thrownBack(double t, EngineBalls& balls, std::size_t i, PocketId 
   }
   for (Vec2 v : fall.wall_contacts) cushionEvent(t, balls, i, v, fall.out.p);
   balls.restart(i, fall.out);
-  physicsLogger().debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)",
-                           t, balls.id(i), pocketName(pocket), fall.wall_contacts.size(),
-                           fall.t_out);
+  physicsLogger().debug("t={:.6f} ball {} thrown back out of {} ({} walls, {:.4f} s in the air)", t,
+                        balls.id(i), pocketName(pocket), fall.wall_contacts.size(), fall.t_out);
   return true;
 }
 

@@ -352,7 +352,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
         physicsLogger().debug("t={:.6f} ball {}: Box2D saw no cushion contact", time, b.id);
       } else {
         physicsLogger().debug("t={:.6f} ball {}: Box2D's bounce gained energy; by hand", time,
-                                 b.id);
+                              b.id);
       }
       hit.normal = predicted;
       hit.k = physics::bounceOffCushion(hit.k, hit.normal, b.mass, phys, hit.impulse);
@@ -404,7 +404,7 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
       return true;
     }
     physicsLogger().debug("t={:.6f} Box2D left balls {} and {} closing at {} m/s; by hand", time,
-                             a.id, b.id, hits.empty() ? 0.0 : closing);
+                          a.id, b.id, hits.empty() ? 0.0 : closing);
     return false;
   }
 
@@ -433,9 +433,8 @@ struct World::Impl final : physics::EngineBalls, physics::LoopEngine, physics::R
     const double after = contact ? energyOnTable() : 0.0;
     if (contact && after > before * (1.0 + 1e-6) + 1e-15) {
       physicsLogger().critical("t={:.9f}: a {} contact of ball {} raised the energy {} -> {} J",
-                                  time,
-                                  e.kind == NextEvent::Kind::Cushion ? "cushion" : "ball-ball",
-                                  balls[e.i].id, before, after);
+                               time, e.kind == NextEvent::Kind::Cushion ? "cushion" : "ball-ball",
+                               balls[e.i].id, before, after);
       std::abort();
     }
 #else
