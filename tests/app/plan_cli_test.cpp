@@ -26,6 +26,17 @@ bool pockets(const nlohmann::json& sim_result, int ball) {
   return false;
 }
 
+// The plan's printed `shot` played with `nineball sim` in the planned scene (its "level"
+// dropped): the result document; a failed sim fails the test.
+nlohmann::json playedWithSim(const char* plan_scene, const nlohmann::json& shot) {
+  auto scene = nlohmann::json::parse(plan_scene);
+  scene.erase("level");
+  scene["shot"] = shot;
+  const CliOutcome sim = runOnDocument("sim", scene.dump());
+  EXPECT_EQ(sim.status, 0) << sim.err;
+  return sim.status == 0 ? nlohmann::json::parse(sim.out) : nlohmann::json::object();
+}
+
 }  // namespace
 
 TEST(PlanCli, PrintsAShotThatSimPotsTheBallOnWith) {
@@ -37,12 +48,8 @@ TEST(PlanCli, PrintsAShotThatSimPotsTheBallOnWith) {
   ASSERT_TRUE(shot.contains("tip"));
   EXPECT_FALSE(shot.contains("cue"));
   // The printed object is a scene's "shot": play it with `nineball sim`.
-  auto scene = nlohmann::json::parse(kStraightIn);
-  scene.erase("level");
-  scene["shot"] = shot;
-  const CliOutcome sim = runOnDocument("sim", scene.dump());
-  ASSERT_EQ(sim.status, 0) << sim.err;
-  const auto result = nlohmann::json::parse(sim.out);
+  const nlohmann::json result = playedWithSim(kStraightIn, shot);
+  ASSERT_TRUE(result.contains("events"));
   EXPECT_TRUE(pockets(result, 1));
   EXPECT_FALSE(pockets(result, 0));
 }
@@ -61,12 +68,8 @@ TEST(PlanCli, AJumpPlanCarriesItsElevation) {
   const auto shot = nlohmann::json::parse(r.out);
   ASSERT_TRUE(shot.contains("elevation_deg")) << r.out;
   EXPECT_GE(shot["elevation_deg"].get<double>(), 25.0);
-  auto scene = nlohmann::json::parse(blocked);
-  scene.erase("level");
-  scene["shot"] = shot;
-  const CliOutcome sim = runOnDocument("sim", scene.dump());
-  ASSERT_EQ(sim.status, 0) << sim.err;
-  const auto result = nlohmann::json::parse(sim.out);
+  const nlohmann::json result = playedWithSim(blocked, shot);
+  ASSERT_TRUE(result.contains("events"));
   EXPECT_TRUE(pockets(result, 1));
   // And a level plan says nothing of the elevation.
   const CliOutcome level = runOnDocument("plan", kStraightIn);
